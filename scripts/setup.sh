@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs every Debian package frameray needs to build, test and compare
+# against the reference povray 3.7. Idempotent: does nothing when all are
+# present. Needs root (or sudo) only when something is missing.
+set -euo pipefail
+
+packages=(
+    cmake g++ make
+    libembree-dev libtbb-dev
+    libopenimageio-dev openimageio-tools libopenexr-dev
+    libspdlog-dev libfmt-dev libfreetype-dev
+    googletest libgtest-dev
+    povray povray-includes povray-examples
+    python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all ${#packages[@]} packages present"
+    exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

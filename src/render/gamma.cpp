@@ -1,0 +1,29 @@
+#include "render/gamma.h"
+
+#include <cmath>
+
+namespace frameray::render {
+
+GammaEncoding GammaEncoding::forScene(const scene::Scene& scene, double fileGamma) {
+    GammaEncoding g;
+    if (fileGamma > 0) {
+        g.curve_ = GammaEncoding::Curve::Power;
+        g.fileGamma_ = fileGamma;
+    }
+    if (scene.globals.assumedGammaSet) {
+        g.assumedGamma_ = scene.globals.assumedGamma;
+    } else if (scene.languageVersion < 3.7 - 1e-9) {
+        g.curve_ = GammaEncoding::Curve::Identity;
+    }
+    return g;
+}
+
+double GammaEncoding::encode(double v) const {
+    if (curve_ == Curve::Identity) return v;
+    // Working space -> linear light -> file encoding.
+    const double linear = assumedGamma_ == 1.0 ? v : std::pow(v, assumedGamma_);
+    if (curve_ == Curve::Power) return std::pow(linear, 1.0 / fileGamma_);
+    return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+}  // namespace frameray::render

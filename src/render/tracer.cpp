@@ -1,0 +1,83 @@
+#include "render/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frameray::render {
+
+namespace {
+
+const scene::Texture& defaultTexture() {
+    static const scene::Texture kDefault;  // immutable: black pigment, default finish
+    return kDefault;
+}
+
+// Distance below which a secondary ray ignores crossings: relative to the
+// magnitude of the point, so a scene behaves the same at any scale.
+double selfHitEpsilon(const Vec3& p) {
+    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    return std::max(m * 1e-9, 1e-300);
+}
+
+}  // namespace
+
+RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts) const {
+    ++counts.camera;
+    Hit hit;
+    if (!world_.intersect(ray, 0.0, scene::kInfinity, hit)) return scene_.background.rgb;
+    return shade(ray, hit, counts);
+}
+
+RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) const {
+    const scene::Object& obj = *hit.object;
+    const Vec3 p = ray.at(hit.t);
+    const Vec3 viewDir = normalize(ray.direction);
+    Vec3 n = normalize(obj.transform.normal(obj.shape->normal(obj.transform.inversePoint(p))));
+    // Shade the side facing the viewer.
+    if (dot(n, viewDir) > 0) n = -n;
+
+    const scene::Texture& tex = obj.texture ? *obj.texture : defaultTexture();
+    const scene::Finish& fin = tex.finish;
+    const RGB pigment = tex.pigment->at(tex.transform.inversePoint(p)).rgb;
+
+    RGB color = fin.ambient * pigment * scene_.globals.ambientLight + fin.emission * pigment;
+
+    const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+    const double eps = selfHitEpsilon(p);
+    for (const scene::Light& light : scene_.lights) {
+        Vec3 toLight = light.position - p;
+        const double dist = length(toLight);
+        if (dist == 0) continue;
+        toLight = toLight / dist;
+        const double cosIncidence = dot(n, toLight);
+        if (cosIncidence <= 0) continue;
+        if (!light.shadowless) {
+            ++counts.shadow;
+            if (world_.occluded({p, toLight}, eps, dist)) continue;
+        }
+        const RGB lightColor = light.color;
+        if (fin.diffuse > 0) {
+            const double intensity =
+                fin.diffuse * (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
+            color += lightColor * pigment * intensity;
+        }
+        if (fin.phong > 0) {
+            const double c = dot(reflected, toLight);
+            if (c > 0) {
+                const RGB tint = fin.metallic ? pigment : RGB(1.0);
+                color += lightColor * tint * (fin.phong * std::pow(c, fin.phongSize));
+            }
+        }
+        if (fin.specular > 0) {
+            const Vec3 halfway = normalize(toLight - viewDir);
+            const double c = dot(halfway, n);
+            if (c > 0) {
+                const RGB tint = fin.metallic ? pigment : RGB(1.0);
+                color += lightColor * tint * (fin.specular * std::pow(c, 1.0 / fin.roughness));
+            }
+        }
+    }
+    return color;
+}
+
+}  // namespace frameray::render

@@ -1,0 +1,174 @@
+#include "render/world.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace frameray::render {
+
+namespace {
+
+// Carries the double-precision ray through Embree's float traversal: the
+// callbacks intersect in double and record the result here; Embree's own
+// float tfar is only used (rounded outward) to cull farther subtrees.
+struct TraceContext {
+    RTCIntersectContext embree;  // must be first: Embree passes a pointer to it
+    const scene::Ray* ray;
+    double tMin;
+    double tMax;
+    const scene::Object* hitObject;
+};
+
+float roundUp(double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+float roundDown(double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
+void boundsCallback(const RTCBoundsFunctionArguments* args) {
+    const auto* obj = static_cast<const scene::Object*>(args->geometryUserPtr);
+    const scene::Bounds b = obj->worldBounds();
+    // Pad by a relative margin so float traversal can never miss a surface
+    // the double-precision test would find.
+    const Vec3 pad = (b.hi - b.lo) * 1e-6 + Vec3(1e-30);
+    auto widen = [](double v, double p) { return std::fabs(v) * 1e-6 + p; };
+    RTCBounds* o = args->bounds_o;
+    o->lower_x = roundDown(b.lo.x - widen(b.lo.x, pad.x));
+    o->lower_y = roundDown(b.lo.y - widen(b.lo.y, pad.y));
+    o->lower_z = roundDown(b.lo.z - widen(b.lo.z, pad.z));
+    o->upper_x = roundUp(b.hi.x + widen(b.hi.x, pad.x));
+    o->upper_y = roundUp(b.hi.y + widen(b.hi.y, pad.y));
+    o->upper_z = roundUp(b.hi.z + widen(b.hi.z, pad.z));
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* ctx = reinterpret_cast<TraceContext*>(args->context);
+    const auto* obj = static_cast<const scene::Object*>(args->geometryUserPtr);
+    if (obj->noImage) return;  // only camera rays use intersect() so far
+    double t;
+    if (!intersectObject(*obj, *ctx->ray, ctx->tMin, ctx->tMax, t)) return;
+    ctx->tMax = t;
+    ctx->hitObject = obj;
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCRayN_tfar(ray, args->N, 0) = roundUp(t);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    RTCHitN_geomID(hit, args->N, 0) = args->geomID;
+    RTCHitN_primID(hit, args->N, 0) = args->primID;
+}
+
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* ctx = reinterpret_cast<TraceContext*>(args->context);
+    const auto* obj = static_cast<const scene::Object*>(args->geometryUserPtr);
+    if (obj->noShadow) return;
+    double t;
+    if (!intersectObject(*obj, *ctx->ray, ctx->tMin, ctx->tMax, t)) return;
+    ctx->hitObject = obj;
+    // Embree's convention for "occluded".
+    RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
+}
+
+RTCRay toEmbreeRay(const scene::Ray& ray, double tMax) {
+    RTCRay r{};
+    r.org_x = static_cast<float>(ray.origin.x);
+    r.org_y = static_cast<float>(ray.origin.y);
+    r.org_z = static_cast<float>(ray.origin.z);
+    r.dir_x = static_cast<float>(ray.direction.x);
+    r.dir_y = static_cast<float>(ray.direction.y);
+    r.dir_z = static_cast<float>(ray.direction.z);
+    // tnear 0: the double-precision tMin is applied inside the callbacks.
+    r.tnear = 0.0f;
+    r.tfar = std::isinf(tMax) ? std::numeric_limits<float>::infinity() : roundUp(tMax);
+    r.mask = 0xFFFFFFFFu;
+    r.flags = 0;
+    return r;
+}
+
+}  // namespace
+
+bool intersectObject(const scene::Object& obj, const scene::Ray& worldRay, double tMin, double tMax,
+                     double& t) {
+    // Object space without renormalising keeps t comparable across objects.
+    const scene::Ray local{obj.transform.inversePoint(worldRay.origin),
+                           obj.transform.inverseDirection(worldRay.direction)};
+    return obj.shape->firstHit(local, tMin, tMax, t);
+}
+
+World::World(const scene::Scene& scene) : scene_(scene) {
+    device_ = rtcNewDevice("verbose=0");
+    if (!device_) throw std::runtime_error("Embree: cannot create a device");
+    bvh_ = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
+    for (const auto& obj : scene.objects) {
+        if (obj->noImage && obj->noShadow) continue;  // invisible to every ray kind we trace
+        if (!obj->worldBounds().isFinite()) {
+            unbounded_.push_back(obj.get());
+            continue;
+        }
+        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, 1);
+        rtcSetGeometryUserData(g, const_cast<scene::Object*>(obj.get()));
+        rtcSetGeometryBoundsFunction(g, boundsCallback, nullptr);
+        rtcSetGeometryIntersectFunction(g, intersectCallback);
+        rtcSetGeometryOccludedFunction(g, occludedCallback);
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(bvh_, g);
+        rtcReleaseGeometry(g);
+        hasBounded_ = true;
+    }
+    rtcCommitScene(bvh_);
+}
+
+World::~World() {
+    if (bvh_) rtcReleaseScene(bvh_);
+    if (device_) rtcReleaseDevice(device_);
+}
+
+bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit) const {
+    TraceContext ctx;
+    rtcInitIntersectContext(&ctx.embree);
+    ctx.ray = &ray;
+    ctx.tMin = tMin;
+    ctx.tMax = tMax;
+    ctx.hitObject = nullptr;
+    if (hasBounded_) {
+        RTCRayHit rh{};
+        rh.ray = toEmbreeRay(ray, tMax);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(bvh_, &ctx.embree, &rh);
+    }
+    for (const scene::Object* obj : unbounded_) {
+        double t;
+        if (!obj->noImage && intersectObject(*obj, ray, tMin, ctx.tMax, t)) {
+            ctx.tMax = t;
+            ctx.hitObject = obj;
+        }
+    }
+    if (!ctx.hitObject) return false;
+    hit.t = ctx.tMax;
+    hit.object = ctx.hitObject;
+    return true;
+}
+
+bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
+    for (const scene::Object* obj : unbounded_) {
+        double t;
+        if (!obj->noShadow && intersectObject(*obj, ray, tMin, tMax, t)) return true;
+    }
+    if (!hasBounded_) return false;
+    TraceContext ctx;
+    rtcInitIntersectContext(&ctx.embree);
+    ctx.ray = &ray;
+    ctx.tMin = tMin;
+    ctx.tMax = tMax;
+    ctx.hitObject = nullptr;
+    RTCRay r = toEmbreeRay(ray, tMax);
+    rtcOccluded1(bvh_, &ctx.embree, &r);
+    return ctx.hitObject != nullptr;
+}
+
+}  // namespace frameray::render

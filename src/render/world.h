@@ -1,0 +1,46 @@
+// The render-side view of a scene: an Embree top-level BVH with one user
+// geometry per bounded top-level object (conservative float bounds around
+// double-precision shapes), plus a list of unbounded objects (planes...)
+// tested outside the BVH. Immutable once built, shared by all threads.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace frameray::render {
+
+struct Hit {
+    double t = scene::kInfinity;
+    const scene::Object* object = nullptr;
+};
+
+class World {
+public:
+    explicit World(const scene::Scene& scene);
+    ~World();
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // Closest hit with t in (tMin, tMax).
+    bool intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit) const;
+    // Whether anything that casts shadows lies in (tMin, tMax).
+    bool occluded(const scene::Ray& ray, double tMin, double tMax) const;
+
+    const scene::Scene& scene() const { return scene_; }
+
+private:
+    const scene::Scene& scene_;
+    RTCDevice device_ = nullptr;
+    RTCScene bvh_ = nullptr;
+    std::vector<const scene::Object*> unbounded_;
+    bool hasBounded_ = false;
+};
+
+// First hit of one object, in world space (object transform applied).
+bool intersectObject(const scene::Object& obj, const scene::Ray& worldRay, double tMin, double tMax,
+                     double& t);
+
+}  // namespace frameray::render

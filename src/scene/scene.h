@@ -1,0 +1,33 @@
+// Everything one frame's parse produces: the input of render::World.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/lights.h"
+#include "scene/object.h"
+
+namespace frameray::scene {
+
+struct GlobalSettings {
+    // Unset means "not given in the scene": the 3.7 defaulting rules apply
+    // (see render/gamma).
+    double assumedGamma = 0;
+    bool assumedGammaSet = false;
+    RGB ambientLight{1.0};
+    int maxTraceLevel = 5;
+    double adcBailout = 1.0 / 255.0;
+};
+
+struct Scene {
+    Camera camera;
+    std::vector<Light> lights;
+    std::vector<std::shared_ptr<const Object>> objects;
+    GlobalSettings globals;
+    Color background;  // black, fully opaque by default
+    double languageVersion = 3.7;  // the #version in force at the end of parse
+    bool versionDeclared = false;
+};
+
+}  // namespace frameray::scene

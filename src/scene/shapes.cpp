@@ -1,0 +1,140 @@
+#include "scene/shapes.h"
+
+#include <cmath>
+
+namespace frameray::scene {
+
+bool Bounds::isFinite() const {
+    return std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(lo.z) &&
+           std::isfinite(hi.x) && std::isfinite(hi.y) && std::isfinite(hi.z);
+}
+
+bool Shape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    std::vector<double> ts;
+    allHits(ray, tMin, tMax, ts);
+    if (ts.empty()) return false;
+    t = ts.front();
+    return true;
+}
+
+// --- Sphere -----------------------------------------------------------------
+
+namespace {
+
+// Both roots of |o + t d - c|^2 = r^2, in increasing order. Uses the
+// formulation that avoids cancellation when the ray starts far from the
+// sphere (the closest-approach vector instead of b^2 - 4ac).
+bool sphereRoots(const Ray& ray, const Vec3& center, double radius, double& t0, double& t1) {
+    const Vec3 f = ray.origin - center;
+    const double a = dot(ray.direction, ray.direction);
+    const double b = -dot(f, ray.direction);
+    const Vec3 closest = f + ray.direction * (b / a);
+    const double disc = radius * radius - dot(closest, closest);
+    if (disc < 0) return false;
+    const double c = dot(f, f) - radius * radius;
+    const double q = b + std::copysign(std::sqrt(a * disc), b);
+    if (q == 0) {
+        t0 = t1 = 0;
+        return true;
+    }
+    t0 = c / q;
+    t1 = q / a;
+    if (t0 > t1) std::swap(t0, t1);
+    return true;
+}
+
+}  // namespace
+
+void Sphere::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
+    double t0, t1;
+    if (!sphereRoots(ray, center_, radius_, t0, t1)) return;
+    if (t0 > tMin && t0 < tMax) ts.push_back(t0);
+    if (t1 > tMin && t1 < tMax && t1 != t0) ts.push_back(t1);
+}
+
+bool Sphere::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    double t0, t1;
+    if (!sphereRoots(ray, center_, radius_, t0, t1)) return false;
+    if (t0 > tMin && t0 < tMax) {
+        t = t0;
+        return true;
+    }
+    if (t1 > tMin && t1 < tMax) {
+        t = t1;
+        return true;
+    }
+    return false;
+}
+
+bool Sphere::inside(const Vec3& p) const {
+    const Vec3 d = p - center_;
+    return dot(d, d) < radius_ * radius_;
+}
+
+Bounds Sphere::bounds() const {
+    return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
+}
+
+// --- Plane ------------------------------------------------------------------
+
+Plane::Plane(const Vec3& normal, double distance) {
+    // `plane { N, D }` lies D units from the origin along the normalised N,
+    // whatever N's length (checked against povray 3.7: <2,0,0>, 3 is x = 3).
+    normal_ = normalize(normal);
+    distance_ = distance;
+}
+
+bool Plane::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    const double denom = dot(normal_, ray.direction);
+    if (denom == 0) return false;
+    t = (distance_ - dot(normal_, ray.origin)) / denom;
+    return t > tMin && t < tMax;
+}
+
+void Plane::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
+    double t;
+    if (firstHit(ray, tMin, tMax, t)) ts.push_back(t);
+}
+
+// --- Box --------------------------------------------------------------------
+
+void Box::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
+    double tNear = -kInfinity, tFar = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis], d = ray.direction[axis];
+        if (d == 0) {
+            if (o < lo_[axis] || o > hi_[axis]) return;
+            continue;
+        }
+        double t0 = (lo_[axis] - o) / d, t1 = (hi_[axis] - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        tNear = std::fmax(tNear, t0);
+        tFar = std::fmin(tFar, t1);
+        if (tNear > tFar) return;
+    }
+    if (tNear > tMin && tNear < tMax) ts.push_back(tNear);
+    if (tFar > tMin && tFar < tMax && tFar != tNear) ts.push_back(tFar);
+}
+
+Vec3 Box::normal(const Vec3& p) const {
+    // The face whose plane the point lies closest to, relative to the box
+    // size so thin boxes pick the right face.
+    int bestAxis = 0;
+    double bestDist = kInfinity, sign = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double extent = std::fmax(hi_[axis] - lo_[axis], 1e-300);
+        const double dLo = std::fabs(p[axis] - lo_[axis]) / extent;
+        const double dHi = std::fabs(p[axis] - hi_[axis]) / extent;
+        if (dLo < bestDist) { bestDist = dLo; bestAxis = axis; sign = -1; }
+        if (dHi < bestDist) { bestDist = dHi; bestAxis = axis; sign = 1; }
+    }
+    Vec3 n;
+    n[bestAxis] = sign;
+    return n;
+}
+
+bool Box::inside(const Vec3& p) const {
+    return p.x > lo_.x && p.x < hi_.x && p.y > lo_.y && p.y < hi_.y && p.z > lo_.z && p.z < hi_.z;
+}
+
+}  // namespace frameray::scene

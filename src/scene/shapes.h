@@ -1,0 +1,78 @@
+// Geometric primitives in object space, in double precision. Each shape
+// answers the first hit along a ray, every crossing along a ray (for CSG),
+// an inside test, the surface normal at a point, and its bounds. Shapes
+// know nothing of transforms: Object applies those.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "scene/ray.h"
+#include "util/matrix.h"
+
+namespace frameray::scene {
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+
+    // All ray parameters t in (tMin, tMax) where the ray crosses the surface,
+    // appended to `ts` in increasing order.
+    virtual void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const = 0;
+    // First crossing in (tMin, tMax); the default uses allHits.
+    virtual bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const;
+    // Outward unit normal at a point on the surface.
+    virtual Vec3 normal(const Vec3& p) const = 0;
+    // Strictly inside (POV-Ray's inside test, used by CSG and `inside()`).
+    virtual bool inside(const Vec3& p) const = 0;
+    // Object-space bounds; Bounds::infinite() for unbounded shapes.
+    virtual Bounds bounds() const = 0;
+    virtual const char* name() const = 0;
+};
+
+class Sphere final : public Shape {
+public:
+    Sphere(const Vec3& center, double radius) : center_(center), radius_(radius) {}
+    void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
+    bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
+    Vec3 normal(const Vec3& p) const override { return (p - center_) / radius_; }
+    bool inside(const Vec3& p) const override;
+    Bounds bounds() const override;
+    const char* name() const override { return "sphere"; }
+
+private:
+    Vec3 center_;
+    double radius_;
+};
+
+// The half-space below `normal . p = distance`; its surface is the plane.
+class Plane final : public Shape {
+public:
+    Plane(const Vec3& normal, double distance);
+    void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
+    bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
+    Vec3 normal(const Vec3&) const override { return normal_; }
+    bool inside(const Vec3& p) const override { return dot(p, normal_) < distance_; }
+    Bounds bounds() const override { return Bounds::infinite(); }
+    const char* name() const override { return "plane"; }
+
+private:
+    Vec3 normal_;      // unit length
+    double distance_;  // along normal_, scaled with it
+};
+
+class Box final : public Shape {
+public:
+    Box(const Vec3& corner1, const Vec3& corner2)
+        : lo_(vmin(corner1, corner2)), hi_(vmax(corner1, corner2)) {}
+    void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
+    Vec3 normal(const Vec3& p) const override;
+    bool inside(const Vec3& p) const override;
+    Bounds bounds() const override { return {lo_, hi_}; }
+    const char* name() const override { return "box"; }
+
+private:
+    Vec3 lo_, hi_;
+};
+
+}  // namespace frameray::scene

@@ -1,0 +1,551 @@
+// Expressions of the scene language: floats, vectors (2-5 components),
+// colours and strings, with the seed's precedence and promotion rules.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+constexpr double kEpsilon = 1e-10;
+
+bool isTrue(double v) { return std::fabs(v) > kEpsilon; }
+
+// Brings two operands to a common shape: floats promote to every
+// component, shorter vectors to longer ones with zeros (seed 004).
+VectorValue promote(const Value& v, int size) {
+    if (const double* f = std::get_if<double>(&v)) {
+        VectorValue out;
+        out.size = static_cast<uint8_t>(size);
+        for (int i = 0; i < size; ++i) out.v[i] = *f;
+        return out;
+    }
+    VectorValue out = std::get<VectorValue>(v);
+    for (int i = out.size; i < size; ++i) out.v[i] = 0;
+    out.size = static_cast<uint8_t>(std::max<int>(out.size, size));
+    return out;
+}
+
+template <typename Op>
+Value combine(const Value& a, const Value& b, Op op) {
+    if (std::holds_alternative<double>(a) && std::holds_alternative<double>(b))
+        return op(std::get<double>(a), std::get<double>(b));
+    int size = 0;
+    bool color = false;
+    for (const Value* v : {&a, &b})
+        if (const auto* vec = std::get_if<VectorValue>(v)) {
+            size = std::max<int>(size, vec->size);
+            color = color || vec->isColor;
+        }
+    VectorValue va = promote(a, size), vb = promote(b, size), out;
+    out.size = static_cast<uint8_t>(size);
+    out.isColor = color;
+    for (int i = 0; i < size; ++i) out.v[i] = op(va.v[i], vb.v[i]);
+    return out;
+}
+
+bool isNumeric(const Value& v) {
+    return std::holds_alternative<double>(v) || std::holds_alternative<VectorValue>(v);
+}
+
+// The component keywords of a colour and their slot.
+int colorComponent(Keyword k) {
+    switch (k) {
+        case Keyword::kw_red: return 0;
+        case Keyword::kw_green: return 1;
+        case Keyword::kw_blue: return 2;
+        case Keyword::kw_filter: return 3;
+        case Keyword::kw_transmit: return 4;
+        default: return -1;
+    }
+}
+
+double srgbToLinear(double v) {
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+double Interpreter::toFloat(const Value& v, const Token& at) {
+    if (const double* f = std::get_if<double>(&v)) return *f;
+    fail(at, fmt::format("expected a float, found a {}", valueKindName(v)));
+}
+
+VectorValue Interpreter::toVector(const Value& v, const Token& at, int size) {
+    if (!isNumeric(v)) fail(at, fmt::format("expected a vector, found a {}", valueKindName(v)));
+    return promote(v, size);
+}
+
+Value Interpreter::parseExpression() { return parseTernary(false); }
+
+double Interpreter::parseFloat() {
+    const Token at = peek();
+    return toFloat(parseExpression(), at);
+}
+
+VectorValue Interpreter::parseVector() {
+    const Token at = peek();
+    return toVector(parseExpression(), at, 3);
+}
+
+Vec3 Interpreter::parseVec3() { return parseVector().xyz(); }
+
+std::string Interpreter::parseString() {
+    const Token at = peek();
+    Value v = parseExpression();
+    if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);
+    fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
+}
+
+Color Interpreter::parseColor() {
+    const Token at = peek();
+    accept(Keyword::kw_color) || accept(Keyword::kw_colour);
+    VectorValue c;
+    c.size = 5;
+    c.isColor = true;
+    // Either component keywords alone, or an expression optionally followed
+    // by component keywords ("Red filter 0.5").
+    if (colorComponent(peek().kw) < 0 || peek().kind != TokenKind::Word) {
+        const Value v = parseExpression();
+        if (!isNumeric(v)) fail(at, fmt::format("expected a color, found a {}", valueKindName(v)));
+        c = promote(v, 5);
+        // A float or plain vector given as a colour sets rgb only.
+        if (!std::get_if<VectorValue>(&v) || !std::get<VectorValue>(v).isColor) {
+            if (std::holds_alternative<double>(v)) c.v[3] = c.v[4] = 0;
+        }
+    }
+    for (int slot; peek().kind == TokenKind::Word && (slot = colorComponent(peek().kw)) >= 0;) {
+        next();
+        c.v[slot] = parseFloat();
+    }
+    return c.color();
+}
+
+Value Interpreter::parseTernary(bool inVector) {
+    const Token at = peek();
+    Value cond = parseLogical(inVector);
+    if (!accept(Sym::Question)) return cond;
+    const bool truth = isTrue(toFloat(cond, at));
+    Value a = parseTernary(inVector);
+    expect(Sym::Colon, "':' of the conditional expression");
+    Value b = parseTernary(inVector);
+    return truth ? a : b;
+}
+
+Value Interpreter::parseLogical(bool inVector) {
+    Value left = parseRelational(inVector);
+    for (;;) {
+        const Token op = peek();
+        if (!op.is(Sym::Amp) && !op.is(Sym::Bar)) return left;
+        next();
+        const Value right = parseRelational(inVector);
+        const bool a = isTrue(toFloat(left, op)), b = isTrue(toFloat(right, op));
+        left = op.is(Sym::Amp) ? double(a && b) : double(a || b);
+    }
+}
+
+Value Interpreter::parseRelational(bool inVector) {
+    Value left = parseAdditive(inVector);
+    for (;;) {
+        const Token op = peek();
+        // Inside <...> a '>' closes the vector instead of comparing.
+        const bool relational = op.is(Sym::Less) || op.is(Sym::LessEq) || op.is(Sym::Equal) ||
+                                op.is(Sym::NotEq) || op.is(Sym::GreaterEq) ||
+                                (op.is(Sym::Greater) && !inVector);
+        if (!relational) return left;
+        next();
+        const Value right = parseAdditive(inVector);
+        if (std::holds_alternative<std::string>(left) && std::holds_alternative<std::string>(right)) {
+            const int c = std::get<std::string>(left).compare(std::get<std::string>(right));
+            bool r = false;
+            switch (op.sym) {
+                case Sym::Less: r = c < 0; break;
+                case Sym::LessEq: r = c <= 0; break;
+                case Sym::Equal: r = c == 0; break;
+                case Sym::NotEq: r = c != 0; break;
+                case Sym::GreaterEq: r = c >= 0; break;
+                default: r = c > 0; break;
+            }
+            left = double(r);
+            continue;
+        }
+        if (!isNumeric(left) || !isNumeric(right))
+            fail(op, "relational operators need floats, vectors or two strings");
+        left = combine(left, right, [&](double a, double b) {
+            switch (op.sym) {
+                case Sym::Less: return double(a < b);
+                case Sym::LessEq: return double(a <= b);
+                case Sym::Equal: return double(std::fabs(a - b) < kEpsilon);
+                case Sym::NotEq: return double(std::fabs(a - b) >= kEpsilon);
+                case Sym::GreaterEq: return double(a >= b);
+                default: return double(a > b);
+            }
+        });
+    }
+}
+
+Value Interpreter::parseAdditive(bool inVector) {
+    Value left = parseMultiplicative(inVector);
+    for (;;) {
+        const Token op = peek();
+        if (!op.is(Sym::Plus) && !op.is(Sym::Minus)) return left;
+        next();
+        const Value right = parseMultiplicative(inVector);
+        if (!isNumeric(left) || !isNumeric(right))
+            fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
+                                 valueKindName(right)));
+        left = op.is(Sym::Plus) ? combine(left, right, std::plus<double>())
+                                : combine(left, right, std::minus<double>());
+    }
+}
+
+Value Interpreter::parseMultiplicative(bool inVector) {
+    Value left = parseUnary(inVector);
+    for (;;) {
+        const Token op = peek();
+        if (!op.is(Sym::Star) && !op.is(Sym::Slash)) return left;
+        next();
+        const Value right = parseUnary(inVector);
+        if (!isNumeric(left) || !isNumeric(right))
+            fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
+                                 valueKindName(right)));
+        // Division by zero gives POV-Ray's huge value rather than inf.
+        left = op.is(Sym::Star) ? combine(left, right, std::multiplies<double>())
+                                : combine(left, right, [](double a, double b) {
+                                      return b == 0 ? (a == 0 ? 0.0 : std::copysign(1e10, a)) : a / b;
+                                  });
+    }
+}
+
+Value Interpreter::parseUnary(bool inVector) {
+    const Token op = peek();
+    if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
+        next();
+        const Value v = parseUnary(inVector);
+        if (!isNumeric(v)) fail(op, fmt::format("cannot apply '{}' to a {}", op.text, valueKindName(v)));
+        if (op.is(Sym::Plus)) return v;
+        if (op.is(Sym::Minus)) return combine(v, 0.0, [](double a, double) { return -a; });
+        return combine(v, 0.0, [](double a, double) { return double(!isTrue(a)); });
+    }
+    return parsePostfix(inVector);
+}
+
+Value Interpreter::parsePostfix(bool inVector) {
+    Value v = parsePrimary(inVector);
+    while (peek().is(Sym::Dot)) {
+        const Token dot = next();
+        const Token item = next();
+        if (!std::holds_alternative<VectorValue>(v))
+            fail(dot, fmt::format("'.{}' needs a vector or color, not a {}", item.text, valueKindName(v)));
+        const VectorValue& vec = std::get<VectorValue>(v);
+        int slot = -1;
+        switch (item.kw) {
+            case Keyword::kw_x: case Keyword::kw_u: case Keyword::kw_red: slot = 0; break;
+            case Keyword::kw_y: case Keyword::kw_v: case Keyword::kw_green: slot = 1; break;
+            case Keyword::kw_z: case Keyword::kw_blue: slot = 2; break;
+            case Keyword::kw_t: case Keyword::kw_filter: slot = 3; break;
+            case Keyword::kw_transmit: slot = 4; break;
+            case Keyword::kw_gray: {
+                // Luminance weights POV-Ray uses for .gray.
+                VectorValue c = promote(v, 5);
+                v = c.v[0] * 0.297 + c.v[1] * 0.589 + c.v[2] * 0.114;
+                continue;
+            }
+            default: fail(item, fmt::format("'{}' is not a vector component", item.text));
+        }
+        // Colours always carry all five components.
+        const int size = vec.isColor ? 5 : vec.size;
+        if (slot >= size)
+            fail(item, fmt::format("'.{}' is beyond this {}-component vector", item.text, size));
+        v = vec.v[slot];
+    }
+    return v;
+}
+
+Value Interpreter::parseVectorLiteral() {
+    const Token open = next();  // '<'
+    VectorValue out;
+    int n = 0;
+    do {
+        const Token at = peek();
+        const double c = toFloat(parseTernary(true), at);
+        if (n >= 5) fail(at, "a vector has at most 5 components");
+        out.v[n++] = c;
+    } while (accept(Sym::Comma));
+    expect(Sym::Greater, "'>' closing the vector");
+    if (n < 2) fail(open, "a vector needs at least 2 components");
+    out.size = static_cast<uint8_t>(n);
+    return out;
+}
+
+Value Interpreter::parseColorKeywords(const Token& first) {
+    VectorValue c;
+    c.size = 5;
+    c.isColor = true;
+    switch (first.kw) {
+        case Keyword::kw_rgb: case Keyword::kw_rgbf: case Keyword::kw_rgbt: case Keyword::kw_rgbft:
+        case Keyword::kw_srgb: case Keyword::kw_srgbf: case Keyword::kw_srgbt: case Keyword::kw_srgbft: {
+            const std::string_view name = first.text;
+            const bool srgb = name.starts_with("srgb");
+            const std::string_view suffix = name.substr(srgb ? 4 : 3);
+            const int size = 3 + static_cast<int>(suffix.size());
+            const Token at = peek();
+            const Value v = parseAdditive(false);
+            const VectorValue vec = toVector(v, at, size);
+            for (int i = 0; i < 3; ++i) c.v[i] = srgb ? srgbToLinear(vec.v[i]) : vec.v[i];
+            if (suffix == "f") c.v[3] = vec.v[3];
+            if (suffix == "t") c.v[4] = vec.v[3];
+            if (suffix == "ft") { c.v[3] = vec.v[3]; c.v[4] = vec.v[4]; }
+            break;
+        }
+        default: {
+            // red/green/blue/filter/transmit groups starting from black.
+            const int slot = colorComponent(first.kw);
+            c.v[slot] = parseFloat();
+            break;
+        }
+    }
+    for (int slot; peek().kind == TokenKind::Word && (slot = colorComponent(peek().kw)) >= 0;) {
+        next();
+        c.v[slot] = parseFloat();
+    }
+    return c;
+}
+
+Value Interpreter::identifierValue(const Token& name) {
+    const Value* v = lookup(std::string(name.text));
+    if (!v) fail(name, fmt::format("undeclared identifier '{}'", name.text));
+    Value out = *v;
+    // "Cyan red 0.6": component keywords after a colour identifier.
+    if (auto* vec = std::get_if<VectorValue>(&out); vec && vec->isColor) {
+        for (int slot; peek().kind == TokenKind::Word && (slot = colorComponent(peek().kw)) >= 0;) {
+            next();
+            vec->v[slot] = parseFloat();
+        }
+    }
+    return out;
+}
+
+std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Token& fn) {
+    expect(Sym::LParen, fmt::format("'(' after '{}'", fn.text).c_str());
+    std::vector<Value> args;
+    if (!peek().is(Sym::RParen)) {
+        do {
+            args.push_back(parseExpression());
+        } while (accept(Sym::Comma));
+    }
+    expect(Sym::RParen, "')'");
+    if (args.size() < min || args.size() > max)
+        fail(fn, min == max ? fmt::format("'{}' takes {} argument{}, {} given", fn.text, min,
+                                          min == 1 ? "" : "s", args.size())
+                            : fmt::format("'{}' takes {} to {} arguments, {} given", fn.text, min,
+                                          max, args.size()));
+    return args;
+}
+
+Value Interpreter::parsePrimary(bool inVector) {
+    const Token t = peek();
+    switch (t.kind) {
+        case TokenKind::Number: next(); return t.number;
+        case TokenKind::String: next(); return std::string(t.text);
+        case TokenKind::End: fail(t, "unexpected end of file in an expression");
+        case TokenKind::Symbol:
+            if (t.is(Sym::LParen)) {
+                next();
+                Value v = parseTernary(false);
+                expect(Sym::RParen, "')'");
+                return v;
+            }
+            if (t.is(Sym::Less)) return parseVectorLiteral();
+            fail(t, fmt::format("expected an expression, found {}", describeToken(t)));
+        case TokenKind::Word: break;
+    }
+    (void)inVector;
+    if (t.kw == Keyword::None) {
+        next();
+        return identifierValue(t);
+    }
+    auto vec3 = [](double a, double b, double c) { return VectorValue{{a, b, c, 0, 0}, 3, false}; };
+    switch (t.kw) {
+        case Keyword::kw_pi: next(); return std::numbers::pi;
+        case Keyword::kw_true: case Keyword::kw_yes: case Keyword::kw_on: next(); return 1.0;
+        case Keyword::kw_false: case Keyword::kw_no: case Keyword::kw_off: next(); return 0.0;
+        case Keyword::kw_x: next(); return vec3(1, 0, 0);
+        case Keyword::kw_y: next(); return vec3(0, 1, 0);
+        case Keyword::kw_z: next(); return vec3(0, 0, 1);
+        case Keyword::kw_t: next(); return VectorValue{{0, 0, 0, 1, 0}, 4, false};
+        case Keyword::kw_u: next(); return VectorValue{{1, 0, 0, 0, 0}, 2, false};
+        case Keyword::kw_v: next(); return VectorValue{{0, 1, 0, 0, 0}, 2, false};
+        case Keyword::kw_clock: next(); return frame_.clock;
+        case Keyword::kw_clock_delta: next(); return frame_.clockDelta;
+        case Keyword::kw_clock_on: next(); return double(frame_.clockOn);
+        case Keyword::kw_frame_number: next(); return double(frame_.frameNumber);
+        case Keyword::kw_initial_clock: next(); return frame_.initialClock;
+        case Keyword::kw_final_clock: next(); return frame_.finalClock;
+        case Keyword::kw_initial_frame: next(); return double(frame_.initialFrame);
+        case Keyword::kw_final_frame: next(); return double(frame_.finalFrame);
+        case Keyword::kw_image_width: next(); return double(frame_.imageWidth);
+        case Keyword::kw_image_height: next(); return double(frame_.imageHeight);
+        case Keyword::kw_version: next(); return version_;
+        case Keyword::kw_color: case Keyword::kw_colour: {
+            next();
+            if (colorComponent(peek().kw) >= 0 && peek().kind == TokenKind::Word) {
+                const Token first = next();
+                return parseColorKeywords(first);
+            }
+            const Token at = peek();
+            Value v = parseAdditive(inVector);
+            VectorValue c = toVector(v, at, 5);
+            c.isColor = true;
+            return c;
+        }
+        case Keyword::kw_rgb: case Keyword::kw_rgbf: case Keyword::kw_rgbt: case Keyword::kw_rgbft:
+        case Keyword::kw_srgb: case Keyword::kw_srgbf: case Keyword::kw_srgbt: case Keyword::kw_srgbft:
+        case Keyword::kw_red: case Keyword::kw_green: case Keyword::kw_blue:
+        case Keyword::kw_filter: case Keyword::kw_transmit: {
+            next();
+            return parseColorKeywords(t);
+        }
+        default: break;
+    }
+    next();
+    return parseBuiltinFunction(t);
+}
+
+Value Interpreter::parseBuiltinFunction(const Token& fn) {
+    auto f = [&](const Value& v) { return toFloat(v, fn); };
+    auto vec = [&](const Value& v) { return toVector(v, fn, 3).xyz(); };
+    auto str = [&](const Value& v) -> std::string {
+        if (const auto* s = std::get_if<std::string>(&v)) return *s;
+        fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
+    };
+    // One-argument float functions, as data.
+    using Unary = double (*)(double);
+    static constexpr std::pair<Keyword, Unary> kUnary[] = {
+        {Keyword::kw_abs, [](double a) { return std::fabs(a); }},
+        {Keyword::kw_acos, [](double a) { return std::acos(a); }},
+        {Keyword::kw_acosh, [](double a) { return std::acosh(a); }},
+        {Keyword::kw_asin, [](double a) { return std::asin(a); }},
+        {Keyword::kw_asinh, [](double a) { return std::asinh(a); }},
+        {Keyword::kw_atan, [](double a) { return std::atan(a); }},
+        {Keyword::kw_atanh, [](double a) { return std::atanh(a); }},
+        {Keyword::kw_ceil, [](double a) { return std::ceil(a); }},
+        {Keyword::kw_cos, [](double a) { return std::cos(a); }},
+        {Keyword::kw_cosh, [](double a) { return std::cosh(a); }},
+        {Keyword::kw_degrees, [](double a) { return a * 180.0 / std::numbers::pi; }},
+        {Keyword::kw_exp, [](double a) { return std::exp(a); }},
+        {Keyword::kw_floor, [](double a) { return std::floor(a); }},
+        {Keyword::kw_int, [](double a) { return std::trunc(a); }},
+        {Keyword::kw_ln, [](double a) { return std::log(a); }},
+        {Keyword::kw_log, [](double a) { return std::log10(a); }},
+        {Keyword::kw_radians, [](double a) { return a * std::numbers::pi / 180.0; }},
+        {Keyword::kw_sin, [](double a) { return std::sin(a); }},
+        {Keyword::kw_sinh, [](double a) { return std::sinh(a); }},
+        {Keyword::kw_sqrt, [](double a) { return std::sqrt(a); }},
+        {Keyword::kw_tan, [](double a) { return std::tan(a); }},
+        {Keyword::kw_tanh, [](double a) { return std::tanh(a); }},
+    };
+    for (const auto& [kw, op] : kUnary)
+        if (fn.kw == kw) return op(f(parseArguments(1, 1, fn)[0]));
+
+    switch (fn.kw) {
+        case Keyword::kw_atan2: { auto a = parseArguments(2, 2, fn); return std::atan2(f(a[0]), f(a[1])); }
+        case Keyword::kw_pow: { auto a = parseArguments(2, 2, fn); return std::pow(f(a[0]), f(a[1])); }
+        case Keyword::kw_mod: { auto a = parseArguments(2, 2, fn); return std::fmod(f(a[0]), f(a[1])); }
+        case Keyword::kw_div: { auto a = parseArguments(2, 2, fn); return std::trunc(f(a[0]) / f(a[1])); }
+        case Keyword::kw_min: case Keyword::kw_max: {
+            auto a = parseArguments(1, 256, fn);
+            double r = f(a[0]);
+            for (size_t i = 1; i < a.size(); ++i)
+                r = fn.kw == Keyword::kw_min ? std::min(r, f(a[i])) : std::max(r, f(a[i]));
+            return r;
+        }
+        case Keyword::kw_select: {
+            auto a = parseArguments(3, 4, fn);
+            const double s = f(a[0]);
+            if (a.size() == 3) return s < 0 ? a[1] : a[2];
+            return s < 0 ? a[1] : (s == 0 ? a[2] : a[3]);
+        }
+        case Keyword::kw_vlength: return length(vec(parseArguments(1, 1, fn)[0]));
+        case Keyword::kw_vdot: { auto a = parseArguments(2, 2, fn); return dot(vec(a[0]), vec(a[1])); }
+        case Keyword::kw_vcross: { auto a = parseArguments(2, 2, fn); return VectorValue::fromVec3(cross(vec(a[0]), vec(a[1]))); }
+        case Keyword::kw_vnormalize: return VectorValue::fromVec3(normalize(vec(parseArguments(1, 1, fn)[0])));
+        case Keyword::kw_vrotate: {
+            auto a = parseArguments(2, 2, fn);
+            return VectorValue::fromVec3(Transform::rotate(vec(a[1])).point(vec(a[0])));
+        }
+        case Keyword::kw_vaxis_rotate: {
+            auto a = parseArguments(3, 3, fn);
+            // Rodrigues' rotation, in POV-Ray's left-handed sense.
+            const Vec3 p = vec(a[0]), k = normalize(vec(a[1]));
+            const double ang = -f(a[2]) * std::numbers::pi / 180.0;
+            const Vec3 r = p * std::cos(ang) + cross(k, p) * std::sin(ang) +
+                           k * (dot(k, p) * (1 - std::cos(ang)));
+            return VectorValue::fromVec3(r);
+        }
+        case Keyword::kw_strlen: return double(str(parseArguments(1, 1, fn)[0]).size());
+        case Keyword::kw_strupr: case Keyword::kw_strlwr: {
+            std::string s = str(parseArguments(1, 1, fn)[0]);
+            for (char& c : s) c = fn.kw == Keyword::kw_strupr ? std::toupper(c) : std::tolower(c);
+            return s;
+        }
+        case Keyword::kw_concat: {
+            std::string out;
+            for (const Value& v : parseArguments(1, 1024, fn)) out += str(v);
+            return out;
+        }
+        case Keyword::kw_chr: return std::string(1, static_cast<char>(f(parseArguments(1, 1, fn)[0])));
+        case Keyword::kw_asc: { const std::string s = str(parseArguments(1, 1, fn)[0]); return s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0])); }
+        case Keyword::kw_strcmp: { auto a = parseArguments(2, 2, fn); const int c = str(a[0]).compare(str(a[1])); return double((c > 0) - (c < 0)); }
+        case Keyword::kw_substr: {
+            auto a = parseArguments(3, 3, fn);
+            const std::string s = str(a[0]);
+            const long start = std::lround(f(a[1])), len = std::lround(f(a[2]));
+            if (start < 1 || len < 0 || static_cast<size_t>(start - 1 + len) > s.size())
+                fail(fn, "substr: range is outside the string");
+            return s.substr(static_cast<size_t>(start - 1), static_cast<size_t>(len));
+        }
+        case Keyword::kw_val: return std::strtod(str(parseArguments(1, 1, fn)[0]).c_str(), nullptr);
+        case Keyword::kw_str: {
+            // str(value, width, precision) as printf's "%W.Pf"; width 0
+            // means none, precision -1 means 6.
+            auto a = parseArguments(3, 3, fn);
+            const double v = f(a[0]);
+            const int width = static_cast<int>(f(a[1])), precision = static_cast<int>(f(a[2]));
+            const int p = precision < 0 ? 6 : precision;
+            if (width < 0) return fmt::format("{:0{}.{}f}", v, -width, p);
+            return fmt::format("{:{}.{}f}", v, width, p);
+        }
+        case Keyword::kw_vstr: {
+            auto a = parseArguments(5, 5, fn);
+            const VectorValue v = toVector(a[0], fn, 3);
+            const int dims = static_cast<int>(f(a[1]));
+            const std::string sep = str(a[2]);
+            const int width = static_cast<int>(f(a[3])), precision = static_cast<int>(f(a[4]));
+            const int p = precision < 0 ? 6 : precision;
+            std::string out;
+            for (int i = 0; i < dims; ++i) {
+                if (i) out += sep;
+                out += width < 0 ? fmt::format("{:0{}.{}f}", v.v[i], -width, p)
+                                 : fmt::format("{:{}.{}f}", v.v[i], width, p);
+            }
+            return out;
+        }
+        case Keyword::kw_defined: {
+            expect(Sym::LParen, "'('");
+            const Token id = rawPeek();
+            ++cursors_.back().pos;
+            expect(Sym::RParen, "')'");
+            return double(id.isIdentifier() && lookup(std::string(id.text)) != nullptr);
+        }
+        default: break;
+    }
+    unsupported(fn, fmt::format("'{}' in an expression", fn.text));
+}
+
+}  // namespace frameray::sdl

@@ -1,0 +1,37 @@
+// What the frame loop tells the interpreter about the frame being parsed:
+// the values of the built-in identifiers, the library path, declarations
+// from the options, and where messages go.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace frameray::sdl {
+
+struct FrameContext {
+    double clock = 0;
+    double clockDelta = 0;
+    bool clockOn = false;
+    int frameNumber = 0;
+    double initialClock = 0, finalClock = 1;
+    int initialFrame = 1, finalFrame = 1;
+    int imageWidth = 320, imageHeight = 240;
+    std::vector<std::filesystem::path> libraryPaths;
+    // Declare=Name=Value options: numbers become floats, others strings.
+    std::vector<std::pair<std::string, std::string>> declares;
+    double version = 3.7;  // Version option (+MV); #version overrides
+};
+
+// The text streams of a frame (debug, warning...), routed by the frame
+// loop to the console and the frame's own log.
+enum class Stream { Debug, Warning, Render, Statistics, Fatal };
+
+class MessageSink {
+public:
+    virtual ~MessageSink() = default;
+    virtual void message(Stream stream, const std::string& text) = 0;
+};
+
+}  // namespace frameray::sdl

@@ -1,0 +1,609 @@
+// Token stream, directives, scopes and include files of the interpreter.
+#include "sdl/interpreter.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace frameray::sdl {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr int kMaxIncludeDepth = 100;  // POV-Ray's own nesting limit is of this order
+constexpr double kEpsilon = 1e-10;     // the language's equality/truth epsilon
+}  // namespace
+
+const char* valueKindName(const Value& v) {
+    switch (v.index()) {
+        case 0: return "nothing";
+        case 1: return "float";
+        case 2: return std::get<VectorValue>(v).isColor ? "color" : "vector";
+        case 3: return "string";
+        case 4: return "object";
+        case 5: return "pigment";
+        case 6: return "finish";
+        case 7: return "texture";
+        case 8: return "camera";
+        case 9: return "light_source";
+        case 10: return "macro";
+        case 11: return "transform";
+    }
+    return "value";
+}
+
+Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSink& messages)
+    : frame_(frame), cache_(cache), messages_(messages) {
+    version_ = frame.version;
+    endToken_.kind = TokenKind::End;
+}
+
+scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
+    auto file = cache_.get(sceneFile);
+    if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
+    return run(std::move(file));
+}
+
+scene::Scene Interpreter::parseText(const std::string& name, const std::string& text) {
+    return run(TokenCache::fromText(name, text));
+}
+
+scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
+    scopes_.assign(1, Scope{});
+    // Declare=Name=Value options become global identifiers before parsing.
+    for (const auto& [name, value] : frame_.declares) {
+        char* end = nullptr;
+        const double number = std::strtod(value.c_str(), &end);
+        if (end && *end == '\0' && !value.empty())
+            scopes_[0][name] = number;
+        else
+            scopes_[0][name] = value;
+    }
+    cursors_.push_back({file, 0, CursorKind::File, 1, 0, false});
+    while (parseStatement()) {
+    }
+    if (!blocks_.empty()) {
+        const Block& open = blocks_.back();
+        throw SdlError(open.loc, "missing #end: this directive is never closed");
+    }
+    scene_.languageVersion = version_;
+    scene_.versionDeclared = versionSeen_;
+    return std::move(scene_);
+}
+
+const Value* Interpreter::lookup(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) return &found->second;
+    }
+    return nullptr;
+}
+
+Value* Interpreter::find(const std::string& name) {
+    return const_cast<Value*>(std::as_const(*this).lookup(name));
+}
+
+void Interpreter::declare(const std::string& name, Value value, bool local) {
+    if (local) {
+        scopes_.back()[name] = std::move(value);
+        return;
+    }
+    // #declare assigns the most local existing version, or creates a global.
+    if (Value* existing = find(name)) {
+        *existing = std::move(value);
+        return;
+    }
+    scopes_.front()[name] = std::move(value);
+}
+
+// --- token stream ------------------------------------------------------------
+
+const Token& Interpreter::rawPeek() {
+    for (;;) {
+        Cursor& c = cursors_.back();
+        const Token& t = c.file->tokens[c.pos];
+        if (t.kind != TokenKind::End) return t;
+        if (cursors_.size() == 1) return t;
+        if (c.kind == CursorKind::Macro) fail(t, "macro body ends without #end");
+        // End of an include file: its #local identifiers go with it.
+        if (blocks_.size() > c.blockCount)
+            throw SdlError(blocks_.back().loc, "missing #end before the end of the include file");
+        scopes_.resize(c.scopeCount);
+        cursors_.pop_back();
+        --includeDepth_;
+    }
+}
+
+const Token& Interpreter::peek() {
+    for (;;) {
+        const Token& t = rawPeek();
+        if (t.is(Sym::Hash) && !cursors_.back().inDirective) {
+            runDirective();
+            continue;
+        }
+        if (t.isIdentifier()) {
+            const Value* v = lookup(std::string(t.text));
+            if (v && std::holds_alternative<MacroPtr>(*v)) {
+                const Token nameToken = t;
+                const MacroPtr macro = std::get<MacroPtr>(*v);
+                ++cursors_.back().pos;
+                invokeMacro(nameToken, *macro);
+                continue;
+            }
+        }
+        return t;
+    }
+}
+
+Token Interpreter::next() {
+    Token t = peek();
+    if (t.kind != TokenKind::End) ++cursors_.back().pos;
+    return t;
+}
+
+SourceLoc Interpreter::loc(const Token& t) const {
+    // Tokens handed around are copies; they belong to the file of the top
+    // cursor except after a file boundary, where callers pass locations.
+    return cursors_.back().file->locOf(t);
+}
+
+SourceLoc Interpreter::here() { return loc(peek()); }
+
+void Interpreter::fail(const Token& at, const std::string& message) {
+    throw SdlError(loc(at), message);
+}
+
+void Interpreter::failHere(const std::string& message) {
+    const Token t = peek();
+    fail(t, message);
+}
+
+void Interpreter::warn(const Token& at, const std::string& message) {
+    messages_.message(Stream::Warning, formatDiagnostic(Severity::Warning, loc(at), message));
+}
+
+void Interpreter::unsupported(const Token& at, const std::string& feature) {
+    fail(at, fmt::format("not supported yet: {}", feature));
+}
+
+void Interpreter::expect(Sym s, const char* what) {
+    const Token t = peek();
+    if (!t.is(s)) fail(t, fmt::format("expected {}, found {}", what, describeToken(t)));
+    next();
+}
+
+bool Interpreter::accept(Sym s) {
+    if (!peek().is(s)) return false;
+    next();
+    return true;
+}
+
+bool Interpreter::accept(Keyword k) {
+    if (!peek().is(k)) return false;
+    next();
+    return true;
+}
+
+std::string Interpreter::expectIdentifier() {
+    const Token t = rawPeek();
+    if (t.kind != TokenKind::Word)
+        fail(t, fmt::format("expected an identifier, found {}", describeToken(t)));
+    if (t.kw != Keyword::None)
+        fail(t, fmt::format("'{}' is a reserved word and cannot be used as an identifier", t.text));
+    ++cursors_.back().pos;
+    return std::string(t.text);
+}
+
+// --- directives ----------------------------------------------------------------
+
+void Interpreter::runDirective() {
+    const size_t hashPos = cursors_.back().pos;
+    const Token hash = rawPeek();
+    ++cursors_.back().pos;
+    const Token word = rawPeek();
+    if (word.kind != TokenKind::Word || word.kw == Keyword::None)
+        fail(word, fmt::format("expected a directive after '#', found {}", describeToken(word)));
+    ++cursors_.back().pos;
+    // Marks this cursor as reading directive arguments until we return.
+    struct ArgumentMode {
+        Interpreter& self;
+        size_t index;
+        ArgumentMode(Interpreter& s, size_t i) : self(s), index(i) { self.cursors_[index].inDirective = true; }
+        ~ArgumentMode() {
+            if (index < self.cursors_.size()) self.cursors_[index].inDirective = false;
+        }
+    } argumentMode(*this, cursors_.size() - 1);
+    switch (word.kw) {
+        case Keyword::kw_declare: directiveDeclare(false); break;
+        case Keyword::kw_local: directiveDeclare(true); break;
+        case Keyword::kw_include: directiveInclude(word); break;
+        case Keyword::kw_if: directiveIf(word, &Interpreter::conditionExpression); break;
+        case Keyword::kw_ifdef: directiveIf(word, &Interpreter::conditionIfdef); break;
+        case Keyword::kw_ifndef: directiveIf(word, &Interpreter::conditionIfndef); break;
+        case Keyword::kw_else:
+        case Keyword::kw_elseif: directiveElse(word); break;
+        case Keyword::kw_end: directiveEnd(word); break;
+        case Keyword::kw_while: directiveWhile(word, hashPos); break;
+        case Keyword::kw_for: directiveFor(word); break;
+        case Keyword::kw_switch: directiveSwitch(word); break;
+        case Keyword::kw_case:
+        case Keyword::kw_range:
+            // Reached while executing a case above: fall through, ignoring
+            // this label's values.
+            if (blocks_.empty() || blocks_.back().kind != BlockKind::Switch)
+                fail(word, fmt::format("#{} outside #switch", word.text));
+            expect(Sym::LParen, "'('");
+            parseFloat();
+            if (word.kw == Keyword::kw_range) {
+                expect(Sym::Comma, "','");
+                parseFloat();
+            }
+            expect(Sym::RParen, "')'");
+            break;
+        case Keyword::kw_break: directiveBreak(word); break;
+        case Keyword::kw_macro: directiveMacro(word); break;
+        case Keyword::kw_version: {
+            version_ = parseFloat();
+            versionSeen_ = true;
+            accept(Sym::Semicolon);
+            break;
+        }
+        case Keyword::kw_undef: {
+            const std::string name = expectIdentifier();
+            for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+                if (it->erase(name)) break;
+            break;
+        }
+        case Keyword::kw_debug: directiveMessage(Stream::Debug); break;
+        case Keyword::kw_warning: directiveMessage(Stream::Warning); break;
+        case Keyword::kw_render: directiveMessage(Stream::Render); break;
+        case Keyword::kw_statistics: directiveMessage(Stream::Statistics); break;
+        case Keyword::kw_error: {
+            const std::string text = parseString();
+            fail(word, fmt::format("#error: {}", text));
+        }
+        default:
+            (void)hash;
+            unsupported(word, fmt::format("#{}", word.text));
+    }
+}
+
+void Interpreter::directiveDeclare(bool local) {
+    const Token nameToken = rawPeek();
+    const std::string name = expectIdentifier();
+    expect(Sym::Equal, "'='");
+    // The value may be an object whose body holds directives of its own,
+    // so it is read as ordinary scene text (as POV-Ray does - hence its
+    // advice to end declarations with ';').
+    cursors_.back().inDirective = false;
+    const Token start = peek();
+    Value value;
+    if (isObjectStart(start)) {
+        value = parseObject();
+    } else if (start.is(Keyword::kw_pigment)) {
+        value = parsePigment();
+    } else if (start.is(Keyword::kw_finish)) {
+        value = parseFinish(nullptr);
+    } else if (start.is(Keyword::kw_texture)) {
+        value = parseTexture(nullptr);
+    } else if (start.is(Keyword::kw_camera)) {
+        value = std::make_shared<const scene::Camera>(parseCamera());
+    } else if (start.is(Keyword::kw_transform)) {
+        value = std::make_shared<const Transform>(parseTransformBlock());
+    } else {
+        value = parseExpression();
+        const bool needsSemicolon = std::holds_alternative<double>(value) ||
+                                    std::holds_alternative<VectorValue>(value) ||
+                                    std::holds_alternative<std::string>(value);
+        if (needsSemicolon && !peek().is(Sym::Semicolon))
+            warn(nameToken, fmt::format("missing ';' after the declaration of '{}'", name));
+    }
+    accept(Sym::Semicolon);
+    declare(name, std::move(value), local);
+}
+
+fs::path Interpreter::findIncludeFile(const std::string& name) const {
+    std::error_code ec;
+    const fs::path p(name);
+    if (p.is_absolute()) return fs::exists(p, ec) ? p : fs::path();
+    std::vector<fs::path> dirs;
+    // The including file's folder, the working folder, then the library path.
+    dirs.push_back(fs::path(cursors_.back().file->source->path()).parent_path());
+    dirs.push_back(fs::current_path(ec));
+    for (const auto& lib : frame_.libraryPaths) dirs.push_back(lib);
+    for (const auto& dir : dirs) {
+        const fs::path candidate = dir / p;
+        if (fs::is_regular_file(candidate, ec)) return candidate;
+    }
+    return {};
+}
+
+void Interpreter::directiveInclude(const Token& at) {
+    const std::string name = parseString();
+    if (includeDepth_ >= kMaxIncludeDepth)
+        fail(at, fmt::format("#include nested more than {} levels deep", kMaxIncludeDepth));
+    const fs::path path = findIncludeFile(name);
+    if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
+    auto file = cache_.get(path);
+    if (!file) fail(at, fmt::format("cannot read include file '{}'", path.string()));
+    // A new symbol table for the file's #local identifiers.
+    scopes_.emplace_back();
+    cursors_.push_back({file, 0, CursorKind::File, scopes_.size() - 1, blocks_.size(), false});
+    ++includeDepth_;
+}
+
+bool Interpreter::conditionExpression() {
+    expect(Sym::LParen, "'('");
+    const Token at = peek();
+    const double v = toFloat(parseExpression(), at);
+    expect(Sym::RParen, "')'");
+    return std::fabs(v) > kEpsilon;
+}
+
+bool Interpreter::conditionIfdef() {
+    expect(Sym::LParen, "'('");
+    const Token t = rawPeek();
+    bool defined = false;
+    if (t.kind == TokenKind::Word) {
+        ++cursors_.back().pos;
+        defined = t.kw == Keyword::None && lookup(std::string(t.text)) != nullptr;
+    } else {
+        fail(t, fmt::format("expected an identifier, found {}", describeToken(t)));
+    }
+    expect(Sym::RParen, "')'");
+    return defined;
+}
+
+bool Interpreter::conditionIfndef() { return !conditionIfdef(); }
+
+void Interpreter::directiveIf(const Token& at, bool (Interpreter::*condition)()) {
+    for (bool taken = (this->*condition)();; taken = conditionExpression()) {
+        if (taken) {
+            blocks_.push_back({BlockKind::If, loc(at)});
+            return;
+        }
+        const Keyword found = skipBranch(true, false);
+        if (found == Keyword::kw_else) {
+            blocks_.push_back({BlockKind::If, loc(at)});
+            return;
+        }
+        if (found != Keyword::kw_elseif) return;  // #end
+    }
+}
+
+void Interpreter::directiveElse(const Token& at) {
+    if (!blocks_.empty() && blocks_.back().kind == BlockKind::Switch && at.kw == Keyword::kw_else)
+        return;  // falling through into a switch's #else
+    if (blocks_.empty() || blocks_.back().kind != BlockKind::If)
+        fail(at, fmt::format("#{} without a matching #if", at.text));
+    // The taken branch ends here; skip every later branch.
+    skipBranch(false, false);
+    blocks_.pop_back();
+}
+
+void Interpreter::directiveEnd(const Token& at) {
+    if (blocks_.empty() || blocks_.size() <= cursors_.back().blockCount)
+        fail(at, "#end without a matching #if, #while, #for, #switch or #macro");
+    Block& b = blocks_.back();
+    switch (b.kind) {
+        case BlockKind::If:
+        case BlockKind::Switch: blocks_.pop_back(); break;
+        case BlockKind::While: {
+            const size_t restart = b.restartPos;
+            blocks_.pop_back();
+            cursors_.back().pos = restart;  // re-runs the #while and its test
+            break;
+        }
+        case BlockKind::For: {
+            Value* var = find(b.loopVar);
+            if (!var || !std::holds_alternative<double>(*var))
+                fail(at, fmt::format("#for loop variable '{}' is no longer a float", b.loopVar));
+            const double value = std::get<double>(*var) + b.loopStep;
+            *var = value;
+            const bool more = b.loopStep > 0 ? value <= b.loopEnd + kEpsilon : value >= b.loopEnd - kEpsilon;
+            if (more)
+                cursors_.back().pos = b.restartPos;
+            else
+                blocks_.pop_back();
+            break;
+        }
+        case BlockKind::Macro: {
+            const Cursor& c = cursors_.back();
+            blocks_.resize(c.blockCount);
+            scopes_.resize(c.scopeCount);
+            cursors_.pop_back();
+            break;
+        }
+    }
+}
+
+void Interpreter::directiveWhile(const Token& at, size_t hashPos) {
+    if (conditionExpression()) {
+        Block b{BlockKind::While, loc(at)};
+        b.restartPos = hashPos;
+        blocks_.push_back(b);
+    } else {
+        skipBranch(false, false);
+    }
+}
+
+void Interpreter::directiveFor(const Token& at) {
+    expect(Sym::LParen, "'('");
+    const std::string var = expectIdentifier();
+    expect(Sym::Comma, "','");
+    const double start = parseFloat();
+    expect(Sym::Comma, "','");
+    const double end = parseFloat();
+    double step = 1;
+    if (accept(Sym::Comma)) step = parseFloat();
+    expect(Sym::RParen, "')'");
+    if (step == 0) fail(at, "#for step must not be zero");
+    declare(var, start, true);
+    const bool run = step > 0 ? start <= end + kEpsilon : start >= end - kEpsilon;
+    if (!run) {
+        skipBranch(false, false);
+        return;
+    }
+    Block b{BlockKind::For, loc(at)};
+    b.restartPos = cursors_.back().pos;
+    b.loopVar = var;
+    b.loopEnd = end;
+    b.loopStep = step;
+    blocks_.push_back(b);
+}
+
+void Interpreter::directiveSwitch(const Token& at) {
+    expect(Sym::LParen, "'('");
+    const double value = parseFloat();
+    expect(Sym::RParen, "')'");
+    Block b{BlockKind::Switch, loc(at)};
+    b.switchValue = value;
+    // Find the first label that matches; its body runs until #break.
+    for (;;) {
+        const Keyword found = skipBranch(false, true);
+        if (found == Keyword::kw_end) return;
+        if (found == Keyword::kw_else) break;
+        if (found == Keyword::kw_break) continue;
+        expect(Sym::LParen, "'('");
+        bool match;
+        if (found == Keyword::kw_case) {
+            match = std::fabs(parseFloat() - value) < kEpsilon;
+        } else {
+            const double lo = parseFloat();
+            expect(Sym::Comma, "','");
+            const double hi = parseFloat();
+            match = value >= lo && value <= hi;
+        }
+        expect(Sym::RParen, "')'");
+        if (match) break;
+    }
+    blocks_.push_back(b);
+}
+
+void Interpreter::directiveBreak(const Token& at) {
+    // Leave the innermost loop, switch or macro; any #if blocks inside it
+    // are left too.
+    size_t i = blocks_.size();
+    while (i > cursors_.back().blockCount && blocks_[i - 1].kind == BlockKind::If) --i;
+    if (i == cursors_.back().blockCount && cursors_.back().kind != CursorKind::Macro) {
+        // #break outside anything breakable is ignored, as POV-Ray does.
+        (void)at;
+        return;
+    }
+    const size_t ends = blocks_.size() - i + 1;
+    for (size_t k = 0; k < ends; ++k) skipBranch(false, false);
+    const Block target = blocks_[i - 1];
+    blocks_.resize(i - 1);
+    if (target.kind == BlockKind::Macro) {
+        const Cursor& c = cursors_.back();
+        blocks_.resize(c.blockCount);
+        scopes_.resize(c.scopeCount);
+        cursors_.pop_back();
+    }
+}
+
+void Interpreter::directiveMacro(const Token& at) {
+    auto macro = std::make_shared<Macro>();
+    macro->name = expectIdentifier();
+    macro->loc = loc(at);
+    expect(Sym::LParen, "'('");
+    if (!peek().is(Sym::RParen)) {
+        do {
+            macro->params.push_back(expectIdentifier());
+        } while (accept(Sym::Comma));
+    }
+    expect(Sym::RParen, "')'");
+    macro->file = cursors_.back().file;
+    macro->bodyStart = cursors_.back().pos;
+    // The body runs at each call; now it is only skipped.
+    const Keyword found = skipBranch(false, false);
+    (void)found;
+    declare(macro->name, MacroPtr(macro), false);
+}
+
+void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
+    if (cursors_.size() > 200) fail(nameToken, "macro calls nested too deeply (more than 200)");
+    Scope args;
+    expect(Sym::LParen, fmt::format("'(' after macro name '{}'", macro.name).c_str());
+    size_t count = 0;
+    if (!peek().is(Sym::RParen)) {
+        do {
+            Value v;
+            const Token t = peek();
+            if (isObjectStart(t))
+                v = parseObject();
+            else if (t.is(Keyword::kw_pigment))
+                v = parsePigment();
+            else if (t.is(Keyword::kw_finish))
+                v = parseFinish(nullptr);
+            else if (t.is(Keyword::kw_texture))
+                v = parseTexture(nullptr);
+            else
+                v = parseExpression();
+            if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
+            ++count;
+        } while (accept(Sym::Comma));
+    }
+    expect(Sym::RParen, "')'");
+    if (count != macro.params.size())
+        fail(nameToken, fmt::format("macro '{}' takes {} parameter{}, {} given", macro.name,
+                                    macro.params.size(), macro.params.size() == 1 ? "" : "s", count));
+    cursors_.push_back({macro.file, macro.bodyStart, CursorKind::Macro, scopes_.size(), blocks_.size(), false});
+    scopes_.push_back(std::move(args));
+    blocks_.push_back({BlockKind::Macro, macro.loc});
+}
+
+void Interpreter::directiveMessage(Stream stream) {
+    const std::string text = parseString();
+    messages_.message(stream, text);
+}
+
+Keyword Interpreter::skipBranch(bool stopAtElse, bool stopAtCase) {
+    const SourceLoc start = blocks_.empty() ? SourceLoc{} : blocks_.back().loc;
+    Cursor& c = cursors_.back();
+    int depth = 0;
+    for (;;) {
+        const Token& t = c.file->tokens[c.pos];
+        if (t.kind == TokenKind::End)
+            throw SdlError(start.file ? start : c.file->locOf(t),
+                           "missing #end: the file ends inside this directive");
+        ++c.pos;
+        if (!t.is(Sym::Hash)) continue;
+        const Token& w = c.file->tokens[c.pos];
+        if (w.kind != TokenKind::Word) continue;
+        switch (w.kw) {
+            case Keyword::kw_if:
+            case Keyword::kw_ifdef:
+            case Keyword::kw_ifndef:
+            case Keyword::kw_while:
+            case Keyword::kw_for:
+            case Keyword::kw_switch:
+            case Keyword::kw_macro: ++depth; break;
+            case Keyword::kw_end:
+                if (depth == 0) {
+                    ++c.pos;
+                    return Keyword::kw_end;
+                }
+                --depth;
+                break;
+            case Keyword::kw_else:
+            case Keyword::kw_elseif:
+                if (depth == 0 && (stopAtElse || (stopAtCase && w.kw == Keyword::kw_else))) {
+                    ++c.pos;
+                    return w.kw;
+                }
+                break;
+            case Keyword::kw_case:
+            case Keyword::kw_range:
+            case Keyword::kw_break:
+                if (depth == 0 && stopAtCase) {
+                    ++c.pos;
+                    return w.kw;
+                }
+                break;
+            default: break;
+        }
+    }
+}
+
+}  // namespace frameray::sdl

@@ -1,0 +1,164 @@
+// The scene-language interpreter: one per frame, owning all parse state
+// (DESIGN.md: nothing global, so frames can overlap). It reads tokens from
+// the shared TokenCache, executes directives, macros and loops in the token
+// stream, evaluates expressions and builds a scene::Scene.
+//
+// The implementation is split by concern:
+//   interpreter.cpp    token stream, directives, scopes, include files
+//   expressions.cpp    float/vector/colour/string expressions, built-ins
+//   scene_parser.cpp   objects, camera, lights, textures, global settings
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "scene/scene.h"
+#include "sdl/diagnostics.h"
+#include "sdl/frame_context.h"
+#include "sdl/token_cache.h"
+#include "sdl/value.h"
+
+namespace frameray::sdl {
+
+class Interpreter {
+public:
+    Interpreter(const FrameContext& frame, TokenCache& cache, MessageSink& messages);
+
+    // Parses a scene file into a Scene. Throws SdlError on the first error.
+    scene::Scene parseFile(const std::filesystem::path& sceneFile);
+    // Parses scene text (tests, one-liners); `name` is used in messages.
+    scene::Scene parseText(const std::string& name, const std::string& text);
+
+    // Identifier lookup after parsing (tests).
+    const Value* lookup(const std::string& name) const;
+
+private:
+    // --- token stream (interpreter.cpp) ---
+    enum class CursorKind { File, Macro };
+    struct Cursor {
+        std::shared_ptr<const TokenizedFile> file;
+        size_t pos = 0;
+        CursorKind kind = CursorKind::File;
+        size_t scopeCount = 0;    // scopes_ size to restore when it ends
+        size_t blockCount = 0;    // blocks_ size to restore when it ends
+        // True while a directive's own arguments are read from this cursor:
+        // a '#' met then ends the argument instead of starting a directive
+        // (the expression parser's one-token lookahead must not run the
+        // next line's directive before this one is done).
+        bool inDirective = false;
+    };
+    enum class BlockKind { If, While, For, Switch, Macro };
+    struct Block {
+        Block() = default;
+        Block(BlockKind k, const SourceLoc& l) : kind(k), loc(l) {}
+        BlockKind kind = BlockKind::If;
+        SourceLoc loc;
+        size_t restartPos = 0;   // While: the '#' of the directive; For: after the header
+        std::string loopVar;     // For
+        double loopEnd = 0, loopStep = 1;
+        double switchValue = 0;  // Switch
+    };
+    using Scope = std::unordered_map<std::string, Value>;
+
+    scene::Scene run(std::shared_ptr<const TokenizedFile> file);
+
+    const Token& rawPeek();        // current token, no directive processing
+    const Token& peek();           // current token after directives/macros
+    Token next();                  // consume peek()
+    SourceLoc loc(const Token& t) const;
+    SourceLoc here();              // location of peek()
+    [[noreturn]] void fail(const Token& at, const std::string& message);
+    [[noreturn]] void failHere(const std::string& message);
+    void warn(const Token& at, const std::string& message);
+    [[noreturn]] void unsupported(const Token& at, const std::string& feature);
+
+    void expect(Sym s, const char* what);
+    bool accept(Sym s);
+    bool accept(Keyword k);
+    std::string expectIdentifier();
+
+    void runDirective();           // at '#'
+    void directiveDeclare(bool local);
+    void directiveInclude(const Token& at);
+    void directiveIf(const Token& at, bool (Interpreter::*condition)());
+    void directiveElse(const Token& at);
+    void directiveEnd(const Token& at);
+    void directiveWhile(const Token& at, size_t hashPos);
+    void directiveFor(const Token& at);
+    void directiveSwitch(const Token& at);
+    void directiveBreak(const Token& at);
+    void directiveMacro(const Token& at);
+    void directiveMessage(Stream stream);
+    bool conditionExpression();
+    bool conditionIfdef();
+    bool conditionIfndef();
+    // Skips raw tokens to the matching #else/#elseif/#end (or, in a switch,
+    // #case/#range/#break) of the current nesting level. Returns the
+    // directive keyword found, leaving the cursor after it.
+    Keyword skipBranch(bool stopAtElse, bool stopAtCase);
+    void invokeMacro(const Token& nameToken, const Macro& macro);
+    std::filesystem::path findIncludeFile(const std::string& name) const;
+
+    // --- identifiers ---
+    Value* find(const std::string& name);
+    void declare(const std::string& name, Value value, bool local);
+
+    // --- expressions (expressions.cpp) ---
+    Value parseExpression();                    // float, vector, colour or string
+    double parseFloat();
+    VectorValue parseVector();                  // float promoted to <f,f,f>
+    Vec3 parseVec3();
+    Color parseColor();                         // with optional color/colour keyword
+    std::string parseString();
+    Value parseTernary(bool inVector);
+    Value parseLogical(bool inVector);
+    Value parseRelational(bool inVector);
+    Value parseAdditive(bool inVector);
+    Value parseMultiplicative(bool inVector);
+    Value parseUnary(bool inVector);
+    Value parsePostfix(bool inVector);
+    Value parsePrimary(bool inVector);
+    Value parseVectorLiteral();
+    Value parseColorKeywords(const Token& first);
+    Value parseBuiltinFunction(const Token& name);
+    Value identifierValue(const Token& name);
+    std::vector<Value> parseArguments(size_t min, size_t max, const Token& fn);
+    double toFloat(const Value& v, const Token& at);
+    VectorValue toVector(const Value& v, const Token& at, int size = 3);
+
+    // --- scene statements (scene_parser.cpp) ---
+    bool parseStatement();         // a top-level item; false at end of file
+    bool isObjectStart(const Token& t) const;
+    ObjectPtr parseObject();       // sphere { }, box { }, object { }...
+    bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
+    bool parseTransformation(Transform& transform);
+    Transform parseTransformBlock();
+    scene::Camera parseCamera();
+    scene::Light parseLightSource();
+    TexturePtr parseTexture(const scene::Texture* base);
+    PigmentPtr parsePigment();
+    FinishPtr parseFinish(const scene::Finish* base);
+    void parseFinishItems(scene::Finish& finish);
+    void parseGlobalSettings();
+    void parseBackground();
+    void finalizeCamera(scene::Camera& camera, const Vec3* lookAt, double angle) const;
+    void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;
+
+    FrameContext frame_;
+    TokenCache& cache_;
+    MessageSink& messages_;
+    std::vector<Cursor> cursors_;
+    std::vector<Scope> scopes_;
+    std::vector<Block> blocks_;
+    Token endToken_;
+    scene::Scene scene_;
+    double version_ = 3.7;
+    bool versionSeen_ = false;
+    int includeDepth_ = 0;
+};
+
+}  // namespace frameray::sdl

@@ -1,0 +1,258 @@
+#include "sdl/lexer.h"
+
+#include <charconv>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "sdl/diagnostics.h"
+
+namespace frameray::sdl {
+
+std::string describeToken(const Token& t) {
+    switch (t.kind) {
+        case TokenKind::End: return "end of file";
+        case TokenKind::Number: return fmt::format("number {}", t.number);
+        case TokenKind::String: return fmt::format("string \"{}\"", t.text);
+        case TokenKind::Word:
+            return t.kw == Keyword::None ? fmt::format("identifier '{}'", t.text)
+                                         : fmt::format("keyword '{}'", t.text);
+        case TokenKind::Symbol: return fmt::format("'{}'", t.text);
+    }
+    return "token";
+}
+
+namespace {
+
+bool isIdentStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool isIdentChar(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+void appendUtf8(std::string& out, uint32_t cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+// Symbols: two-character ones are listed first so they win.
+struct SymbolSpelling {
+    std::string_view text;
+    Sym sym;
+};
+constexpr SymbolSpelling kSymbols[] = {
+    {"<=", Sym::LessEq}, {">=", Sym::GreaterEq}, {"!=", Sym::NotEq},  {"{", Sym::LBrace},
+    {"}", Sym::RBrace},  {"(", Sym::LParen},     {")", Sym::RParen},  {"<", Sym::Less},
+    {">", Sym::Greater}, {"[", Sym::LBracket},   {"]", Sym::RBracket}, {",", Sym::Comma},
+    {";", Sym::Semicolon}, {".", Sym::Dot},      {"+", Sym::Plus},    {"-", Sym::Minus},
+    {"*", Sym::Star},    {"/", Sym::Slash},      {"=", Sym::Equal},   {"!", Sym::Bang},
+    {"?", Sym::Question}, {":", Sym::Colon},     {"&", Sym::Amp},     {"|", Sym::Bar},
+    {"#", Sym::Hash},
+};
+
+class Lexer {
+public:
+    explicit Lexer(std::shared_ptr<const SourceFile> source) : out_(std::make_shared<TokenizedFile>()) {
+        out_->source = std::move(source);
+        text_ = out_->source->text();
+    }
+
+    std::shared_ptr<const TokenizedFile> run() {
+        // A UTF-8 byte order mark at the very start is not part of the scene.
+        if (text_.substr(0, 3) == "\xEF\xBB\xBF") advance(3);
+        for (;;) {
+            skipSpaceAndComments();
+            Token t;
+            t.line = line_;
+            t.column = column_;
+            if (pos_ >= text_.size()) {
+                t.kind = TokenKind::End;
+                out_->tokens.push_back(t);
+                break;
+            }
+            lexOne(t);
+            out_->tokens.push_back(t);
+        }
+        return out_;
+    }
+
+private:
+    [[noreturn]] void fail(uint32_t line, uint32_t column, const std::string& message) {
+        throw SdlError({out_->source.get(), line, column}, message);
+    }
+
+    void advance(size_t n = 1) {
+        for (size_t i = 0; i < n && pos_ < text_.size(); ++i) {
+            const char c = text_[pos_++];
+            if (c == '\n' || (c == '\r' && (pos_ >= text_.size() || text_[pos_] != '\n'))) {
+                ++line_;
+                column_ = 1;
+            } else if (c != '\r') {
+                ++column_;
+            }
+        }
+    }
+
+    char peek(size_t ahead = 0) const {
+        return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
+    }
+
+    void skipSpaceAndComments() {
+        for (;;) {
+            const char c = peek();
+            if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v' ||
+                c == '\x1a') {
+                advance();
+            } else if (c == '/' && peek(1) == '/') {
+                while (pos_ < text_.size() && peek() != '\n' && peek() != '\r') advance();
+            } else if (c == '/' && peek(1) == '*') {
+                skipBlockComment();
+            } else {
+                return;
+            }
+        }
+    }
+
+    // Block comments nest, as in POV-Ray.
+    void skipBlockComment() {
+        const uint32_t line = line_, column = column_;
+        int depth = 0;
+        do {
+            if (pos_ >= text_.size()) fail(line, column, "unterminated comment: '/*' has no matching '*/'");
+            if (peek() == '/' && peek(1) == '*') {
+                ++depth;
+                advance(2);
+            } else if (peek() == '*' && peek(1) == '/') {
+                --depth;
+                advance(2);
+            } else {
+                advance();
+            }
+        } while (depth > 0);
+    }
+
+    void lexOne(Token& t) {
+        const char c = peek();
+        if (isIdentStart(c)) {
+            const size_t begin = pos_;
+            while (isIdentChar(peek())) advance();
+            t.kind = TokenKind::Word;
+            t.text = std::string_view(text_).substr(begin, pos_ - begin);
+            t.kw = lookupKeyword(t.text);
+        } else if (isDigit(c) || (c == '.' && isDigit(peek(1)))) {
+            lexNumber(t);
+        } else if (c == '"') {
+            lexString(t);
+        } else {
+            for (const auto& s : kSymbols) {
+                if (text_.compare(pos_, s.text.size(), s.text) == 0) {
+                    t.kind = TokenKind::Symbol;
+                    t.sym = s.sym;
+                    t.text = s.text;
+                    advance(s.text.size());
+                    return;
+                }
+            }
+            fail(t.line, t.column, fmt::format("unexpected character '{}'",
+                                               std::isprint(static_cast<unsigned char>(c))
+                                                   ? std::string(1, c)
+                                                   : fmt::format("\\x{:02x}", static_cast<unsigned char>(c))));
+        }
+    }
+
+    void lexNumber(Token& t) {
+        const size_t begin = pos_;
+        while (isDigit(peek())) advance();
+        if (peek() == '.' && !isIdentStart(peek(1))) {
+            advance();
+            while (isDigit(peek())) advance();
+        }
+        if ((peek() == 'e' || peek() == 'E') &&
+            (isDigit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && isDigit(peek(2))))) {
+            advance(2);
+            while (isDigit(peek())) advance();
+        }
+        t.kind = TokenKind::Number;
+        t.text = std::string_view(text_).substr(begin, pos_ - begin);
+        // strtod on a bounded copy: from_chars for double is not in every libstdc++.
+        t.number = std::strtod(std::string(t.text).c_str(), nullptr);
+    }
+
+    void lexString(Token& t) {
+        const uint32_t line = line_, column = column_;
+        advance();  // opening quote
+        std::string value;
+        for (;;) {
+            if (pos_ >= text_.size() || peek() == '\n' || peek() == '\r')
+                fail(line, column, "unterminated string: missing closing '\"'");
+            const char c = peek();
+            if (c == '"') {
+                advance();
+                break;
+            }
+            if (c != '\\') {
+                value += c;
+                advance();
+                continue;
+            }
+            const char e = peek(1);
+            advance(2);
+            switch (e) {
+                case 'a': value += '\a'; break;
+                case 'b': value += '\b'; break;
+                case 'f': value += '\f'; break;
+                case 'n': value += '\n'; break;
+                case 'r': value += '\r'; break;
+                case 't': value += '\t'; break;
+                case 'v': value += '\v'; break;
+                case '0': value += '\0'; break;
+                case '\\': value += '\\'; break;
+                case '\'': value += '\''; break;
+                case '"': value += '"'; break;
+                case 'u': {
+                    uint32_t cp = 0;
+                    for (int i = 0; i < 4; ++i) {
+                        const char h = peek();
+                        int d = isDigit(h) ? h - '0'
+                                : (h >= 'a' && h <= 'f') ? h - 'a' + 10
+                                : (h >= 'A' && h <= 'F') ? h - 'A' + 10
+                                                         : -1;
+                        if (d < 0) fail(line_, column_, "\\u escape needs four hexadecimal digits");
+                        cp = cp * 16 + static_cast<uint32_t>(d);
+                        advance();
+                    }
+                    appendUtf8(value, cp);
+                    break;
+                }
+                default:
+                    // Unknown escapes keep both characters (Windows paths in
+                    // old scenes rely on it).
+                    value += '\\';
+                    value += e;
+                    break;
+            }
+        }
+        t.kind = TokenKind::String;
+        out_->decodedStrings.push_back(std::move(value));
+        t.text = out_->decodedStrings.back();
+    }
+
+    std::shared_ptr<TokenizedFile> out_;
+    std::string_view text_;
+    size_t pos_ = 0;
+    uint32_t line_ = 1, column_ = 1;
+};
+
+}  // namespace
+
+std::shared_ptr<const TokenizedFile> tokenize(std::shared_ptr<const SourceFile> source) {
+    return Lexer(std::move(source)).run();
+}
+
+}  // namespace frameray::sdl

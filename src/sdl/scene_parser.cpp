@@ -1,0 +1,508 @@
+// Scene statements: objects and their modifiers, camera, lights, textures,
+// global settings. Builds scene:: values from the token stream.
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+// Keywords that start a shape or CSG object, and whether it is built yet.
+struct ObjectKeyword {
+    Keyword kw;
+    bool supported;
+};
+constexpr ObjectKeyword kObjectKeywords[] = {
+    {Keyword::kw_sphere, true},         {Keyword::kw_box, true},
+    {Keyword::kw_plane, true},          {Keyword::kw_object, true},
+    {Keyword::kw_cylinder, false},      {Keyword::kw_cone, false},
+    {Keyword::kw_torus, false},         {Keyword::kw_disc, false},
+    {Keyword::kw_triangle, false},      {Keyword::kw_smooth_triangle, false},
+    {Keyword::kw_quadric, false},       {Keyword::kw_quartic, false},
+    {Keyword::kw_cubic, false},         {Keyword::kw_poly, false},
+    {Keyword::kw_union, false},         {Keyword::kw_merge, false},
+    {Keyword::kw_intersection, false},  {Keyword::kw_difference, false},
+    {Keyword::kw_blob, false},          {Keyword::kw_lathe, false},
+    {Keyword::kw_sor, false},           {Keyword::kw_prism, false},
+    {Keyword::kw_superellipsoid, false}, {Keyword::kw_sphere_sweep, false},
+    {Keyword::kw_isosurface, false},    {Keyword::kw_parametric, false},
+    {Keyword::kw_mesh, false},          {Keyword::kw_mesh2, false},
+    {Keyword::kw_height_field, false},  {Keyword::kw_bicubic_patch, false},
+    {Keyword::kw_text, false},          {Keyword::kw_julia_fractal, false},
+    {Keyword::kw_polygon, false},       {Keyword::kw_ovus, false},
+};
+
+const ObjectKeyword* findObjectKeyword(Keyword kw) {
+    for (const auto& o : kObjectKeywords)
+        if (o.kw == kw) return &o;
+    return nullptr;
+}
+
+}  // namespace
+
+bool Interpreter::isObjectStart(const Token& t) const {
+    return t.kind == TokenKind::Word && findObjectKeyword(t.kw) != nullptr;
+}
+
+bool Interpreter::parseStatement() {
+    const Token t = peek();
+    if (t.kind == TokenKind::End) return false;
+    if (isObjectStart(t)) {
+        scene_.objects.push_back(parseObject());
+        return true;
+    }
+    switch (t.kw) {
+        case Keyword::kw_camera: scene_.camera = parseCamera(); return true;
+        case Keyword::kw_light_source: scene_.lights.push_back(parseLightSource()); return true;
+        case Keyword::kw_global_settings: parseGlobalSettings(); return true;
+        case Keyword::kw_background: parseBackground(); return true;
+        case Keyword::kw_fog: case Keyword::kw_sky_sphere: case Keyword::kw_rainbow:
+        case Keyword::kw_media: case Keyword::kw_photons: case Keyword::kw_radiosity:
+            unsupported(t, std::string(t.text));
+        default: break;
+    }
+    if (t.is(Sym::Semicolon)) {  // stray semicolons are harmless
+        next();
+        return true;
+    }
+    fail(t, fmt::format("expected an object, camera, light_source or directive, found {}",
+                        describeToken(t)));
+}
+
+// --- objects -----------------------------------------------------------------
+
+ObjectPtr Interpreter::parseObject() {
+    const Token kind = next();
+    const ObjectKeyword* ok = findObjectKeyword(kind.kw);
+    if (!ok || !ok->supported) unsupported(kind, std::string(kind.text));
+    expect(Sym::LBrace, fmt::format("'{{' after '{}'", kind.text).c_str());
+
+    auto obj = std::make_shared<scene::Object>();
+    std::optional<scene::Texture> texture;
+    switch (kind.kw) {
+        case Keyword::kw_sphere: {
+            const Vec3 c = parseVec3();
+            expect(Sym::Comma, "',' between the centre and the radius");
+            obj->shape = std::make_shared<scene::Sphere>(c, parseFloat());
+            break;
+        }
+        case Keyword::kw_box: {
+            const Vec3 a = parseVec3();
+            expect(Sym::Comma, "',' between the corners");
+            obj->shape = std::make_shared<scene::Box>(a, parseVec3());
+            break;
+        }
+        case Keyword::kw_plane: {
+            const Token at = peek();
+            const Vec3 n = parseVec3();
+            if (length(n) == 0) fail(at, "the normal of a plane must not be zero");
+            expect(Sym::Comma, "',' between the normal and the distance");
+            obj->shape = std::make_shared<scene::Plane>(n, parseFloat());
+            break;
+        }
+        case Keyword::kw_object: {
+            const Token id = next();
+            if (!id.isIdentifier()) fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
+            const Value v = identifierValue(id);
+            const auto* src = std::get_if<ObjectPtr>(&v);
+            if (!src) fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
+            *obj = **src;
+            if (obj->texture) texture = *obj->texture;
+            break;
+        }
+        default: unsupported(kind, std::string(kind.text));
+    }
+
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        if (!parseObjectModifier(*obj, texture)) {
+            const Token t = peek();
+            if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                unsupported(t, fmt::format("'{}' in {}", t.text, kind.text));
+            fail(t, fmt::format("expected an object modifier or '}}', found {}", describeToken(t)));
+        }
+    }
+    if (texture) obj->texture = std::make_shared<const scene::Texture>(*texture);
+    return obj;
+}
+
+void Interpreter::addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const {
+    obj.transform = obj.transform.then(t);
+    // A transformation after the texture moves the texture too (seed 003 B.3).
+    if (texture) texture->transform = texture->transform.then(t);
+}
+
+bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture) {
+    Transform t;
+    if (parseTransformation(t)) {
+        addTransform(obj, texture ? &*texture : nullptr, t);
+        return true;
+    }
+    const Token tok = peek();
+    // Texture items edit the object's texture, creating it from the
+    // default texture on first use.
+    auto editTexture = [&]() -> scene::Texture& {
+        if (!texture) texture = obj.texture ? *obj.texture : scene::Texture{};
+        return *texture;
+    };
+    switch (tok.kw) {
+        case Keyword::kw_pigment: editTexture().pigment = parsePigment(); return true;
+        case Keyword::kw_finish: {
+            scene::Texture& tx = editTexture();
+            tx.finish = *parseFinish(&tx.finish);
+            return true;
+        }
+        case Keyword::kw_texture: {
+            scene::Texture& tx = editTexture();
+            tx = *parseTexture(&tx);
+            return true;
+        }
+        case Keyword::kw_no_shadow: next(); obj.noShadow = true; return true;
+        case Keyword::kw_no_image: next(); obj.noImage = true; return true;
+        case Keyword::kw_no_reflection: next(); obj.noReflection = true; return true;
+        case Keyword::kw_hollow:
+            // Only changes media and fog inside the object; neither exists yet.
+            next();
+            if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) || peek().is(Keyword::kw_off) ||
+                peek().is(Keyword::kw_true) || peek().is(Keyword::kw_false))
+                parseFloat();
+            return true;
+        default: return false;
+    }
+}
+
+bool Interpreter::parseTransformation(Transform& out) {
+    const Token t = peek();
+    switch (t.kw) {
+        case Keyword::kw_translate: next(); out = Transform::translate(parseVec3()); return true;
+        case Keyword::kw_rotate: next(); out = Transform::rotate(parseVec3()); return true;
+        case Keyword::kw_scale: {
+            next();
+            const Token at = peek();
+            Vec3 s = parseVec3();
+            for (int i = 0; i < 3; ++i)
+                if (s[i] == 0) {
+                    warn(at, "scale by zero in a component; changed to 1");
+                    s[i] = 1;
+                }
+            out = Transform::scale(s);
+            return true;
+        }
+        case Keyword::kw_matrix: {
+            next();
+            expect(Sym::Less, "'<' starting the 12 matrix values");
+            std::array<double, 12> v{};
+            for (int i = 0; i < 12; ++i) {
+                if (i) expect(Sym::Comma, "',' between matrix values");
+                v[i] = toFloat(parseTernary(true), t);
+            }
+            expect(Sym::Greater, "'>' closing the matrix");
+            if (!Transform::fromMatrix(Matrix4::fromPovMatrix(v), out))
+                fail(t, "this matrix is singular and cannot be used as a transformation");
+            return true;
+        }
+        case Keyword::kw_transform: out = parseTransformBlock(); return true;
+        default: return false;
+    }
+}
+
+Transform Interpreter::parseTransformBlock() {
+    next();  // transform
+    // `transform Ident` or `transform { [Ident] items... [inverse] }`.
+    if (peek().isIdentifier()) {
+        const Token id = next();
+        const Value v = identifierValue(id);
+        const auto* tp = std::get_if<TransformPtr>(&v);
+        if (!tp) fail(id, fmt::format("'{}' is a {}, not a transform", id.text, valueKindName(v)));
+        return **tp;
+    }
+    expect(Sym::LBrace, "'{' after 'transform'");
+    Transform result;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        if (accept(Keyword::kw_inverse)) {
+            result = result.inverse();
+            continue;
+        }
+        const Token t = peek();
+        if (t.isIdentifier()) {
+            next();
+            const Value v = identifierValue(t);
+            const auto* tp = std::get_if<TransformPtr>(&v);
+            if (!tp) fail(t, fmt::format("'{}' is a {}, not a transform", t.text, valueKindName(v)));
+            result = result.then(**tp);
+            continue;
+        }
+        Transform step;
+        if (!parseTransformation(step))
+            fail(t, fmt::format("expected a transformation in 'transform', found {}", describeToken(t)));
+        result = result.then(step);
+    }
+    return result;
+}
+
+// --- textures ------------------------------------------------------------------
+
+PigmentPtr Interpreter::parsePigment() {
+    next();  // pigment
+    expect(Sym::LBrace, "'{' after 'pigment'");
+    PigmentPtr result = std::make_shared<scene::Pigment>();
+    const Token t = peek();
+    if (t.isIdentifier()) {
+        const Value* v = lookup(std::string(t.text));
+        if (v && std::holds_alternative<PigmentPtr>(*v)) {
+            next();
+            result = std::get<PigmentPtr>(*v);
+        }
+    }
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token item = peek();
+        Transform ignored;
+        if (parseTransformation(ignored)) continue;  // a solid colour looks the same anywhere
+        if (item.is(Keyword::kw_quick_color) || item.is(Keyword::kw_quick_colour)) {
+            next();
+            parseColor();
+            continue;
+        }
+        const bool colorStart = item.isIdentifier() || item.is(Sym::Less) || item.kind == TokenKind::Number ||
+                                item.is(Keyword::kw_color) || item.is(Keyword::kw_colour) ||
+                                item.is(Keyword::kw_rgb) || item.is(Keyword::kw_rgbf) ||
+                                item.is(Keyword::kw_rgbt) || item.is(Keyword::kw_rgbft) ||
+                                item.is(Keyword::kw_srgb) || item.is(Keyword::kw_srgbf) ||
+                                item.is(Keyword::kw_srgbt) || item.is(Keyword::kw_srgbft) ||
+                                item.is(Keyword::kw_red) || item.is(Keyword::kw_green) ||
+                                item.is(Keyword::kw_blue) || item.is(Keyword::kw_filter) ||
+                                item.is(Keyword::kw_transmit) || item.is(Sym::LParen);
+        if (colorStart) {
+            result = std::make_shared<scene::Pigment>(parseColor());
+            continue;
+        }
+        if (item.kind == TokenKind::Word && item.kw != Keyword::None)
+            unsupported(item, fmt::format("'{}' in pigment", item.text));
+        fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
+    }
+    return result;
+}
+
+void Interpreter::parseFinishItems(scene::Finish& f) {
+    for (;;) {
+        if (accept(Sym::RBrace)) return;
+        const Token t = next();
+        switch (t.kw) {
+            case Keyword::kw_ambient: f.ambient = parseColor().rgb; break;
+            case Keyword::kw_emission: f.emission = parseColor().rgb; break;
+            case Keyword::kw_diffuse: f.diffuse = parseFloat(); break;
+            case Keyword::kw_brilliance: f.brilliance = parseFloat(); break;
+            case Keyword::kw_phong: f.phong = parseFloat(); break;
+            case Keyword::kw_phong_size: f.phongSize = parseFloat(); break;
+            case Keyword::kw_specular: f.specular = parseFloat(); break;
+            case Keyword::kw_roughness: f.roughness = parseFloat(); break;
+            case Keyword::kw_metallic: {
+                f.metallic = true;
+                const Token n = peek();
+                if (n.kind == TokenKind::Number || n.is(Sym::LParen)) f.metallic = parseFloat() != 0;
+                break;
+            }
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in finish", t.text));
+                fail(t, fmt::format("expected a finish item or '}}', found {}", describeToken(t)));
+        }
+    }
+}
+
+FinishPtr Interpreter::parseFinish(const scene::Finish* base) {
+    next();  // finish
+    expect(Sym::LBrace, "'{' after 'finish'");
+    scene::Finish f = base ? *base : scene::Finish{};
+    const Token t = peek();
+    if (t.isIdentifier()) {
+        next();
+        const Value v = identifierValue(t);
+        const auto* fp = std::get_if<FinishPtr>(&v);
+        if (!fp) fail(t, fmt::format("'{}' is a {}, not a finish", t.text, valueKindName(v)));
+        f = **fp;
+    }
+    parseFinishItems(f);
+    return std::make_shared<const scene::Finish>(f);
+}
+
+TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
+    next();  // texture
+    expect(Sym::LBrace, "'{' after 'texture'");
+    scene::Texture tex = base ? *base : scene::Texture{};
+    const Token t = peek();
+    if (t.isIdentifier()) {
+        next();
+        const Value v = identifierValue(t);
+        const auto* tp = std::get_if<TexturePtr>(&v);
+        if (!tp) fail(t, fmt::format("'{}' is a {}, not a texture", t.text, valueKindName(v)));
+        tex = **tp;
+    }
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token item = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            tex.transform = tex.transform.then(step);
+            continue;
+        }
+        if (item.is(Keyword::kw_pigment)) {
+            tex.pigment = parsePigment();
+        } else if (item.is(Keyword::kw_finish)) {
+            tex.finish = *parseFinish(&tex.finish);
+        } else if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
+            unsupported(item, fmt::format("'{}' in texture", item.text));
+        } else {
+            fail(item, fmt::format("expected a texture item or '}}', found {}", describeToken(item)));
+        }
+    }
+    return std::make_shared<const scene::Texture>(tex);
+}
+
+// --- camera, lights, settings -------------------------------------------------
+
+void Interpreter::finalizeCamera(scene::Camera& cam, const Vec3* lookAt, double angle) const {
+    if (angle > 0) {
+        // The angle is the horizontal field of view; it sets the length of
+        // the direction vector relative to the right vector.
+        const double rightLength = length(cam.right);
+        cam.direction = normalize(cam.direction) *
+                        (0.5 * rightLength / std::tan(angle * std::numbers::pi / 360.0));
+    }
+    if (lookAt) {
+        const double dirLength = length(cam.direction), upLength = length(cam.up),
+                     rightLength = length(cam.right);
+        // The sign of (up x direction) . right says whether the user set up
+        // a left- or right-handed frame; keep it.
+        const double handedness = dot(cross(cam.up, cam.direction), cam.right);
+        const Vec3 dir = normalize(*lookAt - cam.location);
+        const Vec3 right = normalize(cross(cam.sky, dir));
+        const Vec3 up = cross(dir, right);
+        cam.direction = dir * dirLength;
+        cam.right = right * (handedness > 0 ? rightLength : -rightLength);
+        cam.up = up * upLength;
+    }
+}
+
+scene::Camera Interpreter::parseCamera() {
+    next();  // camera
+    expect(Sym::LBrace, "'{' after 'camera'");
+    scene::Camera cam;
+    const Token first = peek();
+    if (first.isIdentifier()) {
+        next();
+        const Value v = identifierValue(first);
+        const auto* cp = std::get_if<CameraPtr>(&v);
+        if (!cp) fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
+        cam = **cp;
+    }
+    std::optional<Vec3> lookAt;
+    double angle = 0;
+    Transform transform;
+    bool transformed = false;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            transform = transform.then(step);
+            transformed = true;
+            continue;
+        }
+        next();
+        switch (t.kw) {
+            case Keyword::kw_perspective: cam.projection = scene::Projection::Perspective; break;
+            case Keyword::kw_location: cam.location = parseVec3(); break;
+            case Keyword::kw_direction: cam.direction = parseVec3(); break;
+            case Keyword::kw_right: cam.right = parseVec3(); break;
+            case Keyword::kw_up: cam.up = parseVec3(); break;
+            case Keyword::kw_sky: cam.sky = parseVec3(); break;
+            case Keyword::kw_look_at: lookAt = parseVec3(); break;
+            case Keyword::kw_angle: {
+                angle = parseFloat();
+                if (angle <= 0 || angle >= 180) fail(t, "camera angle must be between 0 and 180 degrees");
+                break;
+            }
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in camera", t.text));
+                fail(t, fmt::format("expected a camera item or '}}', found {}", describeToken(t)));
+        }
+    }
+    finalizeCamera(cam, lookAt ? &*lookAt : nullptr, angle);
+    if (transformed) {
+        cam.location = transform.point(cam.location);
+        cam.direction = transform.direction(cam.direction);
+        cam.right = transform.direction(cam.right);
+        cam.up = transform.direction(cam.up);
+    }
+    return cam;
+}
+
+scene::Light Interpreter::parseLightSource() {
+    next();  // light_source
+    expect(Sym::LBrace, "'{' after 'light_source'");
+    scene::Light light;
+    light.position = parseVec3();
+    accept(Sym::Comma);
+    light.color = parseColor().rgb;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            light.position = step.point(light.position);
+            continue;
+        }
+        next();
+        switch (t.kw) {
+            case Keyword::kw_shadowless: light.shadowless = true; break;
+            case Keyword::kw_point_at: case Keyword::kw_spotlight: case Keyword::kw_cylinder:
+            case Keyword::kw_parallel: case Keyword::kw_area_light: case Keyword::kw_fade_distance:
+            case Keyword::kw_fade_power: case Keyword::kw_looks_like: case Keyword::kw_projected_through:
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in light_source", t.text));
+                fail(t, fmt::format("expected a light_source item or '}}', found {}", describeToken(t)));
+        }
+    }
+    return light;
+}
+
+void Interpreter::parseGlobalSettings() {
+    next();
+    expect(Sym::LBrace, "'{' after 'global_settings'");
+    auto& g = scene_.globals;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = next();
+        switch (t.kw) {
+            case Keyword::kw_assumed_gamma: g.assumedGamma = parseFloat(); g.assumedGammaSet = true; break;
+            case Keyword::kw_max_trace_level: g.maxTraceLevel = static_cast<int>(parseFloat()); break;
+            case Keyword::kw_adc_bailout: g.adcBailout = parseFloat(); break;
+            case Keyword::kw_ambient_light: g.ambientLight = parseColor().rgb; break;
+            case Keyword::kw_number_of_waves: case Keyword::kw_noise_generator: parseFloat(); break;
+            case Keyword::kw_charset: next(); break;
+            case Keyword::kw_hf_gray_16: if (peek().kind == TokenKind::Number) parseFloat(); break;
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in global_settings", t.text));
+                fail(t, fmt::format("expected a global setting or '}}', found {}", describeToken(t)));
+        }
+    }
+}
+
+void Interpreter::parseBackground() {
+    next();
+    expect(Sym::LBrace, "'{' after 'background'");
+    scene_.background = parseColor();
+    expect(Sym::RBrace, "'}' closing 'background'");
+}
+
+}  // namespace frameray::sdl

@@ -1,0 +1,51 @@
+// Tokens of the scene language. A tokenized file is immutable and shared
+// between frames through the TokenCache, so tokens refer to text by view.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sdl/keywords.h"
+#include "sdl/source.h"
+
+namespace frameray::sdl {
+
+enum class TokenKind : uint8_t { Word, Number, String, Symbol, End };
+
+enum class Sym : uint8_t {
+    None,
+    LBrace, RBrace, LParen, RParen, Less, Greater, LBracket, RBracket,
+    Comma, Semicolon, Dot, Plus, Minus, Star, Slash, Equal, Bang, Question,
+    Colon, Amp, Bar, Hash, LessEq, GreaterEq, NotEq,
+};
+
+struct Token {
+    TokenKind kind = TokenKind::End;
+    Sym sym = Sym::None;           // for Symbol
+    Keyword kw = Keyword::None;    // for Word: the reserved word, or None for an identifier
+    uint32_t line = 0, column = 0;
+    std::string_view text;         // Word spelling, String contents (escapes decoded)
+    double number = 0;             // for Number
+
+    bool is(Sym s) const { return kind == TokenKind::Symbol && sym == s; }
+    bool is(Keyword k) const { return kind == TokenKind::Word && kw == k; }
+    bool isIdentifier() const { return kind == TokenKind::Word && kw == Keyword::None; }
+};
+
+// One lexed file: its source and its tokens, ending with an End token.
+struct TokenizedFile {
+    std::shared_ptr<const SourceFile> source;
+    std::vector<Token> tokens;
+    std::deque<std::string> decodedStrings;  // storage for String token text
+
+    SourceLoc locOf(const Token& t) const { return {source.get(), t.line, t.column}; }
+};
+
+// Describes a token for messages: "'{'", "identifier 'Foo'", "end of file"...
+std::string describeToken(const Token& t);
+
+}  // namespace frameray::sdl

@@ -1,0 +1,58 @@
+// Values the interpreter computes and binds to identifiers.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/lights.h"
+#include "scene/object.h"
+#include "scene/texture.h"
+#include "sdl/token.h"
+
+namespace frameray::sdl {
+
+// Vectors of 2 to 5 components and colours (5 components: r g b filter
+// transmit). Floats are promoted to these where a vector is expected.
+struct VectorValue {
+    std::array<double, 5> v{};
+    uint8_t size = 3;
+    bool isColor = false;
+
+    Vec3 xyz() const { return {v[0], v[1], v[2]}; }
+    Color color() const { return Color(RGB(v[0], v[1], v[2]), v[3], v[4]); }
+    static VectorValue fromVec3(const Vec3& p) { return {{p.x, p.y, p.z, 0, 0}, 3, false}; }
+    static VectorValue fromColor(const Color& c) {
+        return {{c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit}, 5, true};
+    }
+};
+
+// A macro: where its body starts (just after the parameter list) in which
+// tokenized file, and its parameter names.
+struct Macro {
+    std::string name;
+    std::shared_ptr<const TokenizedFile> file;
+    size_t bodyStart = 0;
+    std::vector<std::string> params;
+    SourceLoc loc;
+};
+
+using ObjectPtr = std::shared_ptr<scene::Object>;
+using PigmentPtr = std::shared_ptr<const scene::Pigment>;
+using FinishPtr = std::shared_ptr<const scene::Finish>;
+using TexturePtr = std::shared_ptr<const scene::Texture>;
+using CameraPtr = std::shared_ptr<const scene::Camera>;
+using LightPtr = std::shared_ptr<const scene::Light>;
+using MacroPtr = std::shared_ptr<const Macro>;
+using TransformPtr = std::shared_ptr<const Transform>;
+
+using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
+                           FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr>;
+
+// "float", "vector", "object"... for messages.
+const char* valueKindName(const Value& v);
+
+}  // namespace frameray::sdl

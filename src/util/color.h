@@ -1,0 +1,38 @@
+// Colours: linear RGB plus POV-Ray's filter and transmit channels.
+#pragma once
+
+#include <algorithm>
+
+namespace frameray {
+
+// Light and surface colours in linear light (scene colours after the
+// assumed_gamma conversion). Arithmetic is component-wise.
+struct RGB {
+    double r = 0, g = 0, b = 0;
+
+    constexpr RGB() = default;
+    constexpr RGB(double r_, double g_, double b_) : r(r_), g(g_), b(b_) {}
+    constexpr explicit RGB(double s) : r(s), g(s), b(s) {}
+
+    constexpr RGB& operator+=(const RGB& o) { r += o.r; g += o.g; b += o.b; return *this; }
+    constexpr RGB& operator*=(const RGB& o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
+    constexpr RGB& operator*=(double s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr bool isBlack() const { return r == 0 && g == 0 && b == 0; }
+};
+
+constexpr RGB operator+(RGB a, const RGB& b) { return a += b; }
+constexpr RGB operator*(RGB a, const RGB& b) { return a *= b; }
+constexpr RGB operator*(RGB a, double s) { return a *= s; }
+constexpr RGB operator*(double s, RGB a) { return a *= s; }
+
+// A pigment colour: RGB with filter (coloured transparency) and transmit
+// (plain transparency), as POV-Ray's rgbft.
+struct Color {
+    RGB rgb;
+    double filter = 0, transmit = 0;
+
+    constexpr Color() = default;
+    constexpr Color(const RGB& c, double f = 0, double t = 0) : rgb(c), filter(f), transmit(t) {}
+};
+
+}  // namespace frameray

@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+
+#include "render/gamma.h"
+#include "render/renderer.h"
+#include "render/world.h"
+
+using namespace frameray;
+
+TEST(Gamma, Povray37Rules) {
+    scene::Scene s;
+    s.globals.assumedGamma = 1.0;
+    s.globals.assumedGammaSet = true;
+    const auto srgb = render::GammaEncoding::forScene(s, 0);
+    // Values read off povray 3.7's output: linear 0.2 -> 124/255, 0.01 -> 25/255.
+    EXPECT_EQ(static_cast<int>(srgb.encode(0.2) * 255 + 0.5), 124);
+    EXPECT_EQ(static_cast<int>(srgb.encode(0.01) * 255 + 0.5), 25);
+    scene::Scene old;
+    old.languageVersion = 3.6;
+    EXPECT_DOUBLE_EQ(render::GammaEncoding::forScene(old, 0).encode(0.5), 0.5);
+}
+
+TEST(World, ClosestHitAndShadowsAcrossBvhAndPlanes) {
+    scene::Scene s;
+    auto sphere = std::make_shared<scene::Object>();
+    sphere->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 5}, 1);
+    auto far = std::make_shared<scene::Object>();
+    far->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 10}, 1);
+    auto plane = std::make_shared<scene::Object>();
+    plane->shape = std::make_shared<scene::Plane>(Vec3{0, 0, -1}, -20);
+    s.objects = {far, plane, sphere};
+    render::World w(s);
+    render::Hit hit;
+    ASSERT_TRUE(w.intersect({{0, 0, 0}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_EQ(hit.object, sphere.get());
+    EXPECT_DOUBLE_EQ(hit.t, 4);
+    ASSERT_TRUE(w.intersect({{0, 5, 0}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_EQ(hit.object, plane.get());
+    EXPECT_TRUE(w.occluded({{0, 0, 0}, {0, 0, 1}}, 0, 4.5));
+    EXPECT_FALSE(w.occluded({{0, 0, 0}, {0, 0, 1}}, 0, 3.5));
+}
+
+TEST(World, TransformedObjectAtLargeScale) {
+    scene::Scene s;
+    auto obj = std::make_shared<scene::Object>();
+    obj->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 0}, 1);
+    obj->transform = Transform::scale(Vec3(1e5)).then(Transform::translate({0, 0, 1e6}));
+    s.objects = {obj};
+    render::World w(s);
+    render::Hit hit;
+    ASSERT_TRUE(w.intersect({{0, 0, 0}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_NEAR(hit.t, 9e5, 1e-6);
+}
+
+TEST(Renderer, DeterministicAcrossRuns) {
+    scene::Scene s;
+    auto obj = std::make_shared<scene::Object>();
+    obj->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 3}, 1);
+    auto tex = std::make_shared<scene::Texture>();
+    tex->pigment = std::make_shared<scene::Pigment>(Color(RGB(1, 0.5, 0.25)));
+    obj->texture = tex;
+    s.objects = {obj};
+    s.lights.push_back({{5, 5, -5}, RGB(1), false});
+    render::World w(s);
+    render::FrameStats a, b;
+    const auto i1 = render::renderFrame(w, {40, 30}, a);
+    const auto i2 = render::renderFrame(w, {40, 30}, b);
+    EXPECT_EQ(i1.rgb, i2.rgb);
+    EXPECT_EQ(a.rays.camera, 1200u);
+    // The centre pixel sees the lit sphere, a corner sees the background.
+    EXPECT_GT(i1.rgb[(15 * 40 + 20) * 3], 0.1f);
+    EXPECT_EQ(i1.rgb[0], 0.0f);
+}
