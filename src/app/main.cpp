@@ -20,6 +20,9 @@ int main(int argc, char** argv) {
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);
             return 0;
+        } else if (a == "--options-markdown") {
+            std::fputs(options::optionsMarkdown().c_str(), stdout);
+            return 0;
         }
     spdlog::set_pattern("%v");
 
@@ -31,6 +34,10 @@ int main(int argc, char** argv) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(opts.inputFile, ec))
             throw options::OptionError("cannot open scene file '" + opts.inputFile + "': no such file");
+        // Options whose effect is not built yet must not be silently ignored.
+        if (opts.antialias) throw options::OptionError("not supported yet: anti-aliasing (Antialias=on / +A)");
+        if (opts.quality < 4)
+            throw options::OptionError("not supported yet: Quality below 4 (+Q0..+Q3 drop shadows and shading)");
         sequence = anim::planSequence(opts);
     } catch (const options::OptionError& e) {
         std::fprintf(stderr, "frameray: error: %s\n", e.what());

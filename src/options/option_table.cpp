@@ -184,4 +184,13 @@ std::string helpText() {
     return out;
 }
 
+std::string optionsMarkdown() {
+    std::string out = "| INI key | switch | default | meaning |\n|---|---|---|---|\n";
+    for (const OptionSpec& o : kOptions) {
+        const std::string sw = o.switchName.empty() ? std::string() : fmt::format("`+{}`", o.switchName);
+        out += fmt::format("| `{}` | {} | {} | {} |\n", o.iniKey, sw, o.defaultText, o.help);
+    }
+    return out;
+}
+
 }  // namespace frameray::options

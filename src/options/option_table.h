@@ -42,5 +42,8 @@ const OptionSpec* findIniKey(std::string_view key);
 
 // `frameray --help` text, generated from the table.
 std::string helpText();
+// The option table as a markdown table, for the README
+// (`frameray --options-markdown`).
+std::string optionsMarkdown();
 
 }  // namespace frameray::options

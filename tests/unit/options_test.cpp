@@ -84,3 +84,13 @@ TEST(Options, HelpListsEveryOption) {
     const std::string help = helpText();
     for (const OptionSpec& o : optionTable()) EXPECT_NE(help.find(o.iniKey), std::string::npos) << o.iniKey;
 }
+
+TEST(Options, ReadmeListsTheOptionTable) {
+    // The README's option section is generated from the table
+    // (build/bin/frameray --options-markdown); this keeps it current.
+    std::ifstream in(FRAMERAY_SOURCE_DIR "/README.md");
+    ASSERT_TRUE(in) << "README.md not found";
+    const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(readme.find(optionsMarkdown()), std::string::npos)
+        << "README.md's option table is out of date: paste the output of `frameray --options-markdown`";
+}
