@@ -68,6 +68,16 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
     }
     scene_.languageVersion = version_;
     scene_.versionDeclared = versionSeen_;
+    // povray 3.7 warns about a missing assumed_gamma because the result
+    // depends on the scene's version (render/gamma.cpp applies the rule).
+    if (!scene_.globals.assumedGammaSet) {
+        const char* text = version_ >= 3.7 - 1e-9
+                               ? "warning: assumed_gamma not specified in this POV-Ray 3.7 or later scene; "
+                                 "using 'assumed_gamma 1.0'"
+                               : "warning: assumed_gamma not specified, so gamma correction is turned off "
+                                 "for compatibility with this pre POV-Ray 3.7 scene";
+        messages_.message(Stream::Warning, fmt::format("{}: {}", file->source->path(), text));
+    }
     return std::move(scene_);
 }
 

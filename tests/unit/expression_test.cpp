@@ -9,7 +9,9 @@ namespace {
 
 struct Collect : MessageSink {
     std::string text;
-    void message(Stream, const std::string& t) override { text += t; }
+    void message(Stream s, const std::string& t) override {
+        if (s == Stream::Debug) text += t;
+    }
 };
 
 struct ParsedText {
