@@ -1,6 +1,7 @@
 // Expressions of the scene language: floats, vectors (2-5 components),
 // colours and strings, with the seed's precedence and promotion rules.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -318,9 +319,29 @@ Value Interpreter::parseColorKeywords(const Token& first) {
 }
 
 Value Interpreter::identifierValue(const Token& name) {
-    const Value* v = lookup(std::string(name.text));
+    const std::string id(name.text);
+    const Value* v = lookup(id);
     if (!v) fail(name, fmt::format("undeclared identifier '{}'", name.text));
+    if (auto d = deprecated_.find(id); d != deprecated_.end() && !(d->second.once && d->second.warned)) {
+        warn(name, d->second.message);
+        d->second.warned = true;
+    }
     Value out = *v;
+    if (const auto* arr = std::get_if<ArrayPtr>(&out); arr && peek().is(Sym::LBracket)) {
+        const ArrayPtr array = *arr;  // keep alive while indexing
+        const size_t index = parseArrayIndex(*array, name);
+        out = array->elements[index];
+        if (std::holds_alternative<std::monostate>(out))
+            fail(name, fmt::format("array element of '{}' used before it was set", name.text));
+    }
+    if (const auto* spline = std::get_if<SplinePtr>(&out); spline && peek().is(Sym::LParen)) {
+        const SplinePtr keep = *spline;
+        return callSpline(*keep, name);
+    }
+    if (const auto* function = std::get_if<FunctionPtr>(&out); function && peek().is(Sym::LParen)) {
+        const FunctionPtr keep = *function;
+        return callFunction(*keep, name);
+    }
     // "Cyan red 0.6": component keywords after a colour identifier.
     if (auto* vec = std::get_if<VectorValue>(&out); vec && vec->isColor) {
         for (int slot; peek().kind == TokenKind::Word && (slot = colorComponent(peek().kw)) >= 0;) {
@@ -392,6 +413,12 @@ Value Interpreter::parsePrimary(bool inVector) {
         case Keyword::kw_image_width: next(); return double(frame_.imageWidth);
         case Keyword::kw_image_height: next(); return double(frame_.imageHeight);
         case Keyword::kw_version: next(); return version_;
+        case Keyword::kw_now: {
+            // Days since 2000-01-01 00:00 UTC, as povray's `now`.
+            next();
+            const auto since = std::chrono::system_clock::now().time_since_epoch();
+            return std::chrono::duration<double>(since).count() / 86400.0 - 10957.0;
+        }
         case Keyword::kw_color: case Keyword::kw_colour: {
             next();
             if (colorComponent(peek().kw) >= 0 && peek().kind == TokenKind::Word) {
@@ -523,8 +550,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         }
         case Keyword::kw_vstr: {
             auto a = parseArguments(5, 5, fn);
-            const VectorValue v = toVector(a[0], fn, 3);
-            const int dims = static_cast<int>(f(a[1]));
+            // vstr(N, V, separator, width, precision)
+            const int dims = std::clamp(static_cast<int>(f(a[0])), 1, 5);
+            const VectorValue v = toVector(a[1], fn, dims);
             const std::string sep = str(a[2]);
             const int width = static_cast<int>(f(a[3])), precision = static_cast<int>(f(a[4]));
             const int p = precision < 0 ? 6 : precision;
@@ -535,6 +563,60 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                                  : fmt::format("{:{}.{}f}", v.v[i], width, p);
             }
             return out;
+        }
+        case Keyword::kw_seed: {
+            // The stream's state starts at the seed truncated to a 32-bit
+            // integer; seed() returns the stream's number.
+            const double v = f(parseArguments(1, 1, fn)[0]);
+            randomStreams_.push_back(static_cast<uint32_t>(static_cast<int64_t>(v)));
+            return double(randomStreams_.size() - 1);
+        }
+        case Keyword::kw_rand: {
+            // povray 3.7's generator, read off its output: a 32-bit LCG
+            // (multiplier 1812433253, increment 12345) scaled by 2^32-1.
+            const double v = f(parseArguments(1, 1, fn)[0]);
+            const long stream = std::lround(v);
+            if (stream < 0 || static_cast<size_t>(stream) >= randomStreams_.size())
+                fail(fn, fmt::format("rand: {} is not a random stream made by seed()", v));
+            uint32_t& state = randomStreams_[static_cast<size_t>(stream)];
+            state = state * 1812433253u + 12345u;
+            return state / 4294967295.0;
+        }
+        case Keyword::kw_bitwise_and: case Keyword::kw_bitwise_or: case Keyword::kw_bitwise_xor: {
+            auto a = parseArguments(2, 256, fn);
+            auto r = static_cast<int64_t>(f(a[0]));
+            for (size_t i = 1; i < a.size(); ++i) {
+                const auto b = static_cast<int64_t>(f(a[i]));
+                r = fn.kw == Keyword::kw_bitwise_and ? (r & b) : fn.kw == Keyword::kw_bitwise_or ? (r | b) : (r ^ b);
+            }
+            return double(r);
+        }
+        case Keyword::kw_dimensions: case Keyword::kw_dimension_size: {
+            auto a = parseArguments(fn.kw == Keyword::kw_dimensions ? 1 : 2, fn.kw == Keyword::kw_dimensions ? 1 : 2, fn);
+            const auto* arr = std::get_if<ArrayPtr>(&a[0]);
+            if (!arr) fail(fn, fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
+            if (fn.kw == Keyword::kw_dimensions) return double((*arr)->dims.size());
+            const long d = std::lround(f(a[1]));
+            if (d < 1 || static_cast<size_t>(d) > (*arr)->dims.size()) return 0.0;
+            return double((*arr)->dims[static_cast<size_t>(d - 1)]);
+        }
+        case Keyword::kw_file_exists: {
+            const std::string name = str(parseArguments(1, 1, fn)[0]);
+            return double(!findIncludeFile(name).empty());
+        }
+        case Keyword::kw_min_extent: case Keyword::kw_max_extent: {
+            auto a = parseArguments(1, 1, fn);
+            const auto* obj = std::get_if<ObjectPtr>(&a[0]);
+            if (!obj) fail(fn, fmt::format("'{}' needs an object, found a {}", fn.text, valueKindName(a[0])));
+            const scene::Bounds b = (*obj)->worldBounds();
+            return VectorValue::fromVec3(fn.kw == Keyword::kw_min_extent ? b.lo : b.hi);
+        }
+        case Keyword::kw_inside: {
+            auto a = parseArguments(2, 2, fn);
+            const auto* obj = std::get_if<ObjectPtr>(&a[0]);
+            if (!obj) fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
+            const scene::Object& o = **obj;
+            return double(o.shape->inside(o.transform.inversePoint(vec(a[1]))));
         }
         case Keyword::kw_defined: {
             expect(Sym::LParen, "'('");

@@ -15,21 +15,25 @@ constexpr double kEpsilon = 1e-10;     // the language's equality/truth epsilon
 }  // namespace
 
 const char* valueKindName(const Value& v) {
-    switch (v.index()) {
-        case 0: return "nothing";
-        case 1: return "float";
-        case 2: return std::get<VectorValue>(v).isColor ? "color" : "vector";
-        case 3: return "string";
-        case 4: return "object";
-        case 5: return "pigment";
-        case 6: return "finish";
-        case 7: return "texture";
-        case 8: return "camera";
-        case 9: return "light_source";
-        case 10: return "macro";
-        case 11: return "transform";
-    }
-    return "value";
+    struct Namer {
+        const char* operator()(std::monostate) const { return "nothing"; }
+        const char* operator()(double) const { return "float"; }
+        const char* operator()(const VectorValue& vec) const { return vec.isColor ? "color" : "vector"; }
+        const char* operator()(const std::string&) const { return "string"; }
+        const char* operator()(const ObjectPtr&) const { return "object"; }
+        const char* operator()(const PigmentPtr&) const { return "pigment"; }
+        const char* operator()(const FinishPtr&) const { return "finish"; }
+        const char* operator()(const TexturePtr&) const { return "texture"; }
+        const char* operator()(const CameraPtr&) const { return "camera"; }
+        const char* operator()(const LightPtr&) const { return "light_source"; }
+        const char* operator()(const MacroPtr&) const { return "macro"; }
+        const char* operator()(const TransformPtr&) const { return "transform"; }
+        const char* operator()(const ArrayPtr&) const { return "array"; }
+        const char* operator()(const FilePtr&) const { return "file identifier"; }
+        const char* operator()(const SplinePtr&) const { return "spline"; }
+        const char* operator()(const FunctionPtr&) const { return "function"; }
+    };
+    return std::visit(Namer{}, v);
 }
 
 Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSink& messages)
@@ -62,6 +66,7 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
     cursors_.push_back({file, 0, CursorKind::File, 1, 0, false});
     while (parseStatement()) {
     }
+    closeAllFiles();
     if (!blocks_.empty()) {
         const Block& open = blocks_.back();
         throw SdlError(open.loc, "missing #end: this directive is never closed");
@@ -264,6 +269,10 @@ void Interpreter::runDirective() {
                 if (it->erase(name)) break;
             break;
         }
+        case Keyword::kw_fopen: directiveFopen(word); break;
+        case Keyword::kw_fclose: directiveFclose(word); break;
+        case Keyword::kw_read: directiveRead(word); break;
+        case Keyword::kw_write: directiveWrite(word); break;
         case Keyword::kw_debug: directiveMessage(Stream::Debug); break;
         case Keyword::kw_warning: directiveMessage(Stream::Warning); break;
         case Keyword::kw_render: directiveMessage(Stream::Render); break;
@@ -279,37 +288,76 @@ void Interpreter::runDirective() {
 }
 
 void Interpreter::directiveDeclare(bool local) {
+    bool deprecated = false, deprecatedOnce = false;
+    std::string deprecatedMessage;
+    if (rawPeek().is(Keyword::kw_deprecated)) {
+        ++cursors_.back().pos;
+        deprecated = true;
+        if (rawPeek().is(Keyword::kw_once)) {
+            ++cursors_.back().pos;
+            deprecatedOnce = true;
+        }
+        if (rawPeek().kind == TokenKind::String) {
+            deprecatedMessage = std::string(rawPeek().text);
+            ++cursors_.back().pos;
+        }
+    }
     const Token nameToken = rawPeek();
     const std::string name = expectIdentifier();
+    // `#declare A[i][j] = value` assigns one array element.
+    if (rawPeek().is(Sym::LBracket)) {
+        Value* arr = find(name);
+        if (!arr || !std::holds_alternative<ArrayPtr>(*arr))
+            fail(nameToken, fmt::format("'{}' is not an array", name));
+        const ArrayPtr array = std::get<ArrayPtr>(*arr);
+        const size_t index = parseArrayIndex(*array, nameToken);
+        expect(Sym::Equal, "'='");
+        cursors_.back().inDirective = false;
+        const Token valueStart = peek();
+        Value value = parseRValue();
+        accept(Sym::Semicolon);
+        setArrayElement(*array, index, std::move(value), valueStart);
+        return;
+    }
     expect(Sym::Equal, "'='");
     // The value may be an object whose body holds directives of its own,
     // so it is read as ordinary scene text (as POV-Ray does - hence its
     // advice to end declarations with ';').
     cursors_.back().inDirective = false;
-    const Token start = peek();
-    Value value;
-    if (isObjectStart(start)) {
-        value = parseObject();
-    } else if (start.is(Keyword::kw_pigment)) {
-        value = parsePigment();
-    } else if (start.is(Keyword::kw_finish)) {
-        value = parseFinish(nullptr);
-    } else if (start.is(Keyword::kw_texture)) {
-        value = parseTexture(nullptr);
-    } else if (start.is(Keyword::kw_camera)) {
-        value = std::make_shared<const scene::Camera>(parseCamera());
-    } else if (start.is(Keyword::kw_transform)) {
-        value = std::make_shared<const Transform>(parseTransformBlock());
-    } else {
-        value = parseExpression();
-        const bool needsSemicolon = std::holds_alternative<double>(value) ||
-                                    std::holds_alternative<VectorValue>(value) ||
-                                    std::holds_alternative<std::string>(value);
-        if (needsSemicolon && !peek().is(Sym::Semicolon))
-            warn(nameToken, fmt::format("missing ';' after the declaration of '{}'", name));
-    }
+    Value value = parseRValue();
+    const bool needsSemicolon = std::holds_alternative<double>(value) ||
+                                std::holds_alternative<VectorValue>(value) ||
+                                std::holds_alternative<std::string>(value);
+    if (needsSemicolon && !peek().is(Sym::Semicolon))
+        warn(nameToken, fmt::format("missing ';' after the declaration of '{}'", name));
     accept(Sym::Semicolon);
+    if (deprecated)
+        deprecated_[name] = {deprecatedMessage.empty()
+                                 ? fmt::format("Identifier '{}' was declared deprecated.", name)
+                                 : deprecatedMessage,
+                             deprecatedOnce, false};
     declare(name, std::move(value), local);
+}
+
+Value Interpreter::parseRValue() {
+    const Token start = peek();
+    if (isObjectStart(start)) return parseObject();
+    switch (start.kw) {
+        case Keyword::kw_pigment: return parsePigment();
+        case Keyword::kw_finish: return parseFinish(nullptr);
+        case Keyword::kw_texture: return parseTexture(nullptr);
+        case Keyword::kw_camera: return std::make_shared<const scene::Camera>(parseCamera());
+        case Keyword::kw_transform: return std::make_shared<const Transform>(parseTransformBlock());
+        case Keyword::kw_array: return parseArrayDeclaration();
+        case Keyword::kw_spline: return parseSpline();
+        case Keyword::kw_function: return parseFunctionDeclaration();
+        case Keyword::kw_light_source: return std::make_shared<const scene::Light>(parseLightSource());
+        default: break;
+    }
+    Value v = parseExpression();
+    // Arrays are values: a declaration from another array copies it.
+    if (auto* arr = std::get_if<ArrayPtr>(&v)) return std::make_shared<ArrayValue>(**arr);
+    return v;
 }
 
 fs::path Interpreter::findIncludeFile(const std::string& name) const {
@@ -356,7 +404,13 @@ bool Interpreter::conditionIfdef() {
     bool defined = false;
     if (t.kind == TokenKind::Word) {
         ++cursors_.back().pos;
-        defined = t.kw == Keyword::None && lookup(std::string(t.text)) != nullptr;
+        const Value* v = t.kw == Keyword::None ? lookup(std::string(t.text)) : nullptr;
+        defined = v != nullptr;
+        // #ifdef (A[i]): whether that element has been set.
+        if (v && std::holds_alternative<ArrayPtr>(*v) && peek().is(Sym::LBracket)) {
+            const ArrayPtr array = std::get<ArrayPtr>(*v);
+            defined = !std::holds_alternative<std::monostate>(array->elements[parseArrayIndex(*array, t)]);
+        }
     } else {
         fail(t, fmt::format("expected an identifier, found {}", describeToken(t)));
     }
@@ -538,18 +592,7 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     size_t count = 0;
     if (!peek().is(Sym::RParen)) {
         do {
-            Value v;
-            const Token t = peek();
-            if (isObjectStart(t))
-                v = parseObject();
-            else if (t.is(Keyword::kw_pigment))
-                v = parsePigment();
-            else if (t.is(Keyword::kw_finish))
-                v = parseFinish(nullptr);
-            else if (t.is(Keyword::kw_texture))
-                v = parseTexture(nullptr);
-            else
-                v = parseExpression();
+            Value v = parseRValue();
             if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
             ++count;
         } while (accept(Sym::Comma));

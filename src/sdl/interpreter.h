@@ -83,6 +83,7 @@ private:
 
     void runDirective();           // at '#'
     void directiveDeclare(bool local);
+    Value parseRValue();           // anything #declare or a macro argument accepts
     void directiveInclude(const Token& at);
     void directiveIf(const Token& at, bool (Interpreter::*condition)());
     void directiveElse(const Token& at);
@@ -106,6 +107,25 @@ private:
     // --- identifiers ---
     Value* find(const std::string& name);
     void declare(const std::string& name, Value value, bool local);
+
+    // --- arrays (arrays.cpp) ---
+    Value parseArrayDeclaration();
+    void parseArrayInitializer(ArrayValue& array, size_t dim, size_t& next);
+    size_t parseArrayIndex(const ArrayValue& array, const Token& at);  // reads [i][j]...
+    void setArrayElement(ArrayValue& array, size_t index, Value value, const Token& at);
+
+    // --- file I/O (file_io.cpp) ---
+    void directiveFopen(const Token& at);
+    void directiveFclose(const Token& at);
+    void directiveRead(const Token& at);
+    void directiveWrite(const Token& at);
+    void closeAllFiles();
+
+    // --- splines and user functions (splines.cpp, functions.cpp) ---
+    Value parseSpline();
+    Value parseFunctionDeclaration();
+    Value callSpline(const SplineValue& spline, const Token& at);
+    Value callFunction(const FunctionValue& function, const Token& at);
 
     // --- expressions (expressions.cpp) ---
     Value parseExpression();                    // float, vector, colour or string
@@ -159,6 +179,16 @@ private:
     double version_ = 3.7;
     bool versionSeen_ = false;
     int includeDepth_ = 0;
+    // Random number streams made by seed(); the float seed() returns is
+    // the stream's index, as in POV-Ray.
+    std::vector<uint32_t> randomStreams_;
+    struct Deprecation {
+        std::string message;
+        bool once = false;
+        bool warned = false;
+    };
+    std::unordered_map<std::string, Deprecation> deprecated_;
+    std::vector<FilePtr> openFiles_;  // closed at the end of the parse
 };
 
 }  // namespace frameray::sdl

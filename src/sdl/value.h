@@ -49,8 +49,26 @@ using LightPtr = std::shared_ptr<const scene::Light>;
 using MacroPtr = std::shared_ptr<const Macro>;
 using TransformPtr = std::shared_ptr<const Transform>;
 
+struct ArrayValue;
+struct FileHandle;
+struct SplineValue;
+struct FunctionValue;
+using ArrayPtr = std::shared_ptr<ArrayValue>;
+using FilePtr = std::shared_ptr<FileHandle>;
+using SplinePtr = std::shared_ptr<const SplineValue>;
+using FunctionPtr = std::shared_ptr<const FunctionValue>;
+
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
-                           FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr>;
+                           FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
+                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr>;
+
+// Arrays of up to five dimensions. Elements start unset (monostate); once
+// one is set, every other must have the same kind (seed: "all other
+// elements can only be defined as that type").
+struct ArrayValue {
+    std::vector<int> dims;
+    std::vector<Value> elements;  // row-major
+};
 
 // "float", "vector", "object"... for messages.
 const char* valueKindName(const Value& v);

@@ -1,0 +1,95 @@
+// Arrays of up to five dimensions: declaration with optional initializer,
+// indexing, element assignment and the seed's typing rules.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+// Refused before allocating: a scene asking for more is almost surely a
+// mistake, and povray itself hangs on such declarations.
+constexpr size_t kMaxArrayElements = size_t(1) << 26;
+}  // namespace
+
+Value Interpreter::parseArrayDeclaration() {
+    const Token at = next();  // array
+    auto array = std::make_shared<ArrayValue>();
+    size_t total = 1;
+    while (peek().is(Sym::LBracket)) {
+        const Token open = next();
+        const double size = parseFloat();
+        expect(Sym::RBracket, "']'");
+        const int n = static_cast<int>(size);
+        if (n < 1) fail(open, fmt::format("array size {} must be at least 1", size));
+        if (array->dims.size() == 5) fail(open, "arrays have at most 5 dimensions");
+        total *= static_cast<size_t>(n);
+        if (total > kMaxArrayElements)
+            fail(open, fmt::format("array of more than {} elements", kMaxArrayElements));
+        array->dims.push_back(n);
+    }
+    if (array->dims.empty()) fail(at, "expected '[' with the array size after 'array'");
+    array->elements.assign(total, Value{});
+    if (peek().is(Sym::LBrace)) {
+        size_t next = 0;
+        parseArrayInitializer(*array, 0, next);
+    }
+    return array;
+}
+
+void Interpreter::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& nextIndex) {
+    const Token open = peek();
+    expect(Sym::LBrace, "'{' starting an array initializer");
+    const int size = array.dims[dim];
+    int count = 0;
+    // POV-Ray allows a trailing comma before '}'.
+    while (!peek().is(Sym::RBrace)) {
+        if (count == size)
+            fail(peek(), fmt::format("too many elements in the array initializer (dimension {} has {})", dim + 1, size));
+        if (dim + 1 < array.dims.size()) {
+            parseArrayInitializer(array, dim + 1, nextIndex);
+        } else {
+            const Token at = peek();
+            Value v = parseRValue();
+            setArrayElement(array, nextIndex++, std::move(v), at);
+        }
+        ++count;
+        if (!accept(Sym::Comma)) break;
+    }
+    if (count < size)
+        fail(open, fmt::format("too few elements in the array initializer: {} of {}", count, size));
+    expect(Sym::RBrace, "'}' closing the array initializer");
+}
+
+size_t Interpreter::parseArrayIndex(const ArrayValue& array, const Token& at) {
+    size_t index = 0;
+    for (size_t d = 0; d < array.dims.size(); ++d) {
+        if (!peek().is(Sym::LBracket))
+            fail(at, fmt::format("this array has {} dimensions; {} index{} given", array.dims.size(), d,
+                                 d == 1 ? "" : "es"));
+        const Token open = next();
+        const double i = parseFloat();
+        expect(Sym::RBracket, "']'");
+        const long n = static_cast<long>(i);
+        if (n < 0 || n >= array.dims[d])
+            fail(open, fmt::format("array index {} out of range 0..{}", n, array.dims[d] - 1));
+        index = index * static_cast<size_t>(array.dims[d]) + static_cast<size_t>(n);
+    }
+    return index;
+}
+
+void Interpreter::setArrayElement(ArrayValue& array, size_t index, Value value, const Token& at) {
+    for (const Value& e : array.elements) {
+        if (std::holds_alternative<std::monostate>(e)) continue;
+        if (std::string_view(valueKindName(e)) != valueKindName(value))
+            fail(at, fmt::format("array elements are {}s; cannot store a {}", valueKindName(e),
+                                 valueKindName(value)));
+        break;
+    }
+    if (auto* nested = std::get_if<ArrayPtr>(&value)) value = std::make_shared<ArrayValue>(**nested);
+    array.elements[index] = std::move(value);
+}
+
+}  // namespace frameray::sdl

@@ -1,0 +1,252 @@
+// Text and binary file directives: #fopen, #read, #write, #fclose. Files
+// are how frames pass state to each other, so they are closed (flushed) at
+// the end of every parse.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace fs = std::filesystem;
+
+struct FileHandle {
+    std::string name;
+    bool writing = false;
+    std::ofstream out;
+    std::string content;  // a read file, whole
+    size_t pos = 0;
+};
+
+namespace {
+
+void skipSeparators(const FileHandle& f, size_t& pos) {
+    while (pos < f.content.size() &&
+           (std::isspace(static_cast<unsigned char>(f.content[pos])) || f.content[pos] == ','))
+        ++pos;
+}
+
+// One item of a data file: a number, a <vector> or a "string". Returns
+// false with a reason when the text there is none of them.
+bool readItem(FileHandle& f, Value& out, std::string& error) {
+    size_t& p = f.pos;
+    const std::string& s = f.content;
+    auto readNumber = [&](double& v) {
+        while (p < s.size() && std::isspace(static_cast<unsigned char>(s[p]))) ++p;
+        const char* begin = s.c_str() + p;
+        char* end = nullptr;
+        v = std::strtod(begin, &end);
+        if (end == begin) return false;
+        p += static_cast<size_t>(end - begin);
+        return true;
+    };
+    if (s[p] == '"') {
+        const size_t close = s.find('"', p + 1);
+        if (close == std::string::npos) {
+            error = "unterminated string";
+            return false;
+        }
+        out = s.substr(p + 1, close - p - 1);
+        p = close + 1;
+        return true;
+    }
+    if (s[p] == '<') {
+        ++p;
+        VectorValue v;
+        int n = 0;
+        for (;;) {
+            double c;
+            if (n == 5 || !readNumber(c)) {
+                error = "malformed vector";
+                return false;
+            }
+            v.v[n++] = c;
+            while (p < s.size() && std::isspace(static_cast<unsigned char>(s[p]))) ++p;
+            if (p < s.size() && s[p] == ',') {
+                ++p;
+                continue;
+            }
+            if (p < s.size() && s[p] == '>') {
+                ++p;
+                break;
+            }
+            error = "malformed vector";
+            return false;
+        }
+        v.size = static_cast<uint8_t>(n);
+        out = v;
+        return true;
+    }
+    double v;
+    if (!readNumber(v)) {
+        error = fmt::format("unexpected '{}'", s[p]);
+        return false;
+    }
+    out = v;
+    return true;
+}
+
+// Binary word formats of #write, as data.
+struct BinaryFormat {
+    Keyword kw;
+    int bytes;
+    bool isSigned;
+    bool bigEndian;
+};
+constexpr BinaryFormat kBinaryFormats[] = {
+    {Keyword::kw_uint8, 1, false, false},    {Keyword::kw_sint8, 1, true, false},
+    {Keyword::kw_uint16be, 2, false, true},  {Keyword::kw_uint16le, 2, false, false},
+    {Keyword::kw_sint16be, 2, true, true},   {Keyword::kw_sint16le, 2, true, false},
+    {Keyword::kw_sint32be, 4, true, true},   {Keyword::kw_sint32le, 4, true, false},
+};
+
+void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
+    const double lo = f.isSigned ? -std::ldexp(1.0, f.bytes * 8 - 1) : 0.0;
+    const double hi = f.isSigned ? std::ldexp(1.0, f.bytes * 8 - 1) - 1 : std::ldexp(1.0, f.bytes * 8) - 1;
+    const auto word = static_cast<uint32_t>(static_cast<int64_t>(std::clamp(std::round(value), lo, hi)));
+    for (int i = 0; i < f.bytes; ++i) {
+        const int shift = 8 * (f.bigEndian ? f.bytes - 1 - i : i);
+        out.put(static_cast<char>((word >> shift) & 0xFF));
+    }
+}
+
+}  // namespace
+
+void Interpreter::directiveFopen(const Token& at) {
+    const std::string id = expectIdentifier();
+    const std::string name = parseString();
+    const Token mode = next();
+    auto handle = std::make_shared<FileHandle>();
+    handle->name = name;
+    switch (mode.kw) {
+        case Keyword::kw_read: {
+            const fs::path path = findIncludeFile(name);
+            std::ifstream in(path.empty() ? fs::path(name) : path, std::ios::binary);
+            if (!in) fail(at, fmt::format("cannot open '{}' for reading", name));
+            std::ostringstream text;
+            text << in.rdbuf();
+            handle->content = text.str();
+            break;
+        }
+        case Keyword::kw_write:
+        case Keyword::kw_append:
+            handle->writing = true;
+            handle->out.open(name, std::ios::binary | (mode.kw == Keyword::kw_append ? std::ios::app : std::ios::trunc));
+            if (!handle->out) fail(at, fmt::format("cannot open '{}' for writing", name));
+            break;
+        default: fail(mode, fmt::format("expected read, write or append after the file name, found {}", describeToken(mode)));
+    }
+    openFiles_.push_back(handle);
+    declare(id, FilePtr(handle), false);
+}
+
+void Interpreter::directiveFclose(const Token& at) {
+    (void)at;
+    const Token idToken = rawPeek();
+    const std::string id = expectIdentifier();
+    Value* v = find(id);
+    // Closing a file that reached its end (and so was undefined) is fine.
+    if (!v) return;
+    if (!std::holds_alternative<FilePtr>(*v))
+        fail(idToken, fmt::format("'{}' is a {}, not a file identifier", id, valueKindName(*v)));
+    std::get<FilePtr>(*v)->out.close();
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+        if (it->erase(id)) break;
+}
+
+void Interpreter::directiveRead(const Token& at) {
+    expect(Sym::LParen, "'('");
+    const Token idToken = rawPeek();
+    const std::string id = expectIdentifier();
+    Value* v = find(id);
+    if (!v || !std::holds_alternative<FilePtr>(*v))
+        fail(idToken, fmt::format("expected a file identifier opened for reading, found '{}'", id));
+    const FilePtr file = std::get<FilePtr>(*v);
+    if (file->writing) fail(idToken, fmt::format("file '{}' was opened for writing, not reading", file->name));
+    while (accept(Sym::Comma)) {
+        const Token target = rawPeek();
+        const std::string name = expectIdentifier();
+        ArrayPtr array;
+        size_t index = 0;
+        if (peek().is(Sym::LBracket)) {
+            Value* a = find(name);
+            if (!a || !std::holds_alternative<ArrayPtr>(*a)) fail(target, fmt::format("'{}' is not an array", name));
+            array = std::get<ArrayPtr>(*a);
+            index = parseArrayIndex(*array, target);
+        }
+        skipSeparators(*file, file->pos);
+        if (file->pos >= file->content.size()) break;  // end of file: leave the rest unset
+        Value item;
+        std::string error;
+        if (!readItem(*file, item, error))
+            fail(at, fmt::format("cannot read from '{}': {}", file->name, error));
+        if (array)
+            setArrayElement(*array, index, std::move(item), target);
+        else
+            declare(name, std::move(item), false);
+    }
+    expect(Sym::RParen, "')'");
+    // At the end of the data the file identifier becomes undefined, which
+    // is how scenes loop: #while (defined(F)) #read (F, X) ... #end
+    skipSeparators(*file, file->pos);
+    if (file->pos >= file->content.size())
+        for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+            if (it->erase(id)) break;
+}
+
+void Interpreter::directiveWrite(const Token& at) {
+    (void)at;
+    expect(Sym::LParen, "'('");
+    const Token idToken = rawPeek();
+    const std::string id = expectIdentifier();
+    Value* v = find(id);
+    if (!v || !std::holds_alternative<FilePtr>(*v))
+        fail(idToken, fmt::format("expected a file identifier opened for writing, found '{}'", id));
+    const FilePtr file = std::get<FilePtr>(*v);
+    if (!file->writing) fail(idToken, fmt::format("file '{}' was opened for reading, not writing", file->name));
+    while (accept(Sym::Comma)) {
+        const BinaryFormat* binary = nullptr;
+        for (const auto& f : kBinaryFormats)
+            if (peek().is(f.kw)) binary = &f;
+        if (binary) next();
+        const Token itemToken = peek();
+        const Value item = parseExpression();
+        if (binary) {
+            if (const double* f = std::get_if<double>(&item)) {
+                writeBinary(file->out, *binary, *f);
+            } else if (const auto* vec = std::get_if<VectorValue>(&item)) {
+                for (int i = 0; i < vec->size; ++i) writeBinary(file->out, *binary, vec->v[i]);
+            } else {
+                fail(itemToken, "binary #write needs floats or vectors");
+            }
+            continue;
+        }
+        if (const auto* s = std::get_if<std::string>(&item)) {
+            file->out << *s;
+        } else if (const double* f = std::get_if<double>(&item)) {
+            file->out << fmt::format("{:g}", *f);
+        } else if (const auto* vec = std::get_if<VectorValue>(&item); vec && !vec->isColor) {
+            // povray writes "<1,2,3> " - the trailing space is its format.
+            std::string text = "<";
+            for (int i = 0; i < vec->size; ++i) {
+                if (i) text += ',';
+                text += fmt::format("{:g}", vec->v[i]);
+            }
+            file->out << text << "> ";
+        } else {
+            fail(itemToken, fmt::format("#write cannot write a {}", valueKindName(item)));
+        }
+    }
+    expect(Sym::RParen, "')'");
+}
+
+void Interpreter::closeAllFiles() {
+    for (const FilePtr& f : openFiles_)
+        if (f->out.is_open()) f->out.close();
+    openFiles_.clear();
+}
+
+}  // namespace frameray::sdl
