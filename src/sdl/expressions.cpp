@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "sdl/float_functions.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
@@ -451,40 +452,13 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         if (const auto* s = std::get_if<std::string>(&v)) return *s;
         fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
     };
-    // One-argument float functions, as data.
-    using Unary = double (*)(double);
-    static constexpr std::pair<Keyword, Unary> kUnary[] = {
-        {Keyword::kw_abs, [](double a) { return std::fabs(a); }},
-        {Keyword::kw_acos, [](double a) { return std::acos(a); }},
-        {Keyword::kw_acosh, [](double a) { return std::acosh(a); }},
-        {Keyword::kw_asin, [](double a) { return std::asin(a); }},
-        {Keyword::kw_asinh, [](double a) { return std::asinh(a); }},
-        {Keyword::kw_atan, [](double a) { return std::atan(a); }},
-        {Keyword::kw_atanh, [](double a) { return std::atanh(a); }},
-        {Keyword::kw_ceil, [](double a) { return std::ceil(a); }},
-        {Keyword::kw_cos, [](double a) { return std::cos(a); }},
-        {Keyword::kw_cosh, [](double a) { return std::cosh(a); }},
-        {Keyword::kw_degrees, [](double a) { return a * 180.0 / std::numbers::pi; }},
-        {Keyword::kw_exp, [](double a) { return std::exp(a); }},
-        {Keyword::kw_floor, [](double a) { return std::floor(a); }},
-        {Keyword::kw_int, [](double a) { return std::trunc(a); }},
-        {Keyword::kw_ln, [](double a) { return std::log(a); }},
-        {Keyword::kw_log, [](double a) { return std::log10(a); }},
-        {Keyword::kw_radians, [](double a) { return a * std::numbers::pi / 180.0; }},
-        {Keyword::kw_sin, [](double a) { return std::sin(a); }},
-        {Keyword::kw_sinh, [](double a) { return std::sinh(a); }},
-        {Keyword::kw_sqrt, [](double a) { return std::sqrt(a); }},
-        {Keyword::kw_tan, [](double a) { return std::tan(a); }},
-        {Keyword::kw_tanh, [](double a) { return std::tanh(a); }},
-    };
-    for (const auto& [kw, op] : kUnary)
-        if (fn.kw == kw) return op(f(parseArguments(1, 1, fn)[0]));
+    if (const UnaryFloatFunction op = unaryFloatFunction(fn.kw)) return op(f(parseArguments(1, 1, fn)[0]));
+    if (const BinaryFloatFunction op = binaryFloatFunction(fn.kw)) {
+        auto a = parseArguments(2, 2, fn);
+        return op(f(a[0]), f(a[1]));
+    }
 
     switch (fn.kw) {
-        case Keyword::kw_atan2: { auto a = parseArguments(2, 2, fn); return std::atan2(f(a[0]), f(a[1])); }
-        case Keyword::kw_pow: { auto a = parseArguments(2, 2, fn); return std::pow(f(a[0]), f(a[1])); }
-        case Keyword::kw_mod: { auto a = parseArguments(2, 2, fn); return std::fmod(f(a[0]), f(a[1])); }
-        case Keyword::kw_div: { auto a = parseArguments(2, 2, fn); return std::trunc(f(a[0]) / f(a[1])); }
         case Keyword::kw_min: case Keyword::kw_max: {
             auto a = parseArguments(1, 256, fn);
             double r = f(a[0]);

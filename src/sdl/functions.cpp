@@ -1,13 +1,347 @@
-// User-defined functions.
+// User-defined functions: `function [(params)] { float expression }`
+// compiled into util/function_vm's stack machine, and calls to them.
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "sdl/float_functions.h"
+#include "sdl/function_value.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
 
-struct FunctionValue {};
+// Recursive-descent compiler over the interpreter's token stream, with the
+// same precedence as parse-time expressions.
+class FunctionCompiler {
+public:
+    FunctionCompiler(Interpreter& in, std::vector<std::string> params) : in_(in), params_(std::move(params)) {
+        fn_->paramCount = static_cast<int>(params_.size());
+    }
 
-Value Interpreter::parseFunctionDeclaration() { unsupported(peek(), "function"); }
-Value Interpreter::callFunction(const FunctionValue&, const Token& at) { unsupported(at, "function"); }
+    std::shared_ptr<CompiledFunction> compileBody() {
+        ternary();
+        fn_->slotCount = maxSlots_;
+        return fn_;
+    }
+
+private:
+    size_t emit(FnInstr i, int stackEffect) {
+        depth_ += stackEffect;
+        maxDepth_ = std::max(maxDepth_, depth_);
+        if (maxDepth_ > CompiledFunction::kMaxStack) in_.failHere("function expression is too deeply nested");
+        fn_->code.push_back(i);
+        return fn_->code.size() - 1;
+    }
+    size_t here() const { return fn_->code.size(); }
+
+    void ternary() {
+        logical();
+        if (!in_.accept(Sym::Question)) return;
+        const size_t jumpFalse = emit({FnOp::JumpIfFalse}, -1);
+        ternary();
+        const size_t jumpEnd = emit({FnOp::Jump}, 0);
+        in_.expect(Sym::Colon, "':' of the conditional expression");
+        fn_->code[jumpFalse].a = static_cast<int32_t>(here());
+        depth_ -= 1;  // only one branch's value is on the stack at run time
+        ternary();
+        fn_->code[jumpEnd].a = static_cast<int32_t>(here());
+    }
+
+    void logical() {
+        relational();
+        for (;;) {
+            const Token op = in_.peek();
+            if (!op.is(Sym::Amp) && !op.is(Sym::Bar)) return;
+            in_.next();
+            relational();
+            emit({op.is(Sym::Amp) ? FnOp::And : FnOp::Or}, -1);
+        }
+    }
+
+    void relational() {
+        additive();
+        for (;;) {
+            const Token op = in_.peek();
+            FnOp code;
+            switch (op.sym) {
+                case Sym::Less: code = FnOp::Lt; break;
+                case Sym::LessEq: code = FnOp::Le; break;
+                case Sym::Equal: code = FnOp::Eq; break;
+                case Sym::NotEq: code = FnOp::Ne; break;
+                case Sym::GreaterEq: code = FnOp::Ge; break;
+                case Sym::Greater: code = FnOp::Gt; break;
+                default: return;
+            }
+            if (op.kind != TokenKind::Symbol) return;
+            in_.next();
+            additive();
+            emit({code}, -1);
+        }
+    }
+
+    void additive() {
+        multiplicative();
+        for (;;) {
+            const Token op = in_.peek();
+            if (!op.is(Sym::Plus) && !op.is(Sym::Minus)) return;
+            in_.next();
+            multiplicative();
+            emit({op.is(Sym::Plus) ? FnOp::Add : FnOp::Sub}, -1);
+        }
+    }
+
+    void multiplicative() {
+        unary();
+        for (;;) {
+            const Token op = in_.peek();
+            if (!op.is(Sym::Star) && !op.is(Sym::Slash)) return;
+            in_.next();
+            unary();
+            emit({op.is(Sym::Star) ? FnOp::Mul : FnOp::Div}, -1);
+        }
+    }
+
+    void unary() {
+        const Token op = in_.peek();
+        if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
+            in_.next();
+            unary();
+            if (op.is(Sym::Minus)) emit({FnOp::Neg}, 0);
+            if (op.is(Sym::Bang)) emit({FnOp::Not}, 0);
+            return;
+        }
+        primary();
+    }
+
+    void constant(double v) { emit({FnOp::Const, 0, 0, v}, +1); }
+
+    // Arguments in parentheses, each compiled onto the stack.
+    int arguments(const Token& fn) {
+        in_.expect(Sym::LParen, fmt::format("'(' after '{}'", fn.text).c_str());
+        int n = 0;
+        if (!in_.peek().is(Sym::RParen)) {
+            do {
+                ternary();
+                ++n;
+            } while (in_.accept(Sym::Comma));
+        }
+        in_.expect(Sym::RParen, "')'");
+        return n;
+    }
+
+    void requireArgs(const Token& fn, int n, int min, int max) {
+        if (n < min || n > max)
+            in_.fail(fn, min == max ? fmt::format("'{}' takes {} argument{}, {} given", fn.text, min, min == 1 ? "" : "s", n)
+                                    : fmt::format("'{}' takes {} to {} arguments, {} given", fn.text, min, max, n));
+    }
+
+    int paramIndex(std::string_view name) const {
+        for (size_t i = 0; i < params_.size(); ++i)
+            if (params_[i] == name) return static_cast<int>(i);
+        return -1;
+    }
+
+    void primary() {
+        const Token t = in_.peek();
+        if (t.kind == TokenKind::Number) {
+            in_.next();
+            constant(t.number);
+            return;
+        }
+        if (t.is(Sym::LParen)) {
+            in_.next();
+            ternary();
+            in_.expect(Sym::RParen, "')'");
+            return;
+        }
+        if (t.kind != TokenKind::Word) in_.fail(t, fmt::format("expected a function expression, found {}", describeToken(t)));
+        if (const int p = paramIndex(t.text); p >= 0) {
+            in_.next();
+            emit({FnOp::Param, p}, +1);
+            return;
+        }
+        if (t.kw == Keyword::None) {
+            identifier(t);
+            return;
+        }
+        keyword(t);
+    }
+
+    void identifier(const Token& t) {
+        for (auto it = loopVars_.rbegin(); it != loopVars_.rend(); ++it)
+            if (it->first == t.text) {
+                in_.next();
+                emit({FnOp::Slot, it->second}, +1);
+                return;
+            }
+        const Value* v = in_.lookup(std::string(t.text));
+        if (v && std::holds_alternative<FunctionPtr>(*v)) {
+            const FunctionPtr callee = std::get<FunctionPtr>(*v);
+            in_.next();
+            const int n = arguments(t);
+            if (!callee->unsupported.empty()) {
+                // Calling it compiles an instruction that fails when run.
+                emit({FnOp::Internal, -1, n}, 1 - n);
+                return;
+            }
+            if (!callee->variadic) requireArgs(t, n, callee->compiled->paramCount, callee->compiled->paramCount);
+            fn_->callees.push_back(callee->compiled);
+            emit({FnOp::Call, static_cast<int32_t>(fn_->callees.size() - 1), n}, 1 - n);
+            return;
+        }
+        // Any other identifier is a constant taken at declaration time.
+        const Token at = in_.peek();
+        const Value value = in_.parsePostfix(false);
+        const double* f = std::get_if<double>(&value);
+        if (!f) in_.fail(at, fmt::format("'{}' is a {}; a function body needs floats", at.text, valueKindName(value)));
+        constant(*f);
+    }
+
+    void keyword(const Token& t) {
+        if (const UnaryFloatFunction op = unaryFloatFunction(t.kw)) {
+            in_.next();
+            requireArgs(t, arguments(t), 1, 1);
+            emit({FnOp::Unary, 0, 0, 0, op}, 0);
+            return;
+        }
+        if (const BinaryFloatFunction op = binaryFloatFunction(t.kw)) {
+            in_.next();
+            requireArgs(t, arguments(t), 2, 2);
+            FnInstr i{FnOp::Binary};
+            i.binary = op;
+            emit(i, -1);
+            return;
+        }
+        switch (t.kw) {
+            case Keyword::kw_x: case Keyword::kw_u: case Keyword::kw_y: case Keyword::kw_v: case Keyword::kw_z: {
+                // Default parameters: x y z, with u v aliases of x y.
+                const int p = t.kw == Keyword::kw_u ? paramIndex("x") : t.kw == Keyword::kw_v ? paramIndex("y") : -1;
+                if (p < 0) in_.fail(t, fmt::format("'{}' is not a parameter of this function", t.text));
+                in_.next();
+                emit({FnOp::Param, p}, +1);
+                return;
+            }
+            case Keyword::kw_min: case Keyword::kw_max: {
+                in_.next();
+                const int n = arguments(t);
+                requireArgs(t, n, 1, 64);
+                emit({t.kw == Keyword::kw_min ? FnOp::MinN : FnOp::MaxN, n}, 1 - n);
+                return;
+            }
+            case Keyword::kw_select: {
+                in_.next();
+                const int n = arguments(t);
+                requireArgs(t, n, 3, 4);
+                emit({n == 3 ? FnOp::Select3 : FnOp::Select4}, 1 - n);
+                return;
+            }
+            case Keyword::kw_sum: case Keyword::kw_prod: loop(t); return;
+            case Keyword::kw_internal: {
+                in_.next();
+                in_.expect(Sym::LParen, "'(' after 'internal'");
+                const double n = in_.parseFloat();
+                in_.expect(Sym::RParen, "')'");
+                emit({FnOp::Internal, static_cast<int32_t>(n)}, +1);
+                return;
+            }
+            default: break;
+        }
+        // Constant keywords (pi, clock, image_width, true...) evaluate now.
+        const Value value = in_.parsePostfix(false);
+        const double* f = std::get_if<double>(&value);
+        if (!f) in_.unsupported(t, fmt::format("'{}' in a function", t.text));
+        constant(*f);
+    }
+
+    // sum(I, Start, End, Expr) and prod(...): I runs from Start to End by 1.
+    void loop(const Token& t) {
+        in_.next();
+        in_.expect(Sym::LParen, "'('");
+        const Token var = in_.next();
+        if (var.kind != TokenKind::Word) in_.fail(var, "expected the loop variable's name");
+        in_.expect(Sym::Comma, "','");
+        ternary();
+        in_.expect(Sym::Comma, "','");
+        ternary();
+        in_.expect(Sym::Comma, "','");
+        const int slot = slots_;
+        slots_ += 2;
+        maxSlots_ = std::max(maxSlots_, slots_);
+        if (maxSlots_ > CompiledFunction::kMaxSlots) in_.fail(t, "too many nested sum/prod loops");
+        emit({FnOp::LoopInit, slot, t.kw == Keyword::kw_sum ? 0 : 1}, -1);
+        const size_t test = emit({FnOp::LoopTest, slot}, 0);
+        loopVars_.emplace_back(std::string(var.text), slot);
+        ternary();
+        loopVars_.pop_back();
+        emit({t.kw == Keyword::kw_sum ? FnOp::LoopSum : FnOp::LoopProd}, -1);
+        emit({FnOp::LoopNext, slot, static_cast<int32_t>(test)}, 0);
+        fn_->code[test].b = static_cast<int32_t>(here());
+        slots_ -= 2;
+        in_.expect(Sym::RParen, "')'");
+    }
+
+    Interpreter& in_;
+    std::vector<std::string> params_;
+    std::shared_ptr<CompiledFunction> fn_ = std::make_shared<CompiledFunction>();
+    int depth_ = 0, maxDepth_ = 0;
+    int slots_ = 0, maxSlots_ = 0;
+    std::vector<std::pair<std::string, int>> loopVars_;
+};
+
+Value Interpreter::parseFunctionDeclaration() {
+    next();  // function
+    std::vector<std::string> params;
+    if (accept(Sym::LParen)) {
+        do {
+            const Token p = next();
+            if (p.kind != TokenKind::Word) fail(p, fmt::format("expected a parameter name, found {}", describeToken(p)));
+            params.emplace_back(p.text);
+        } while (accept(Sym::Comma));
+        expect(Sym::RParen, "')'");
+    } else {
+        params = {"x", "y", "z"};
+    }
+    expect(Sym::LBrace, "'{' starting the function body");
+    auto value = std::make_shared<FunctionValue>();
+    const Token first = peek();
+    static constexpr Keyword kOtherBodies[] = {Keyword::kw_pattern, Keyword::kw_pigment, Keyword::kw_transform,
+                                               Keyword::kw_spline};
+    if (std::find(std::begin(kOtherBodies), std::end(kOtherBodies), first.kw) != std::end(kOtherBodies) &&
+        first.kind == TokenKind::Word) {
+        // Not built yet: keep the declaration, fail on use.
+        value->unsupported = fmt::format("function {{ {} }}", first.text);
+        for (int depth = 1; depth > 0;) {
+            const Token t = next();
+            if (t.kind == TokenKind::End) fail(first, "function body is never closed");
+            if (t.is(Sym::LBrace)) ++depth;
+            if (t.is(Sym::RBrace)) --depth;
+        }
+        return FunctionPtr(value);
+    }
+    value->variadic = first.is(Keyword::kw_internal);
+    FunctionCompiler compiler(*this, std::move(params));
+    auto compiled = compiler.compileBody();
+    compiled->name = "function";
+    value->compiled = std::move(compiled);
+    expect(Sym::RBrace, "'}' closing the function body");
+    return FunctionPtr(value);
+}
+
+Value Interpreter::callFunction(const FunctionValue& function, const Token& at) {
+    if (!function.unsupported.empty()) unsupported(at, function.unsupported);
+    const std::vector<Value> args = parseArguments(0, 64, at);
+    const int expected = function.compiled->paramCount;
+    if (!function.variadic && static_cast<int>(args.size()) != expected)
+        fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, expected, expected == 1 ? "" : "s",
+                             args.size()));
+    std::vector<double> values;
+    for (const Value& v : args) values.push_back(toFloat(v, at));
+    values.resize(std::max<size_t>(values.size(), static_cast<size_t>(expected)), 0.0);
+    try {
+        return function.compiled->eval(values.data());
+    } catch (const std::runtime_error& e) {
+        fail(at, e.what());
+    }
+}
 
 }  // namespace frameray::sdl

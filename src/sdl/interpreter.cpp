@@ -315,8 +315,8 @@ void Interpreter::directiveDeclare(bool local) {
         cursors_.back().inDirective = false;
         const Token valueStart = peek();
         Value value = parseRValue();
-        accept(Sym::Semicolon);
         setArrayElement(*array, index, std::move(value), valueStart);
+        accept(Sym::Semicolon);
         return;
     }
     expect(Sym::Equal, "'='");
@@ -328,15 +328,17 @@ void Interpreter::directiveDeclare(bool local) {
     const bool needsSemicolon = std::holds_alternative<double>(value) ||
                                 std::holds_alternative<VectorValue>(value) ||
                                 std::holds_alternative<std::string>(value);
-    if (needsSemicolon && !peek().is(Sym::Semicolon))
-        warn(nameToken, fmt::format("missing ';' after the declaration of '{}'", name));
-    accept(Sym::Semicolon);
     if (deprecated)
         deprecated_[name] = {deprecatedMessage.empty()
                                  ? fmt::format("Identifier '{}' was declared deprecated.", name)
                                  : deprecatedMessage,
                              deprecatedOnce, false};
+    // Bind before looking for the optional ';': that look-ahead may run the
+    // next line's directive, which may use this identifier.
     declare(name, std::move(value), local);
+    if (needsSemicolon && !peek().is(Sym::Semicolon))
+        warn(nameToken, fmt::format("missing ';' after the declaration of '{}'", name));
+    accept(Sym::Semicolon);
 }
 
 Value Interpreter::parseRValue() {

@@ -37,6 +37,8 @@ public:
     const Value* lookup(const std::string& name) const;
 
 private:
+    friend class FunctionCompiler;  // compiles function bodies from this token stream
+
     // --- token stream (interpreter.cpp) ---
     enum class CursorKind { File, Macro };
     struct Cursor {

@@ -1,0 +1,62 @@
+// Compiled user functions: a small stack machine. The scene language's
+// `function { ... }` bodies are compiled once (sdl/functions.cpp) into this
+// form, which is cheap to evaluate millions of times (isosurfaces, function
+// patterns) and has no knowledge of the language.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace frameray {
+
+enum class FnOp : uint8_t {
+    Const,        // push value
+    Param,        // push parameter a
+    Slot,         // push loop variable in slot a
+    Add, Sub, Mul, Div, Neg, Not,
+    Lt, Le, Eq, Ne, Ge, Gt, And, Or,
+    Unary,        // replace top by unary(top)
+    Binary,       // pop b, a; push binary(a, b)
+    Call,         // pop b arguments; push callees[a](args)
+    Select3,      // pop c, b, a: a < 0 ? b : c
+    Select4,      // pop d, c, b, a: a < 0 ? b : (a == 0 ? c : d)
+    MinN, MaxN,   // pop a values, push their min/max
+    JumpIfFalse,  // pop; jump to a when zero
+    Jump,         // jump to a
+    LoopInit,     // pop end, start into slots a (variable) and a+1 (end); push b (0 sum / 1 product)
+    LoopTest,     // jump to b when slot a > slot a+1
+    LoopSum,      // pop v; top += v
+    LoopProd,     // pop v; top *= v
+    LoopNext,     // slot a += 1; jump to b
+    Internal,     // a built-in function of functions.inc, number a, with b arguments
+};
+
+struct FnInstr {
+    FnOp op;
+    int32_t a = 0;
+    int32_t b = 0;
+    double value = 0;
+    double (*unary)(double) = nullptr;
+    double (*binary)(double, double) = nullptr;
+};
+
+class CompiledFunction {
+public:
+    static constexpr int kMaxStack = 256;
+    static constexpr int kMaxSlots = 64;
+
+    std::string name;
+    int paramCount = 0;
+    int slotCount = 0;
+    std::vector<FnInstr> code;
+    std::vector<std::shared_ptr<const CompiledFunction>> callees;
+
+    // Evaluates with `paramCount` arguments. Throws std::runtime_error for
+    // an internal function that is not available.
+    double eval(const double* args) const;
+};
+
+}  // namespace frameray
