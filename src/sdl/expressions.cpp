@@ -299,7 +299,18 @@ Value Interpreter::parseColorKeywords(const Token& first) {
             const Token at = peek();
             const Value v = parseAdditive(false);
             const VectorValue vec = toVector(v, at, size);
-            for (int i = 0; i < 3; ++i) c.v[i] = srgb ? srgbToLinear(vec.v[i]) : vec.v[i];
+            // sRGB values convert to the working gamma, which must be known
+            // by then (povray 3.7 stops the parse otherwise).
+            if (srgb && !scene_.globals.assumedGammaSet)
+                fail(first, "cannot use sRGB colors before assumed_gamma has been set in global_settings");
+            const double gamma = scene_.globals.assumedGamma;
+            for (int i = 0; i < 3; ++i) {
+                c.v[i] = vec.v[i];
+                if (srgb) {
+                    c.v[i] = srgbToLinear(vec.v[i]);
+                    if (gamma != 1.0) c.v[i] = std::pow(c.v[i], 1.0 / gamma);
+                }
+            }
             if (suffix == "f") c.v[3] = vec.v[3];
             if (suffix == "t") c.v[4] = vec.v[3];
             if (suffix == "ft") { c.v[3] = vec.v[3]; c.v[4] = vec.v[4]; }

@@ -32,6 +32,7 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const FilePtr&) const { return "file identifier"; }
         const char* operator()(const SplinePtr&) const { return "spline"; }
         const char* operator()(const FunctionPtr&) const { return "function"; }
+        const char* operator()(const IdentifierAlias&) const { return "identifier"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -89,7 +90,13 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
 const Value* Interpreter::lookup(const std::string& name) const {
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
         auto found = it->find(name);
-        if (found != it->end()) return &found->second;
+        if (found == it->end()) continue;
+        if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
+            const Scope& target = scopes_[alias->scope];
+            auto t = target.find(alias->name);
+            return t == target.end() ? nullptr : &t->second;
+        }
+        return &found->second;
     }
     return nullptr;
 }
@@ -103,9 +110,17 @@ void Interpreter::declare(const std::string& name, Value value, bool local) {
         scopes_.back()[name] = std::move(value);
         return;
     }
-    // #declare assigns the most local existing version, or creates a global.
-    if (Value* existing = find(name)) {
-        *existing = std::move(value);
+    // #declare assigns the most local existing version, or creates a global;
+    // through a by-reference macro parameter it assigns the caller's.
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+        auto found = it->find(name);
+        if (found == it->end()) continue;
+        if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
+            const IdentifierAlias target = *alias;
+            scopes_[target.scope][target.name] = std::move(value);
+        } else {
+            found->second = std::move(value);
+        }
         return;
     }
     scopes_.front()[name] = std::move(value);
@@ -325,9 +340,7 @@ void Interpreter::directiveDeclare(bool local) {
     // advice to end declarations with ';').
     cursors_.back().inDirective = false;
     Value value = parseRValue();
-    const bool needsSemicolon = std::holds_alternative<double>(value) ||
-                                std::holds_alternative<VectorValue>(value) ||
-                                std::holds_alternative<std::string>(value);
+    const bool needsSemicolon = std::holds_alternative<double>(value) || std::holds_alternative<VectorValue>(value);
     if (deprecated)
         deprecated_[name] = {deprecatedMessage.empty()
                                  ? fmt::format("Identifier '{}' was declared deprecated.", name)
@@ -336,8 +349,13 @@ void Interpreter::directiveDeclare(bool local) {
     // Bind before looking for the optional ';': that look-ahead may run the
     // next line's directive, which may use this identifier.
     declare(name, std::move(value), local);
-    if (needsSemicolon && !peek().is(Sym::Semicolon))
-        warn(nameToken, fmt::format("missing ';' after the declaration of '{}'", name));
+    // povray 3.7: an error from language version 3.5 on, a warning before.
+    if (needsSemicolon && !peek().is(Sym::Semicolon)) {
+        const std::string message =
+            fmt::format("missing ';' after the declaration of '{}': float, vector and color declarations need one", name);
+        if (version_ >= 3.5 - 1e-9) fail(nameToken, message + " (since #version 3.5)");
+        warn(nameToken, message);
+    }
     accept(Sym::Semicolon);
 }
 
@@ -594,7 +612,8 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     size_t count = 0;
     if (!peek().is(Sym::RParen)) {
         do {
-            Value v = parseRValue();
+            Value v = bareIdentifierArgument();
+            if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
             if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
             ++count;
         } while (accept(Sym::Comma));
@@ -606,6 +625,33 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     cursors_.push_back({macro.file, macro.bodyStart, CursorKind::Macro, scopes_.size(), blocks_.size(), false});
     scopes_.push_back(std::move(args));
     blocks_.push_back({BlockKind::Macro, macro.loc});
+}
+
+Value Interpreter::bareIdentifierArgument() {
+    // A lone identifier (followed by ',' or ')') is passed by reference.
+    const Cursor& c = cursors_.back();
+    const Token& t = rawPeek();
+    if (!t.isIdentifier() || c.pos + 1 >= c.file->tokens.size()) return {};
+    const Token& after = c.file->tokens[c.pos + 1];
+    if (!after.is(Sym::Comma) && !after.is(Sym::RParen)) return {};
+    const std::string name(t.text);
+    // Find the scope holding it (following an alias of an outer macro).
+    IdentifierAlias alias{scopes_.size(), name};
+    for (size_t i = scopes_.size(); i-- > 0;) {
+        auto found = scopes_[i].find(name);
+        if (found == scopes_[i].end()) continue;
+        if (const auto* outer = std::get_if<IdentifierAlias>(&found->second))
+            alias = *outer;
+        else if (std::holds_alternative<MacroPtr>(found->second))
+            return {};  // a macro call, not a reference
+        else
+            alias.scope = i;
+        break;
+    }
+    if (alias.scope == scopes_.size())
+        fail(t, fmt::format("cannot pass the undeclared identifier '{}' to a macro; declare it first", name));
+    ++cursors_.back().pos;
+    return alias;
 }
 
 void Interpreter::directiveMessage(Stream stream) {

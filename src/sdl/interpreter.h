@@ -104,6 +104,7 @@ private:
     // directive keyword found, leaving the cursor after it.
     Keyword skipBranch(bool stopAtElse, bool stopAtCase);
     void invokeMacro(const Token& nameToken, const Macro& macro);
+    Value bareIdentifierArgument();  // monostate when the argument is not one
     std::filesystem::path findIncludeFile(const std::string& name) const;
 
     // --- identifiers ---

@@ -58,9 +58,17 @@ using FilePtr = std::shared_ptr<FileHandle>;
 using SplinePtr = std::shared_ptr<const SplineValue>;
 using FunctionPtr = std::shared_ptr<const FunctionValue>;
 
+// A macro parameter passed as a bare identifier: the parameter names the
+// caller's identifier `name` in symbol table `scope` (by reference), so
+// the macro can read it and assign it, even create it.
+struct IdentifierAlias {
+    size_t scope = 0;
+    std::string name;
+};
+
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
-                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr>;
+                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other
