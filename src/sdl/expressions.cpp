@@ -2,6 +2,7 @@
 // colours and strings, with the seed's precedence and promotion rules.
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <numbers>
 
@@ -365,7 +366,7 @@ Value Interpreter::identifierValue(const Token& name) {
 }
 
 std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Token& fn) {
-    expect(Sym::LParen, fmt::format("'(' after '{}'", fn.text).c_str());
+    expectAfter(Sym::LParen, "'('", fn.text);
     std::vector<Value> args;
     if (!peek().is(Sym::RParen)) {
         do {
@@ -425,6 +426,7 @@ Value Interpreter::parsePrimary(bool inVector) {
         case Keyword::kw_image_width: next(); return double(frame_.imageWidth);
         case Keyword::kw_image_height: next(); return double(frame_.imageHeight);
         case Keyword::kw_version: next(); return version_;
+        case Keyword::kw_input_file_name: next(); return inputFileName_;
         case Keyword::kw_now: {
             // Days since 2000-01-01 00:00 UTC, as povray's `now`.
             next();
@@ -602,6 +604,19 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             if (!obj) fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
             const scene::Object& o = **obj;
             return double(o.shape->inside(o.transform.inversePoint(vec(a[1]))));
+        }
+        case Keyword::kw_datetime: {
+            // Days since 2000-01-01 00:00 UTC, formatted by strftime (default
+            // format as povray's).
+            auto a = parseArguments(1, 2, fn);
+            const double days = f(a[0]);
+            const std::string format = a.size() > 1 ? str(a[1]) : "%Y-%m-%d %H:%M:%SZ";
+            const auto seconds = static_cast<std::time_t>(std::floor((days + 10957.0) * 86400.0 + 0.5));
+            std::tm utc{};
+            gmtime_r(&seconds, &utc);
+            char buffer[512];
+            const size_t n = std::strftime(buffer, sizeof buffer, format.c_str(), &utc);
+            return std::string(buffer, n);
         }
         case Keyword::kw_defined: {
             expect(Sym::LParen, "'('");

@@ -117,7 +117,7 @@ private:
 
     // Arguments in parentheses, each compiled onto the stack.
     int arguments(const Token& fn) {
-        in_.expect(Sym::LParen, fmt::format("'(' after '{}'", fn.text).c_str());
+        in_.expectAfter(Sym::LParen, "'('", fn.text);
         int n = 0;
         if (!in_.peek().is(Sym::RParen)) {
             do {

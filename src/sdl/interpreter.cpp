@@ -44,6 +44,7 @@ Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSi
 }
 
 scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
+    inputFileName_ = sceneFile.string();
     auto file = cache_.get(sceneFile);
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
     return run(std::move(file));
@@ -145,6 +146,11 @@ const Token& Interpreter::rawPeek() {
 }
 
 const Token& Interpreter::peek() {
+    {
+        const Cursor& c = cursors_.back();
+        if (peekCache_.file == c.file.get() && peekCache_.pos == c.pos && peekCache_.depth == cursors_.size())
+            return c.file->tokens[c.pos];
+    }
     for (;;) {
         const Token& t = rawPeek();
         if (t.is(Sym::Hash) && !cursors_.back().inDirective) {
@@ -160,6 +166,12 @@ const Token& Interpreter::peek() {
                 invokeMacro(nameToken, *macro);
                 continue;
             }
+        }
+        // A '#' handed out raw (directive arguments end there) must be
+        // looked at again once the directive is done.
+        if (!t.is(Sym::Hash)) {
+            const Cursor& c = cursors_.back();
+            peekCache_ = {c.file.get(), c.pos, cursors_.size()};
         }
         return t;
     }
@@ -197,8 +209,14 @@ void Interpreter::unsupported(const Token& at, const std::string& feature) {
 }
 
 void Interpreter::expect(Sym s, const char* what) {
-    const Token t = peek();
+    const Token& t = peek();
     if (!t.is(s)) fail(t, fmt::format("expected {}, found {}", what, describeToken(t)));
+    next();
+}
+
+void Interpreter::expectAfter(Sym s, const char* symbol, std::string_view after) {
+    const Token& t = peek();
+    if (!t.is(s)) fail(t, fmt::format("expected {} after '{}', found {}", symbol, after, describeToken(t)));
     next();
 }
 
@@ -385,10 +403,11 @@ fs::path Interpreter::findIncludeFile(const std::string& name) const {
     const fs::path p(name);
     if (p.is_absolute()) return fs::exists(p, ec) ? p : fs::path();
     std::vector<fs::path> dirs;
-    // The including file's folder, the working folder, then the library path.
-    dirs.push_back(fs::path(cursors_.back().file->source->path()).parent_path());
+    // povray 3.7's order: the working folder, then the library path. The
+    // including file's own folder comes last, where povray would fail.
     dirs.push_back(fs::current_path(ec));
     for (const auto& lib : frame_.libraryPaths) dirs.push_back(lib);
+    dirs.push_back(fs::path(cursors_.back().file->source->path()).parent_path());
     for (const auto& dir : dirs) {
         const fs::path candidate = dir / p;
         if (fs::is_regular_file(candidate, ec)) return candidate;
@@ -608,7 +627,7 @@ void Interpreter::directiveMacro(const Token& at) {
 void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     if (cursors_.size() > 200) fail(nameToken, "macro calls nested too deeply (more than 200)");
     Scope args;
-    expect(Sym::LParen, fmt::format("'(' after macro name '{}'", macro.name).c_str());
+    expectAfter(Sym::LParen, "'('", macro.name);
     size_t count = 0;
     if (!peek().is(Sym::RParen)) {
         do {

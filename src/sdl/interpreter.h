@@ -53,6 +53,14 @@ private:
         // next line's directive before this one is done).
         bool inDirective = false;
     };
+    // Where peek() last resolved the stream to a plain token, so repeated
+    // peeks at the same place (every precedence level looks) skip the
+    // directive and macro checks.
+    struct PeekCache {
+        const TokenizedFile* file = nullptr;
+        size_t pos = 0;
+        size_t depth = 0;
+    } peekCache_;
     enum class BlockKind { If, While, For, Switch, Macro };
     struct Block {
         Block() = default;
@@ -79,6 +87,9 @@ private:
     [[noreturn]] void unsupported(const Token& at, const std::string& feature);
 
     void expect(Sym s, const char* what);
+    // expect() whose message names what came before ("'(' after 'sqrt'"),
+    // formatted only when the symbol is missing.
+    void expectAfter(Sym s, const char* symbol, std::string_view after);
     bool accept(Sym s);
     bool accept(Keyword k);
     std::string expectIdentifier();
@@ -192,6 +203,7 @@ private:
     };
     std::unordered_map<std::string, Deprecation> deprecated_;
     std::vector<FilePtr> openFiles_;  // closed at the end of the parse
+    std::string inputFileName_;       // the scene file as named to the interpreter
 };
 
 }  // namespace frameray::sdl
