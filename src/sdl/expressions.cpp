@@ -623,7 +623,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             const Token id = rawPeek();
             ++cursors_.back().pos;
             expect(Sym::RParen, "')'");
-            return double(id.isIdentifier() && lookup(std::string(id.text)) != nullptr);
+            return double(id.isIdentifier() && lookup(id.text) != nullptr);
         }
         default: break;
     }

@@ -174,7 +174,7 @@ private:
                 emit({FnOp::Slot, it->second}, +1);
                 return;
             }
-        const Value* v = in_.lookup(std::string(t.text));
+        const Value* v = in_.lookup(t.text);
         if (v && std::holds_alternative<FunctionPtr>(*v)) {
             const FunctionPtr callee = std::get<FunctionPtr>(*v);
             in_.next();

@@ -88,7 +88,7 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
     return std::move(scene_);
 }
 
-const Value* Interpreter::lookup(const std::string& name) const {
+const Value* Interpreter::lookup(std::string_view name) const {
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
         auto found = it->find(name);
         if (found == it->end()) continue;
@@ -102,7 +102,7 @@ const Value* Interpreter::lookup(const std::string& name) const {
     return nullptr;
 }
 
-Value* Interpreter::find(const std::string& name) {
+Value* Interpreter::find(std::string_view name) {
     return const_cast<Value*>(std::as_const(*this).lookup(name));
 }
 
@@ -158,7 +158,7 @@ const Token& Interpreter::peek() {
             continue;
         }
         if (t.isIdentifier()) {
-            const Value* v = lookup(std::string(t.text));
+            const Value* v = lookup(t.text);
             if (v && std::holds_alternative<MacroPtr>(*v)) {
                 const Token nameToken = t;
                 const MacroPtr macro = std::get<MacroPtr>(*v);
@@ -443,7 +443,7 @@ bool Interpreter::conditionIfdef() {
     bool defined = false;
     if (t.kind == TokenKind::Word) {
         ++cursors_.back().pos;
-        const Value* v = t.kw == Keyword::None ? lookup(std::string(t.text)) : nullptr;
+        const Value* v = t.kw == Keyword::None ? lookup(t.text) : nullptr;
         defined = v != nullptr;
         // #ifdef (A[i]): whether that element has been set.
         if (v && std::holds_alternative<ArrayPtr>(*v) && peek().is(Sym::LBracket)) {

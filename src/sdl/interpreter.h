@@ -34,7 +34,7 @@ public:
     scene::Scene parseText(const std::string& name, const std::string& text);
 
     // Identifier lookup after parsing (tests).
-    const Value* lookup(const std::string& name) const;
+    const Value* lookup(std::string_view name) const;
 
 private:
     friend class FunctionCompiler;  // compiles function bodies from this token stream
@@ -72,7 +72,13 @@ private:
         double loopEnd = 0, loopStep = 1;
         double switchValue = 0;  // Switch
     };
-    using Scope = std::unordered_map<std::string, Value>;
+    // Heterogeneous lookup: identifiers are looked up by the string_view of
+    // their token, without building a std::string each time.
+    struct NameHash {
+        using is_transparent = void;
+        size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+    };
+    using Scope = std::unordered_map<std::string, Value, NameHash, std::equal_to<>>;
 
     scene::Scene run(std::shared_ptr<const TokenizedFile> file);
 
@@ -119,7 +125,7 @@ private:
     std::filesystem::path findIncludeFile(const std::string& name) const;
 
     // --- identifiers ---
-    Value* find(const std::string& name);
+    Value* find(std::string_view name);
     void declare(const std::string& name, Value value, bool local);
 
     // --- arrays (arrays.cpp) ---
