@@ -75,6 +75,14 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
     }
     scene_.languageVersion = version_;
     scene_.versionDeclared = versionSeen_;
+    const std::string scenePath = file->source->path();
+    if (scene_.objects.empty()) messages_.message(Stream::Warning, scenePath + ": warning: no objects in scene");
+    if (!versionSeen_)
+        messages_.message(Stream::Warning, scenePath + ": warning: the scene has no #version directive; as of "
+                                                       "POV-Ray 3.7 one is expected as its first declaration");
+    else if (declarationBeforeVersion_)
+        messages_.message(Stream::Warning, scenePath + ": warning: declarations precede the first #version "
+                                                       "directive, which POV-Ray 3.7 expects first");
     // povray 3.7 warns about a missing assumed_gamma because the result
     // depends on the scene's version (render/gamma.cpp applies the rule).
     if (!scene_.globals.assumedGammaSet) {
@@ -291,6 +299,7 @@ void Interpreter::runDirective() {
         case Keyword::kw_break: directiveBreak(word); break;
         case Keyword::kw_macro: directiveMacro(word); break;
         case Keyword::kw_version: {
+            if (!versionSeen_ && !scene_.objects.empty()) declarationBeforeVersion_ = true;
             version_ = parseFloat();
             versionSeen_ = true;
             accept(Sym::Semicolon);
@@ -321,6 +330,7 @@ void Interpreter::runDirective() {
 }
 
 void Interpreter::directiveDeclare(bool local) {
+    if (!versionSeen_) declarationBeforeVersion_ = true;
     bool deprecated = false, deprecatedOnce = false;
     std::string deprecatedMessage;
     if (rawPeek().is(Keyword::kw_deprecated)) {

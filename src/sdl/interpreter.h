@@ -198,6 +198,7 @@ private:
     scene::Scene scene_;
     double version_ = 3.7;
     bool versionSeen_ = false;
+    bool declarationBeforeVersion_ = false;
     int includeDepth_ = 0;
     // Random number streams made by seed(); the float seed() returns is
     // the stream's index, as in POV-Ray.
