@@ -68,8 +68,10 @@ int colorComponent(Keyword k) {
     }
 }
 
+// In single precision, as povray computes it (its last digit shows).
 double srgbToLinear(double v) {
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+    const float x = static_cast<float>(v);
+    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
 }
 
 }  // namespace
@@ -98,8 +100,29 @@ VectorValue Interpreter::parseVector() {
 
 Vec3 Interpreter::parseVec3() { return parseVector().xyz(); }
 
+bool Interpreter::startsStringExpression(const Token& t) {
+    static constexpr Keyword kStringFunctions[] = {
+        Keyword::kw_concat, Keyword::kw_str,    Keyword::kw_chr,      Keyword::kw_substr,
+        Keyword::kw_strupr, Keyword::kw_strlwr, Keyword::kw_vstr,     Keyword::kw_datetime,
+        Keyword::kw_input_file_name};
+    if (t.kind == TokenKind::String) return true;
+    if (t.isIdentifier()) {
+        const Value* v = lookup(t.text);
+        return v && std::holds_alternative<std::string>(*v);
+    }
+    return t.kind == TokenKind::Word &&
+           std::find(std::begin(kStringFunctions), std::end(kStringFunctions), t.kw) != std::end(kStringFunctions);
+}
+
 std::string Interpreter::parseString() {
     const Token at = peek();
+    // A string expression has no operators, so nothing after it is looked
+    // at: `#include "x.inc"` runs before whatever the next line holds.
+    if (startsStringExpression(at)) {
+        Value v = parsePrimary(false);
+        if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);
+        fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
+    }
     Value v = parseExpression();
     if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);
     fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
@@ -132,7 +155,8 @@ Color Interpreter::parseColor() {
 Value Interpreter::parseTernary(bool inVector) {
     const Token at = peek();
     Value cond = parseLogical(inVector);
-    if (!accept(Sym::Question)) return cond;
+    if (!peek().is(Sym::Question)) return cond;
+    next();
     const bool truth = isTrue(toFloat(cond, at));
     Value a = parseTernary(inVector);
     expect(Sym::Colon, "':' of the conditional expression");
@@ -181,11 +205,12 @@ Value Interpreter::parseRelational(bool inVector) {
             fail(op, "relational operators need floats, vectors or two strings");
         left = combine(left, right, [&](double a, double b) {
             switch (op.sym) {
+                // As povray 3.7: '=' '!=' '<=' '>=' allow 1e-10, '<' '>' are exact.
                 case Sym::Less: return double(a < b);
-                case Sym::LessEq: return double(a <= b);
-                case Sym::Equal: return double(std::fabs(a - b) < kEpsilon);
-                case Sym::NotEq: return double(std::fabs(a - b) >= kEpsilon);
-                case Sym::GreaterEq: return double(a >= b);
+                case Sym::LessEq: return double(a <= b + kEpsilon);
+                case Sym::Equal: return double(std::fabs(a - b) <= kEpsilon);
+                case Sym::NotEq: return double(std::fabs(a - b) > kEpsilon);
+                case Sym::GreaterEq: return double(a >= b - kEpsilon);
                 default: return double(a > b);
             }
         });
@@ -328,6 +353,8 @@ Value Interpreter::parseColorKeywords(const Token& first) {
         next();
         c.v[slot] = parseFloat();
     }
+    // povray keeps colours in single precision.
+    for (double& component : c.v) component = static_cast<float>(component);
     return c;
 }
 
@@ -340,12 +367,13 @@ Value Interpreter::identifierValue(const Token& name) {
         d->second.warned = true;
     }
     Value out = *v;
-    if (const auto* arr = std::get_if<ArrayPtr>(&out); arr && peek().is(Sym::LBracket)) {
-        const ArrayPtr array = *arr;  // keep alive while indexing
+    // Arrays of arrays index on: Nested[0][1].
+    while (std::holds_alternative<ArrayPtr>(out) && peek().is(Sym::LBracket)) {
+        const ArrayPtr array = std::get<ArrayPtr>(out);  // keep alive while indexing
         const size_t index = parseArrayIndex(*array, name);
         out = array->elements[index];
         if (std::holds_alternative<std::monostate>(out))
-            fail(name, fmt::format("array element of '{}' used before it was set", name.text));
+            fail(name, fmt::format("element {} of array '{}' used before it was set", index, name.text));
     }
     if (const auto* spline = std::get_if<SplinePtr>(&out); spline && peek().is(Sym::LParen)) {
         const SplinePtr keep = *spline;
@@ -495,12 +523,19 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         }
         case Keyword::kw_vaxis_rotate: {
             auto a = parseArguments(3, 3, fn);
-            // Rodrigues' rotation, in POV-Ray's left-handed sense.
+            // The axis-angle rotation matrix in the row-vector convention,
+            // evaluated in this order so results match povray's to the bit.
             const Vec3 p = vec(a[0]), k = normalize(vec(a[1]));
-            const double ang = -f(a[2]) * std::numbers::pi / 180.0;
-            const Vec3 r = p * std::cos(ang) + cross(k, p) * std::sin(ang) +
-                           k * (dot(k, p) * (1 - std::cos(ang)));
-            return VectorValue::fromVec3(r);
+            const double ang = f(a[2]) * std::numbers::pi / 180.0;
+            const double c = std::cos(ang), sn = std::sin(ang), t = 1 - c;
+            const double m00 = k.x * k.x + c * (1 - k.x * k.x), m01 = k.x * k.y * t + k.z * sn,
+                         m02 = k.x * k.z * t - k.y * sn;
+            const double m10 = k.x * k.y * t - k.z * sn, m11 = k.y * k.y + c * (1 - k.y * k.y),
+                         m12 = k.y * k.z * t + k.x * sn;
+            const double m20 = k.x * k.z * t + k.y * sn, m21 = k.y * k.z * t - k.x * sn,
+                         m22 = k.z * k.z + c * (1 - k.z * k.z);
+            return VectorValue::fromVec3({p.x * m00 + p.y * m10 + p.z * m20, p.x * m01 + p.y * m11 + p.z * m21,
+                                          p.x * m02 + p.y * m12 + p.z * m22});
         }
         case Keyword::kw_strlen: return double(str(parseArguments(1, 1, fn)[0]).size());
         case Keyword::kw_strupr: case Keyword::kw_strlwr: {
@@ -519,9 +554,10 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_substr: {
             auto a = parseArguments(3, 3, fn);
             const std::string s = str(a[0]);
-            const long start = std::lround(f(a[1])), len = std::lround(f(a[2]));
+            const long start = static_cast<long>(f(a[1])), len = static_cast<long>(f(a[2]));
             if (start < 1 || len < 0 || static_cast<size_t>(start - 1 + len) > s.size())
-                fail(fn, "substr: range is outside the string");
+                fail(fn, fmt::format("substr: characters {} to {} are outside the {}-character string", start,
+                                     start + len - 1, s.size()));
             return s.substr(static_cast<size_t>(start - 1), static_cast<size_t>(len));
         }
         case Keyword::kw_val: return std::strtod(str(parseArguments(1, 1, fn)[0]).c_str(), nullptr);
@@ -537,9 +573,14 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         }
         case Keyword::kw_vstr: {
             auto a = parseArguments(5, 5, fn);
-            // vstr(N, V, separator, width, precision)
-            const int dims = std::clamp(static_cast<int>(f(a[0])), 1, 5);
-            const VectorValue v = toVector(a[1], fn, dims);
+            // vstr(N, V, separator, width, precision); povray prints at
+            // least 2 components, and a float V fills only the first.
+            const int dims = std::clamp(static_cast<int>(f(a[0])), 2, 5);
+            VectorValue v;
+            if (const double* single = std::get_if<double>(&a[1]))
+                v.v[0] = *single;
+            else
+                v = toVector(a[1], fn, dims);
             const std::string sep = str(a[2]);
             const int width = static_cast<int>(f(a[3])), precision = static_cast<int>(f(a[4]));
             const int p = precision < 0 ? 6 : precision;

@@ -106,7 +106,8 @@ constexpr BinaryFormat kBinaryFormats[] = {
 void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
     const double lo = f.isSigned ? -std::ldexp(1.0, f.bytes * 8 - 1) : 0.0;
     const double hi = f.isSigned ? std::ldexp(1.0, f.bytes * 8 - 1) - 1 : std::ldexp(1.0, f.bytes * 8) - 1;
-    const auto word = static_cast<uint32_t>(static_cast<int64_t>(std::clamp(std::round(value), lo, hi)));
+    // Rounded as floor(x + 0.5), as povray does (-2.5 -> -2).
+    const auto word = static_cast<uint32_t>(static_cast<int64_t>(std::clamp(std::floor(value + 0.5), lo, hi)));
     for (int i = 0; i < f.bytes; ++i) {
         const int shift = 8 * (f.bigEndian ? f.bytes - 1 - i : i);
         out.put(static_cast<char>((word >> shift) & 0xFF));
@@ -200,6 +201,8 @@ void Interpreter::directiveRead(const Token& at) {
 void Interpreter::directiveWrite(const Token& at) {
     (void)at;
     expect(Sym::LParen, "'('");
+    // Inside the parentheses directives run as anywhere else.
+    cursors_.back().inDirective = false;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
     Value* v = find(id);

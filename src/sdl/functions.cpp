@@ -36,7 +36,8 @@ private:
 
     void ternary() {
         logical();
-        if (!in_.accept(Sym::Question)) return;
+        if (!in_.peek().is(Sym::Question)) return;
+        in_.next();
         const size_t jumpFalse = emit({FnOp::JumpIfFalse}, -1);
         ternary();
         const size_t jumpEnd = emit({FnOp::Jump}, 0);
@@ -47,14 +48,22 @@ private:
         fn_->code[jumpEnd].a = static_cast<int32_t>(here());
     }
 
+    // In function bodies '&' binds tighter than '|' (povray 3.7).
     void logical() {
+        logicalAnd();
+        while (in_.peek().is(Sym::Bar)) {
+            in_.next();
+            logicalAnd();
+            emit({FnOp::Or}, -1);
+        }
+    }
+
+    void logicalAnd() {
         relational();
-        for (;;) {
-            const Token op = in_.peek();
-            if (!op.is(Sym::Amp) && !op.is(Sym::Bar)) return;
+        while (in_.peek().is(Sym::Amp)) {
             in_.next();
             relational();
-            emit({op.is(Sym::Amp) ? FnOp::And : FnOp::Or}, -1);
+            emit({FnOp::And}, -1);
         }
     }
 
@@ -135,9 +144,15 @@ private:
                                     : fmt::format("'{}' takes {} to {} arguments, {} given", fn.text, min, max, n));
     }
 
+    // x and u name the same parameter, as do y and v (povray 3.7).
     int paramIndex(std::string_view name) const {
+        auto alias = [](std::string_view n) -> std::string_view {
+            if (n == "u") return "x";
+            if (n == "v") return "y";
+            return n;
+        };
         for (size_t i = 0; i < params_.size(); ++i)
-            if (params_[i] == name) return static_cast<int>(i);
+            if (alias(params_[i]) == alias(name)) return static_cast<int>(i);
         return -1;
     }
 
@@ -213,14 +228,8 @@ private:
             return;
         }
         switch (t.kw) {
-            case Keyword::kw_x: case Keyword::kw_u: case Keyword::kw_y: case Keyword::kw_v: case Keyword::kw_z: {
-                // Default parameters: x y z, with u v aliases of x y.
-                const int p = t.kw == Keyword::kw_u ? paramIndex("x") : t.kw == Keyword::kw_v ? paramIndex("y") : -1;
-                if (p < 0) in_.fail(t, fmt::format("'{}' is not a parameter of this function", t.text));
-                in_.next();
-                emit({FnOp::Param, p}, +1);
-                return;
-            }
+            case Keyword::kw_x: case Keyword::kw_u: case Keyword::kw_y: case Keyword::kw_v: case Keyword::kw_z:
+                in_.fail(t, fmt::format("'{}' is not a parameter of this function", t.text));
             case Keyword::kw_min: case Keyword::kw_max: {
                 in_.next();
                 const int n = arguments(t);

@@ -1,6 +1,7 @@
 // Token stream, directives, scopes and include files of the interpreter.
 #include "sdl/interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -44,7 +45,7 @@ Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSi
 }
 
 scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
-    inputFileName_ = sceneFile.string();
+    inputFileName_ = sceneFile.filename().string();  // povray gives the bare name
     auto file = cache_.get(sceneFile);
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
     return run(std::move(file));
@@ -363,9 +364,8 @@ void Interpreter::directiveDeclare(bool local) {
         return;
     }
     expect(Sym::Equal, "'='");
-    // The value may be an object whose body holds directives of its own,
-    // so it is read as ordinary scene text (as POV-Ray does - hence its
-    // advice to end declarations with ';').
+    // The value is ordinary scene text again: objects hold directives, and
+    // so may expressions (`(1 + #if (A) 2 #else 3 #end)`).
     cursors_.back().inDirective = false;
     Value value = parseRValue();
     const bool needsSemicolon = std::holds_alternative<double>(value) || std::holds_alternative<VectorValue>(value);
@@ -402,6 +402,8 @@ Value Interpreter::parseRValue() {
         case Keyword::kw_light_source: return std::make_shared<const scene::Light>(parseLightSource());
         default: break;
     }
+    // A string value is complete without looking further (see parseString).
+    if (startsStringExpression(start)) return parseString();
     Value v = parseExpression();
     // Arrays are values: a declaration from another array copies it.
     if (auto* arr = std::get_if<ArrayPtr>(&v)) return std::make_shared<ArrayValue>(**arr);

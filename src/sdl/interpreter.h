@@ -154,6 +154,7 @@ private:
     Vec3 parseVec3();
     Color parseColor();                         // with optional color/colour keyword
     std::string parseString();
+    bool startsStringExpression(const Token& t);
     Value parseTernary(bool inVector);
     Value parseLogical(bool inVector);
     Value parseRelational(bool inVector);

@@ -151,12 +151,11 @@ Value Interpreter::parseSpline() {
             fail(pointAt, fmt::format("a spline point must be a vector of 2 to 5 components, not a {}", valueKindName(v)));
         const VectorValue point = std::get<VectorValue>(v);
         accept(Sym::Comma);
-        // Entries are kept sorted; a repeated parameter replaces the point.
+        // Entries are kept sorted; a repeated parameter keeps its first
+        // point (povray 3.7's behaviour).
         const auto pos = std::lower_bound(spline->t.begin(), spline->t.end(), t);
         const size_t i = static_cast<size_t>(pos - spline->t.begin());
-        if (pos != spline->t.end() && *pos == t) {
-            spline->p[i] = point;
-        } else {
+        if (pos == spline->t.end() || *pos != t) {
             spline->t.insert(pos, t);
             spline->p.insert(spline->p.begin() + static_cast<long>(i), point);
         }

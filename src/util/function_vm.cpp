@@ -8,9 +8,8 @@
 namespace frameray {
 
 namespace {
-// Same truth and equality tolerance as parse-time expressions.
-constexpr double kEpsilon = 1e-10;
-bool truth(double v) { return std::fabs(v) > kEpsilon; }
+// Unlike parse-time expressions, function comparisons are exact (povray 3.7).
+bool truth(double v) { return v != 0.0; }
 }  // namespace
 
 double CompiledFunction::eval(const double* args) const {
@@ -32,8 +31,8 @@ double CompiledFunction::eval(const double* args) const {
             case FnOp::Not: stack[sp - 1] = truth(stack[sp - 1]) ? 0.0 : 1.0; break;
             case FnOp::Lt: --sp; stack[sp - 1] = stack[sp - 1] < stack[sp]; break;
             case FnOp::Le: --sp; stack[sp - 1] = stack[sp - 1] <= stack[sp]; break;
-            case FnOp::Eq: --sp; stack[sp - 1] = std::fabs(stack[sp - 1] - stack[sp]) < kEpsilon; break;
-            case FnOp::Ne: --sp; stack[sp - 1] = std::fabs(stack[sp - 1] - stack[sp]) >= kEpsilon; break;
+            case FnOp::Eq: --sp; stack[sp - 1] = stack[sp - 1] == stack[sp]; break;
+            case FnOp::Ne: --sp; stack[sp - 1] = stack[sp - 1] != stack[sp]; break;
             case FnOp::Ge: --sp; stack[sp - 1] = stack[sp - 1] >= stack[sp]; break;
             case FnOp::Gt: --sp; stack[sp - 1] = stack[sp - 1] > stack[sp]; break;
             case FnOp::And: --sp; stack[sp - 1] = truth(stack[sp - 1]) && truth(stack[sp]); break;
@@ -85,7 +84,10 @@ double CompiledFunction::eval(const double* args) const {
                 pc = static_cast<size_t>(in.b) - 1;
                 break;
             case FnOp::Internal:
-                throw std::runtime_error("not supported yet: internal function " + std::to_string(in.a));
+                throw std::runtime_error(in.a < 0 ? "not supported yet: calling a pattern, pigment, transform or "
+                                                    "spline function from a function"
+                                                  : "not supported yet: functions.inc internal function " +
+                                                        std::to_string(in.a));
         }
     }
     return sp > 0 ? stack[sp - 1] : 0.0;

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Runs one language error test: frameray must reject SCENE cleanly and
+# report it like a compiler. Called by CTest (see CMakeLists.txt):
+#
+#     run_error_test.sh FRAMERAY SCENE EXPECTED
+#
+# frameray runs in the scene's folder with the scene's bare file name (and
+# the switches of the other language tests, +O pointing into a scratch
+# folder), so the paths in its messages do
+# not depend on where the repository is; any remaining mention of that folder
+# is removed as well. The test passes when frameray exits with a non-zero
+# status below 128 (an error, not a crash or a signal) and the first three
+# lines of its standard error (path:line:col: error: message, the source
+# line, the caret line) equal EXPECTED.
+set -uo pipefail
+
+if [ $# -ne 3 ]; then
+    echo "usage: $0 FRAMERAY SCENE EXPECTED" >&2
+    exit 2
+fi
+frameray="$1"
+scene_dir="$(cd "$(dirname "$2")" && pwd)"
+scene="$(basename "$2")"
+expected="$3"
+name="$(basename "$scene" .pov)"
+
+if [ ! -f "$scene_dir/$scene" ] || [ ! -f "$expected" ]; then
+    echo "language_error: $name: missing $scene_dir/$scene or $expected" >&2
+    exit 2
+fi
+
+stderr_file="$(mktemp)"
+trap 'rm -f "$stderr_file"' EXIT
+
+# The frame log (named after the output image) goes to a scratch folder,
+# not into the sources.
+scratch="$(mktemp -d)"
+trap 'rm -f "$stderr_file"; rm -rf "$scratch"' EXIT
+echo "+ cd $scene_dir && $frameray $scene -F -D +W8 +H8 +O$scratch/$name.png"
+(cd "$scene_dir" && "$frameray" "$scene" -F -D +W8 +H8 "+O$scratch/$name.png" >"$scratch/stdout" 2>"$stderr_file")
+status=$?
+
+echo "--- frameray's standard error (exit status $status):"
+cat "$stderr_file"
+echo "---"
+
+result=0
+if [ $status -eq 0 ]; then
+    echo "language_error: $name: frameray accepted a scene with an error (exit status 0)" >&2
+    result=1
+elif [ $status -ge 128 ]; then
+    echo "language_error: $name: frameray crashed (exit status $status)" >&2
+    result=1
+fi
+
+actual="$(head -n 3 "$stderr_file" | sed "s|$scene_dir/||g")"
+if ! diff -u --label "$(basename "$expected") (expected)" --label "stderr of frameray (first 3 lines)" \
+    "$expected" <(printf '%s\n' "$actual"); then
+    echo "language_error: $name: the diagnostic differs from the expected one" >&2
+    result=1
+fi
+[ $result -eq 0 ] && echo "language_error: $name: ok"
+exit $result
