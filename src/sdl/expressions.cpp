@@ -358,11 +358,12 @@ Value Interpreter::parseColorKeywords(const Token& first) {
     return c;
 }
 
-Value Interpreter::identifierValue(const Token& name) {
-    const std::string id(name.text);
-    const Value* v = lookup(id);
+Value Interpreter::identifierValue(const Token& name, const Value* known) {
+    const std::string_view id(name.text);
+    const Value* v = known ? known : lookup(id);
     if (!v) fail(name, fmt::format("undeclared identifier '{}'", name.text));
-    if (auto d = deprecated_.find(id); d != deprecated_.end() && !(d->second.once && d->second.warned)) {
+    if (auto d = deprecated_.empty() ? deprecated_.end() : deprecated_.find(id);
+        d != deprecated_.end() && !(d->second.once && d->second.warned)) {
         warn(name, d->second.message);
         d->second.warned = true;
     }
@@ -429,8 +430,10 @@ Value Interpreter::parsePrimary(bool inVector) {
     }
     (void)inVector;
     if (t.kw == Keyword::None) {
+        // peek() just looked this identifier up; nothing ran since.
+        const Value* known = peekCache_.identifier;
         next();
-        return identifierValue(t);
+        return identifierValue(t, known);
     }
     auto vec3 = [](double a, double b, double c) { return VectorValue{{a, b, c, 0, 0}, 3, false}; };
     switch (t.kw) {

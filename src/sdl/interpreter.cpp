@@ -154,20 +154,17 @@ const Token& Interpreter::rawPeek() {
     }
 }
 
-const Token& Interpreter::peek() {
-    {
-        const Cursor& c = cursors_.back();
-        if (peekCache_.file == c.file.get() && peekCache_.pos == c.pos && peekCache_.depth == cursors_.size())
-            return c.file->tokens[c.pos];
-    }
+const Token& Interpreter::resolvePeek() {
     for (;;) {
         const Token& t = rawPeek();
         if (t.is(Sym::Hash) && !cursors_.back().inDirective) {
             runDirective();
             continue;
         }
+        const Value* named = nullptr;
         if (t.isIdentifier()) {
             const Value* v = lookup(t.text);
+            named = v;
             if (v && std::holds_alternative<MacroPtr>(*v)) {
                 const Token nameToken = t;
                 const MacroPtr macro = std::get<MacroPtr>(*v);
@@ -180,7 +177,7 @@ const Token& Interpreter::peek() {
         // looked at again once the directive is done.
         if (!t.is(Sym::Hash)) {
             const Cursor& c = cursors_.back();
-            peekCache_ = {c.file.get(), c.pos, cursors_.size()};
+            peekCache_ = {c.file.get(), c.pos, cursors_.size(), named};
         }
         return t;
     }

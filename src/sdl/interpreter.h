@@ -60,6 +60,9 @@ private:
         const TokenizedFile* file = nullptr;
         size_t pos = 0;
         size_t depth = 0;
+        // For an identifier: what it names (nullptr if undeclared), so the
+        // caller that consumes it need not look it up again.
+        const Value* identifier = nullptr;
     } peekCache_;
     enum class BlockKind { If, While, For, Switch, Macro };
     struct Block {
@@ -83,7 +86,15 @@ private:
     scene::Scene run(std::shared_ptr<const TokenizedFile> file);
 
     const Token& rawPeek();        // current token, no directive processing
-    const Token& peek();           // current token after directives/macros
+    // Current token after directives/macros; the fast path answers repeated
+    // peeks at the same place.
+    const Token& peek() {
+        const Cursor& c = cursors_.back();
+        if (peekCache_.file == c.file.get() && peekCache_.pos == c.pos && peekCache_.depth == cursors_.size())
+            return c.file->tokens[c.pos];
+        return resolvePeek();
+    }
+    const Token& resolvePeek();
     Token next();                  // consume peek()
     SourceLoc loc(const Token& t) const;
     SourceLoc here();              // location of peek()
@@ -166,7 +177,9 @@ private:
     Value parseVectorLiteral();
     Value parseColorKeywords(const Token& first);
     Value parseBuiltinFunction(const Token& name);
-    Value identifierValue(const Token& name);
+    // `known` is what the identifier names when the caller already has it
+    // (see PeekCache); looked up otherwise.
+    Value identifierValue(const Token& name, const Value* known = nullptr);
     std::vector<Value> parseArguments(size_t min, size_t max, const Token& fn);
     double toFloat(const Value& v, const Token& at);
     VectorValue toVector(const Value& v, const Token& at, int size = 3);
@@ -209,7 +222,7 @@ private:
         bool once = false;
         bool warned = false;
     };
-    std::unordered_map<std::string, Deprecation> deprecated_;
+    std::unordered_map<std::string, Deprecation, NameHash, std::equal_to<>> deprecated_;
     std::vector<FilePtr> openFiles_;  // closed at the end of the parse
     std::string inputFileName_;       // the scene file as named to the interpreter
 };
