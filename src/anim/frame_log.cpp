@@ -1,20 +1,69 @@
 #include "anim/frame_log.h"
 
-#include <cstdio>
+#include <fmt/format.h>
+
 #include <fstream>
+#include <stdexcept>
 
 namespace frameray::anim {
+
+using options::TextStream;
+
+RunStreams::RunStreams(const options::RenderOptions& o) {
+    const auto& all = o.streams[static_cast<int>(TextStream::All)];
+    for (int i = 0; i < options::kTextStreams; ++i) {
+        streams_[i].console = o.streams[i].console && (i == static_cast<int>(TextStream::All) || all.console);
+        if (o.streams[i].file.empty()) continue;
+        streams_[i].file = std::fopen(o.streams[i].file.c_str(), "w");
+        if (!streams_[i].file)
+            throw std::runtime_error(fmt::format("cannot create stream file '{}'", o.streams[i].file));
+    }
+}
+
+RunStreams::~RunStreams() {
+    for (auto& s : streams_)
+        if (s.file) std::fclose(s.file);
+}
+
+void RunStreams::write(TextStream stream, const std::string& text) {
+    std::lock_guard lock(mutex_);
+    const Stream& s = streams_[static_cast<int>(stream)];
+    if (s.console) {
+        std::fputs(text.c_str(), stderr);
+        std::fflush(stderr);
+    }
+    if (s.file) {
+        std::fputs(text.c_str(), s.file);
+        std::fflush(s.file);
+    }
+    if (std::FILE* all = streams_[static_cast<int>(TextStream::All)].file) {
+        std::fputs(text.c_str(), all);
+        std::fflush(all);
+    }
+}
+
+TextStream toTextStream(sdl::Stream s) {
+    switch (s) {
+        case sdl::Stream::Debug: return TextStream::Debug;
+        case sdl::Stream::Warning: return TextStream::Warning;
+        case sdl::Stream::Render: return TextStream::Render;
+        case sdl::Stream::Statistics: return TextStream::Statistic;
+        case sdl::Stream::Fatal: return TextStream::Fatal;
+    }
+    return TextStream::Debug;
+}
 
 void FrameLog::message(sdl::Stream stream, const std::string& text) {
     // #debug text is written as given (the scene supplies its own "\n");
     // every other message is a line of its own.
     std::string line = text;
     if (stream != sdl::Stream::Debug && (line.empty() || line.back() != '\n')) line += '\n';
-    text_ += line;
-    if (echo_ || stream == sdl::Stream::Fatal) {
-        std::fputs(line.c_str(), stderr);
-        std::fflush(stderr);
-    }
+    message(toTextStream(stream), line);
+}
+
+void FrameLog::message(TextStream stream, const std::string& text) {
+    text_ += text;
+    streams_.write(stream, text);
 }
 
 void FrameLog::save(const std::filesystem::path& path) const {

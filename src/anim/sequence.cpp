@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "options/options.h"
 
 namespace frameray::anim {
@@ -11,7 +14,8 @@ namespace fs = std::filesystem;
 image::FileType fileTypeFor(char letter) {
     switch (letter) {
         case 'P': return image::FileType::PPM;
-        case 'T': case 'C': return image::FileType::TGA;
+        case 'T': return image::FileType::TGA;
+        case 'C': return image::FileType::TGA_RLE;
         case 'E': return image::FileType::EXR;
         case 'H': return image::FileType::HDR;
         case 'J': return image::FileType::JPEG;
@@ -20,28 +24,54 @@ image::FileType fileTypeFor(char letter) {
     }
 }
 
+fs::path outputName(const options::RenderOptions& o, image::FileType type, bool animated, int number, int digits) {
+    const std::string ext = image::extensionFor(type);
+    const std::string stem = fs::path(o.inputFile).stem().string();
+    // Output_File_Name: a folder when it ends in '/', else a file name
+    // whose extension is dropped only when it is the type's own (povray:
+    // +Oout.tga with PNG output writes out.tga.png; the match is
+    // case-sensitive).
+    std::string folder, base;
+    if (o.outputFile.empty()) {
+        base = stem;
+    } else if (o.outputFile.back() == '/') {
+        folder = o.outputFile;
+        base = stem;
+    } else {
+        const fs::path p(o.outputFile);
+        folder = p.parent_path().string();
+        base = p.filename().string();
+        if (base.size() > ext.size() && base.compare(base.size() - ext.size(), ext.size(), ext) == 0)
+            base.resize(base.size() - ext.size());
+    }
+    if (animated) {
+        const std::string n = fmt::format("{:0{}d}", number, digits);
+        // The name keeps its length: a frame number longer than the padding
+        // eats into the base name (povray: abcdef99 then abcde100).
+        const size_t extra = n.size() > static_cast<size_t>(digits) ? n.size() - digits : 0;
+        base.resize(base.size() > extra ? base.size() - extra : 0);
+        base += n;
+    }
+    return folder.empty() ? fs::path(base + ext) : fs::path(folder) / (base + ext);
+}
+
 namespace {
 
-// POV-Ray's output naming: Output_File_Name may be a file name (its
-// extension replaced by the type's) or a folder; by default the scene's
-// name in the working folder. Animations append the frame number padded to
-// the digit count of the final frame.
-fs::path outputPath(const options::RenderOptions& o, image::FileType type, int frame, bool animated,
-                    int finalFrame) {
-    const fs::path scene(o.inputFile);
-    fs::path base;
-    if (o.outputFile.empty()) {
-        base = scene.stem();
-    } else {
-        const bool folder = o.outputFile.back() == '/' || fs::is_directory(o.outputFile);
-        base = folder ? fs::path(o.outputFile) / scene.stem() : fs::path(o.outputFile).replace_extension();
-    }
-    std::string name = base.filename().string();
-    if (animated) {
-        const int digits = static_cast<int>(std::to_string(finalFrame).size());
-        name += fmt::format("{:0{}d}", frame, digits);
-    }
-    return base.parent_path() / (name + image::extensionFor(type));
+// Subset_Start_Frame / Subset_End_Frame: 0 or at least 1 is a frame
+// number; between them a fraction of the frame count, counted from frame
+// 0 (povray 3.7: +KFI5 +KFF15 +EF0.8 ends at frame 8).
+int subsetFrame(double value, int initial, int final) {
+    const double v = std::max(value, 0.0);
+    if (v == 0.0 || v >= 1.0) return static_cast<int>(v);
+    return static_cast<int>(std::floor(v * (final - initial + 1)));
+}
+
+// Start_Row & co: a start value below 1 is a fraction of the size, an end
+// value up to 1 is; other values are 1-based pixel numbers.
+int windowStart(double v, int size) { return v < 1.0 ? static_cast<int>(std::floor(v * size)) : static_cast<int>(v) - 1; }
+int windowEnd(double v, int size) {
+    if (v < 0) return size;
+    return v <= 1.0 ? static_cast<int>(std::floor(v * size)) : static_cast<int>(v);
 }
 
 }  // namespace
@@ -49,37 +79,68 @@ fs::path outputPath(const options::RenderOptions& o, image::FileType type, int f
 Sequence planSequence(const options::RenderOptions& o) {
     Sequence seq;
     seq.fileType = fileTypeFor(o.outputType);
-    seq.initialFrame = o.initialFrame;
-    seq.finalFrame = o.finalFrame;
-    seq.initialClock = o.initialClock;
-    seq.finalClock = o.finalClock;
-    if (o.finalFrame < o.initialFrame)
-        throw options::OptionError(fmt::format("Final_Frame {} is before Initial_Frame {}", o.finalFrame, o.initialFrame));
+    seq.sceneName = fs::path(o.inputFile).stem().string();
 
-    const bool animated = o.finalFrame != o.initialFrame;
-    if (!animated) {
+    // Render window.
+    seq.window.x0 = windowStart(o.startColumn, o.width);
+    seq.window.y0 = windowStart(o.startRow, o.height);
+    seq.window.x1 = windowEnd(o.endColumn, o.width);
+    seq.window.y1 = windowEnd(o.endRow, o.height);
+    if (seq.window.x0 < 0 || seq.window.x0 >= o.width || seq.window.y0 < 0 || seq.window.y0 >= o.height)
+        throw options::OptionError(
+            fmt::format("invalid start column or row: Start_Column {} / Start_Row {} is outside the {}x{} image",
+                        o.startColumn, o.startRow, o.width, o.height));
+    if (seq.window.x1 > o.width || seq.window.y1 > o.height)
+        throw options::OptionError(
+            fmt::format("invalid end column or row: End_Column {} / End_Row {} is outside the {}x{} image",
+                        o.endColumn, o.endRow, o.width, o.height));
+
+    // POV-Ray 3.7 animates when the frame numbers given (0 when not given)
+    // differ, or are equal but neither 0 nor 1: +KFI1 +KFF1 is a still,
+    // +KFF1 alone or +KFI3 +KFF3 a one-frame animation.
+    const int givenInitial = o.initialFrameSet ? o.initialFrame : 0;
+    const int givenFinal = o.finalFrameSet ? o.finalFrame : 0;
+    seq.animated = givenInitial != givenFinal || (givenInitial != 0 && givenInitial != 1);
+
+    if (!seq.animated) {
         FrameSpec f;
-        f.number = o.initialFrame;
-        f.clock = o.clockSet ? o.clock : o.initialClock;
-        f.output = outputPath(o, seq.fileType, f.number, false, o.finalFrame);
+        f.number = 0;
+        f.clock = o.clockSet ? o.clock : 0.0;
+        f.output = outputName(o, seq.fileType, false, 0, 0);
         f.log = fs::path(f.output).replace_extension(".log");
+        seq.clockOn = o.clockSet;
         seq.frames.push_back(f);
-        return seq;
+    } else {
+        const int initial = std::max(o.initialFrameSet ? o.initialFrame : 1, 0);
+        int final = std::max(o.finalFrameSet ? o.finalFrame : 1, initial);
+        const int lastFrame = final;
+        if (o.cyclicAnimation) ++final;  // the frame after the last is the first again
+        const int step = std::max(o.frameStep, 1);
+        // A one-frame animation divides by zero: povray gives clock_delta
+        // inf and clock nan, and so does this.
+        const double delta = (o.finalClock - o.initialClock) / static_cast<double>(final - initial);
+        const int first = o.subsetStartSet ? std::max(subsetFrame(o.subsetStartFrame, initial, final), initial) : initial;
+        const int last = std::max(o.subsetEndSet ? subsetFrame(o.subsetEndFrame, initial, final) : lastFrame, first);
+        const int digits = static_cast<int>(std::to_string(final).size());
+        seq.clockOn = true;
+        seq.initialFrame = initial;
+        seq.finalFrame = final;
+        seq.initialClock = o.initialClock;
+        seq.finalClock = o.finalClock;
+        for (long n = first; n <= last; n += step) {
+            FrameSpec f;
+            f.number = static_cast<int>(n);
+            f.clock = o.initialClock + delta * static_cast<double>(n - initial);
+            f.clockDelta = delta;
+            f.animated = true;
+            f.output = outputName(o, seq.fileType, true, f.number, digits);
+            f.log = fs::path(f.output).replace_extension(".log");
+            seq.frames.push_back(f);
+        }
     }
-    const int span = o.finalFrame - o.initialFrame + (o.cyclicAnimation ? 1 : 0);
-    const double delta = (o.finalClock - o.initialClock) / span;
-    const int first = o.subsetStartFrame > 0 ? std::max(o.subsetStartFrame, o.initialFrame) : o.initialFrame;
-    const int last = o.subsetEndFrame > 0 ? std::min(o.subsetEndFrame, o.finalFrame) : o.finalFrame;
-    for (int n = first; n <= last; ++n) {
-        FrameSpec f;
-        f.number = n;
-        f.clock = o.initialClock + delta * (n - o.initialFrame);
-        f.clockDelta = delta;
-        f.animated = true;
-        f.output = outputPath(o, seq.fileType, n, true, o.finalFrame);
-        f.log = fs::path(f.output).replace_extension(".log");
-        seq.frames.push_back(f);
-    }
+    // The journal sits beside the images, named after the sequence.
+    const fs::path firstOut = outputName(o, seq.fileType, false, 0, 0);
+    seq.journal = firstOut.parent_path() / fmt::format(".{}.frameray-journal", firstOut.stem().string());
     return seq;
 }
 

@@ -1,8 +1,9 @@
-// The frames of a run: frame numbers, clock values and output names,
-// computed from the options as POV-Ray 3.7 does.
+// The frames of a run: frame numbers, clock values, output names and the
+// render window, computed from the options exactly as POV-Ray 3.7 does.
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "image/image_io.h"
@@ -14,20 +15,42 @@ struct FrameSpec {
     int number = 0;            // frame_number
     double clock = 0;
     double clockDelta = 0;
-    bool animated = false;     // clock_on
+    bool animated = false;
     std::filesystem::path output;  // final image path
     std::filesystem::path log;     // the frame's message log, beside the image
+};
+
+// The render window in 0-based pixel coordinates, end exclusive.
+struct RenderWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool full(int width, int height) const { return x0 == 0 && y0 == 0 && x1 == width && y1 == height; }
 };
 
 struct Sequence {
     std::vector<FrameSpec> frames;
     image::FileType fileType = image::FileType::PNG;
-    int initialFrame = 1, finalFrame = 1;
-    double initialClock = 0, finalClock = 1;
+    bool animated = false;
+    bool clockOn = false;  // clock_on: an animation, or Clock given
+    // The built-in identifiers initial_frame, final_frame (one more than
+    // Final_Frame in a cyclic animation), initial_clock, final_clock: all 0
+    // when not animated, as in POV-Ray.
+    int initialFrame = 0, finalFrame = 0;
+    double initialClock = 0, finalClock = 0;
+    RenderWindow window;
+    // The journal of finished frames, beside the images (Continue_Trace).
+    std::filesystem::path journal;
+    std::string sceneName;  // the scene file's name without folder and extension (%s)
 };
 
-// Throws options::OptionError when the frame range makes no sense.
+// Throws options::OptionError when the options make no sense (a render
+// window outside the image).
 Sequence planSequence(const options::RenderOptions& options);
+
+// POV-Ray's output name of frame `number`: the name without its extension
+// when that is the type's, the frame number padded to `digits` (the base
+// name is shortened when the number has more digits), the extension.
+std::filesystem::path outputName(const options::RenderOptions& options, image::FileType type, bool animated,
+                                 int number, int digits);
 
 image::FileType fileTypeFor(char letter);
 

@@ -1,21 +1,29 @@
 // frameray: renders POV-Ray scenes and animations from INI files and
 // switches. Wiring only: options -> sequence -> frame loop.
-#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "anim/frame_loop.h"
+#include "anim/interrupt.h"
 #include "anim/sequence.h"
 #include "options/option_table.h"
 #include "options/options.h"
 
 int main(int argc, char** argv) {
     using namespace frameray;
+    // First, before any thread exists: Ctrl-C is handled by a watcher.
+    anim::installInterruptWatcher();
+
     std::vector<std::string> args(argv + 1, argv + argc);
+    // --list-frames: print the frames the options ask for (number, clock,
+    // file) and stop, without checking that the scene can be rendered.
+    bool listFrames = false;
+    std::erase_if(args, [&](const std::string& a) { return a == "--list-frames" ? (listFrames = true) : false; });
     for (const std::string& a : args)
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);
@@ -24,20 +32,34 @@ int main(int argc, char** argv) {
             std::fputs(options::optionsMarkdown().c_str(), stdout);
             return 0;
         }
-    spdlog::set_pattern("%v");
 
     options::RenderOptions opts;
     anim::Sequence sequence;
     try {
-        options::applyArguments(opts, args);
+        // POV-Ray's order: defaults, the startup sources, then the
+        // arguments (switches, Key=Value and INI files) in order.
+        std::vector<std::string> warnings = options::applyStartupOptions(opts, options::processEnvironment());
+        for (const std::string& w : options::applyArguments(opts, args)) warnings.push_back(w);
+        for (const std::string& w : warnings) std::fprintf(stderr, "frameray: warning: %s\n", w.c_str());
         if (opts.inputFile.empty()) throw options::OptionError("no scene file given (Input_File_Name or +I)");
+        if (!opts.createIni.empty()) {
+            std::ofstream ini(opts.createIni, std::ios::trunc);
+            ini << options::createIniText(opts);
+            if (!ini) throw options::OptionError("cannot write the Create_Ini file '" + opts.createIni + "'");
+        }
+        if (listFrames) {
+            const anim::Sequence planned = anim::planSequence(opts);
+            for (const anim::FrameSpec& f : planned.frames)
+                std::printf("%d %.17g %s\n", f.number, f.clock, f.output.c_str());
+            return 0;
+        }
         std::error_code ec;
         if (!std::filesystem::is_regular_file(opts.inputFile, ec))
             throw options::OptionError("cannot open scene file '" + opts.inputFile + "': no such file");
-        // Options whose effect is not built yet must not be silently ignored.
-        if (opts.antialias) throw options::OptionError("not supported yet: anti-aliasing (Antialias=on / +A)");
-        if (opts.quality < 4)
-            throw options::OptionError("not supported yet: Quality below 4 (+Q0..+Q3 drop shadows and shading)");
+        // Options whose effect is not built yet must not be silently
+        // ignored; the option table says which values need what.
+        if (const std::string missing = options::firstUnsupported(opts); !missing.empty())
+            throw options::OptionError("not supported yet: " + missing);
         sequence = anim::planSequence(opts);
     } catch (const options::OptionError& e) {
         std::fprintf(stderr, "frameray: error: %s\n", e.what());

@@ -20,7 +20,7 @@ struct TypeInfo {
     const char* extension;
 };
 constexpr TypeInfo kTypes[] = {
-    {FileType::PNG, "png", ".png"},   {FileType::TGA, "targa", ".tga"},
+    {FileType::PNG, "png", ".png"},   {FileType::TGA, "targa", ".tga"}, {FileType::TGA_RLE, "targa", ".tga"},
     {FileType::PPM, "pnm", ".ppm"},   {FileType::EXR, "openexr", ".exr"},
     {FileType::HDR, "hdr", ".hdr"},   {FileType::JPEG, "jpeg", ".jpg"},
     {FileType::TIFF, "tiff", ".tif"}, {FileType::BMP, "bmp", ".bmp"},
@@ -32,19 +32,40 @@ const TypeInfo& info(FileType t) {
     return kTypes[0];
 }
 
+// Rounds to `bits` bits, then spreads the levels over the container's
+// range (a 5-bit level 14 in an 8-bit channel is 14*255/31 = 115).
 template <typename T>
-std::vector<T> quantize(const std::vector<float>& values, double maxValue) {
+std::vector<T> quantize(const std::vector<float>& values, int bits, double containerMax) {
+    const double levels = std::ldexp(1.0, bits) - 1.0;
     std::vector<T> out(values.size());
     for (size_t i = 0; i < values.size(); ++i) {
         const double v = std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
-        out[i] = static_cast<T>(std::floor(v * maxValue + 0.5));
+        const double q = std::floor(v * levels + 0.5);
+        out[i] = static_cast<T>(std::floor(q * containerMax / levels + 0.5));
     }
     return out;
 }
 
+bool hasDeepChannels(FileType t) { return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF; }
+
 }  // namespace
 
 const char* extensionFor(FileType type) { return info(type).extension; }
+
+fs::path temporaryPathFor(const fs::path& path) {
+    return path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
+}
+
+bool isTemporaryFor(const std::string& name, const std::string& target, long& pid) {
+    const std::string prefix = "." + target + ".";
+    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - 4, 4, ".tmp") != 0)
+        return false;
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    pid = std::stol(digits);
+    return true;
+}
 
 void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image) {
     const TypeInfo& ti = info(type);
@@ -52,23 +73,27 @@ void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image)
     if (!out) throw std::runtime_error(fmt::format("no image writer for {}: {}", ti.oiioFormat, OIIO::geterror()));
 
     const bool floatFile = type == FileType::EXR || type == FileType::HDR;
+    const int bits = std::clamp(image.bitDepth, 1, hasDeepChannels(type) ? 16 : 8);
+    const bool deep = bits > 8;
     const OIIO::TypeDesc format =
-        floatFile ? OIIO::TypeDesc::HALF : (image.bitDepth > 8 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+        floatFile ? OIIO::TypeDesc::HALF : (deep ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
     OIIO::ImageSpec spec(image.width, image.height, image.channels, format);
+    if (image.channels == 4) spec.alpha_channel = 3;
+    if (type == FileType::TGA_RLE) spec.attribute("compression", "rle");
+    if (type == FileType::TGA) spec.attribute("compression", "none");
 
     // Unique per process and target, in the same folder so rename is atomic.
-    const fs::path tmp = path.parent_path() /
-                         fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
+    const fs::path tmp = temporaryPathFor(path);
     if (!out->open(tmp.string(), spec))
         throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), out->geterror()));
     bool ok;
     if (floatFile) {
         ok = out->write_image(OIIO::TypeDesc::FLOAT, image.values.data());
-    } else if (image.bitDepth > 8) {
-        const auto q = quantize<uint16_t>(image.values, 65535.0);
+    } else if (deep) {
+        const auto q = quantize<uint16_t>(image.values, bits, 65535.0);
         ok = out->write_image(OIIO::TypeDesc::UINT16, q.data());
     } else {
-        const auto q = quantize<uint8_t>(image.values, 255.0);
+        const auto q = quantize<uint8_t>(image.values, bits, 255.0);
         ok = out->write_image(OIIO::TypeDesc::UINT8, q.data());
     }
     const std::string writeError = ok ? std::string() : out->geterror();

@@ -9,10 +9,13 @@
 
 namespace frameray::image {
 
-enum class FileType { PNG, TGA, PPM, EXR, HDR, JPEG, TIFF, BMP };
+enum class FileType { PNG, TGA, TGA_RLE, PPM, EXR, HDR, JPEG, TIFF, BMP };
 
 // File-space values in [0,1], `channels` floats per pixel, row-major from
-// the top, quantised to `bitDepth` bits (8 or 16) with round-to-nearest.
+// the top, quantised to `bitDepth` bits (1..16) with round-to-nearest, as
+// POV-Ray does: depths up to 8 are stored in 8-bit channels (a 5-bit value
+// v is written as v*255/31), deeper ones in 16-bit channels where the
+// format has them (PNG, PPM, TIFF) and as 8 bits elsewhere.
 struct EncodedImage {
     int width = 0;
     int height = 0;
@@ -22,6 +25,13 @@ struct EncodedImage {
 };
 
 const char* extensionFor(FileType type);
+
+// The temporary name writeAtomic uses for `path` in this process: in the
+// same folder (so the rename is atomic), hidden, tagged with the process id.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
+// True when `name` (a file name) is such a temporary file for a file
+// named `target`; sets `pid` to the process that wrote it.
+bool isTemporaryFor(const std::string& name, const std::string& target, long& pid);
 
 // Throws std::runtime_error with the path and reason on failure; the
 // destination is untouched then.

@@ -1,18 +1,21 @@
 // Every option frameray understands, defined once: its INI key, its
-// command-line switch, its type, default and help text, and how it sets
-// RenderOptions. The parser, `--help` and the README's option list are all
-// generated from this table.
+// command-line switch, its type, default and help text, how it sets
+// RenderOptions, how Create_Ini writes it back, and when its value needs a
+// feature frameray does not have yet. The parser, `--help`, the README's
+// option list, Create_Ini and the "not supported yet" check are all
+// driven by this table.
 #pragma once
 
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "options/render_options.h"
 
 namespace frameray::options {
 
-enum class OptionType { Bool, Int, Float, String, Path, PathList, Declare, FileType };
+enum class OptionType { Bool, Int, Float, String, Path, PathList, Declare, FileType, Command, Return, Window };
 
 // How a value reached the option: from an INI key (`Key=value`) or a
 // switch (`+Xvalue` / `-Xvalue`), where the sign matters for booleans.
@@ -31,6 +34,13 @@ struct OptionSpec {
     // Sets the option; throws std::invalid_argument with a reason when the
     // value is malformed.
     void (*apply)(RenderOptions&, const OptionInput&);
+    // The INI values Create_Ini writes for this key (several lines for
+    // accumulating options), already formatted as POV-Ray writes them.
+    std::vector<std::string> (*write)(const RenderOptions&);
+    // Non-null when the current value would change the output in a way
+    // frameray cannot render yet: a short description of the missing
+    // feature. Null function: always supported.
+    const char* (*unsupported)(const RenderOptions&) = nullptr;
 };
 
 std::span<const OptionSpec> optionTable();
@@ -45,5 +55,13 @@ std::string helpText();
 // The option table as a markdown table, for the README
 // (`frameray --options-markdown`).
 std::string optionsMarkdown();
+
+// The INI text Create_Ini writes: every option set by any source, one
+// `Key=Value` line each, in table order.
+std::string createIniText(const RenderOptions& options);
+
+// The first option whose value needs a feature not built yet, as
+// "Key (feature)"; empty when everything asked for is supported.
+std::string firstUnsupported(const RenderOptions& options);
 
 }  // namespace frameray::options

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "options/option_table.h"
@@ -21,15 +22,17 @@ std::string_view trim(std::string_view s) {
     return s.substr(first, last - first + 1);
 }
 
-bool endsWithIni(std::string_view name) {
-    if (name.size() < 4) return false;
-    std::string ext(name.substr(name.size() - 4));
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".ini";
+std::string lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
 }
+
+bool endsWithIni(std::string_view name) { return name.size() >= 4 && lower(name.substr(name.size() - 4)) == ".ini"; }
 
 struct Applier {
     RenderOptions& options;
+    std::vector<std::string> warnings;
     int depth = 0;
 
     void apply(const OptionSpec& spec, const OptionInput& input, const std::string& where,
@@ -39,6 +42,7 @@ struct Applier {
         } catch (const std::invalid_argument& e) {
             throw OptionError(fmt::format("{}: bad value for option '{}': {}", where, shownAs, e.what()));
         }
+        options.explicitlySet.emplace(spec.iniKey);
     }
 
     void applySwitch(std::string_view text, const std::string& where) {
@@ -55,10 +59,22 @@ struct Applier {
         apply(*spec, {trim(value), false, true}, where, trim(key));
     }
 
+    // An INI file named by an argument or an INI line: as given, else
+    // beside the INI that names it, else in the library path.
+    fs::path locateIni(const fs::path& name, const fs::path& base) const {
+        std::error_code ec;
+        if (name.is_absolute() || fs::exists(name, ec)) return name;
+        if (!base.empty() && fs::exists(base / name, ec)) return base / name;
+        for (const auto& dir : options.libraryPaths)
+            if (fs::exists(dir / name, ec)) return dir / name;
+        return name;
+    }
+
     // An argument or INI line that is neither a switch nor Key=Value: an
     // INI file (optionally with [Section]) or the scene file.
     void applyFileName(std::string_view text, const std::string& where, const fs::path& base) {
         std::string name(text), section;
+        if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
         if (!name.empty() && name.back() == ']') {
             const auto open = name.find('[');
             if (open != std::string::npos) {
@@ -68,12 +84,10 @@ struct Applier {
         }
         if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
         if (endsWithIni(name)) {
-            fs::path path(name);
-            if (path.is_relative() && !fs::exists(path) && !base.empty() && fs::exists(base / path))
-                path = base / path;
-            readIni(path, section, where);
+            readIni(locateIni(name, base), section, where);
         } else {
             options.inputFile = name;
+            options.explicitlySet.emplace("Input_File_Name");
         }
     }
 
@@ -91,6 +105,28 @@ struct Applier {
         applyFileName(token, where, base);
     }
 
+    // One INI line without its comment: `Key=Value` (the value runs to the
+    // end of the line, blanks included), or blank-separated switches, INI
+    // names and Key=Value words (`+kf0.1666 +kff20 +kc declare=fp=0`).
+    void applyIniLine(std::string_view text, const std::string& where, const fs::path& base) {
+        const bool startsWithSwitch = text[0] == '+' || text[0] == '-';
+        const auto eq = text.find('=');
+        const auto blank = text.find_first_of(" \t");
+        if (!startsWithSwitch && eq != std::string_view::npos) {
+            // "Key = Value": blanks may surround '='; the key has none.
+            const std::string_view key = trim(text.substr(0, eq));
+            if (key.find_first_of(" \t") == std::string_view::npos) {
+                applyKeyValue(key, text.substr(eq + 1), where);
+                return;
+            }
+        }
+        if (!startsWithSwitch && blank == std::string_view::npos) {
+            applyToken(text, where, base);
+            return;
+        }
+        for (const std::string& tok : splitOptionString(std::string(text))) applyToken(tok, where, base);
+    }
+
     void readIni(const fs::path& path, const std::string& section, const std::string& origin) {
         if (++depth > kMaxIniDepth)
             throw OptionError(fmt::format("{}: INI files nested more than {} deep", origin, kMaxIniDepth));
@@ -99,18 +135,18 @@ struct Applier {
         std::string line;
         int lineNo = 0;
         // Without a section, only lines before the first header apply; with
-        // one, only the lines under that header.
+        // one, only the lines under that header (names compare ignoring case).
         bool active = section.empty();
         bool sectionFound = section.empty();
         while (std::getline(in, line)) {
             ++lineNo;
             const std::string where = fmt::format("{}:{}", path.string(), lineNo);
             std::string_view text = trim(line);
-            if (text.empty() || text[0] == ';' || text[0] == '#') continue;
+            if (text.empty() || text[0] == ';') continue;
             if (text[0] == '[') {
                 const auto close = text.find(']');
                 const std::string_view name = close == std::string_view::npos ? text.substr(1) : text.substr(1, close - 1);
-                active = !section.empty() && trim(name) == trim(section);
+                active = !section.empty() && lower(trim(name)) == lower(trim(section));
                 sectionFound = sectionFound || active;
                 continue;
             }
@@ -124,38 +160,85 @@ struct Applier {
                     break;
                 }
             }
-            if (text[0] == '+' || text[0] == '-') {
-                // Several switches may share a line.
-                size_t pos = 0;
-                while (pos < text.size()) {
-                    const auto end = text.find_first_of(" \t", pos);
-                    const std::string_view tok = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
-                    applyToken(tok, where, path.parent_path());
-                    if (end == std::string_view::npos) break;
-                    pos = text.find_first_not_of(" \t", end);
-                    if (pos == std::string_view::npos) break;
-                }
-            } else {
-                applyToken(text, where, path.parent_path());
-            }
+            if (text.empty()) continue;
+            applyIniLine(text, where, path.parent_path());
         }
+        // POV-Ray renders without complaint when the section is missing;
+        // frameray says so.
         if (!sectionFound)
-            throw OptionError(fmt::format("{}: INI file '{}' has no section [{}]", origin, path.string(), section));
+            warnings.push_back(fmt::format("{}: INI file '{}' has no section [{}]; nothing read from it", origin,
+                                           path.string(), section));
         --depth;
     }
 };
 
 }  // namespace
 
-void applyArguments(RenderOptions& options, const std::vector<std::string>& args) {
-    Applier a{options};
-    for (const std::string& arg : args) a.applyToken(arg, "command line", fs::path());
+std::vector<std::string> splitOptionString(const std::string& text) {
+    std::vector<std::string> out;
+    std::string cur;
+    bool quoted = false, any = false;
+    for (char c : text) {
+        if (c == '"') {
+            quoted = !quoted;
+            cur += c;
+            any = true;
+        } else if ((c == ' ' || c == '\t' || c == '\n' || c == '\r') && !quoted) {
+            if (any) out.push_back(cur);
+            cur.clear();
+            any = false;
+        } else {
+            cur += c;
+            any = true;
+        }
+    }
+    if (any) out.push_back(cur);
+    return out;
 }
 
-void applyIniFile(RenderOptions& options, const fs::path& path, const std::string& section,
-                  const std::string& origin) {
-    Applier a{options};
+std::vector<std::string> applyArguments(RenderOptions& options, const std::vector<std::string>& args) {
+    Applier a{options, {}};
+    for (const std::string& arg : args) a.applyToken(arg, "command line", fs::path());
+    return a.warnings;
+}
+
+std::vector<std::string> applyIniFile(RenderOptions& options, const fs::path& path, const std::string& section,
+                                      const std::string& origin) {
+    Applier a{options, {}};
     a.readIni(path, section, origin);
+    return a.warnings;
+}
+
+StartupEnvironment processEnvironment() {
+    StartupEnvironment env;
+    env.getenv = [](const char* name) { return static_cast<const char*>(std::getenv(name)); };
+    std::error_code ec;
+    env.workingDir = fs::current_path(ec);
+    return env;
+}
+
+fs::path findStartupIni(const StartupEnvironment& env) {
+    std::vector<fs::path> candidates;
+    if (const char* povini = env.getenv("POVINI"); povini && *povini) candidates.emplace_back(povini);
+    candidates.push_back(env.workingDir / "povray.ini");
+    const char* home = env.getenv("HOME");
+    if (home && *home) candidates.push_back(fs::path(home) / ".povray" / "3.7" / "povray.ini");
+    candidates.push_back(env.systemIni);
+    if (home && *home) candidates.push_back(fs::path(home) / ".povrayrc");
+    std::error_code ec;
+    for (const auto& c : candidates)
+        if (fs::is_regular_file(c, ec)) return c;
+    return {};
+}
+
+std::vector<std::string> applyStartupOptions(RenderOptions& options, const StartupEnvironment& env) {
+    std::vector<std::string> warnings;
+    Applier a{options, {}};
+    if (const char* opt = env.getenv("POVRAYOPT"); opt && *opt)
+        for (const std::string& tok : splitOptionString(opt)) a.applyToken(tok, "POVRAYOPT", fs::path());
+    const fs::path ini = findStartupIni(env);
+    if (!ini.empty()) a.readIni(ini, "", "startup");
+    return a.warnings;
 }
 
 }  // namespace frameray::options

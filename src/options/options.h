@@ -1,8 +1,10 @@
-// Reads options from the command line and INI files, in the order given,
-// into RenderOptions. Errors name the option and where it came from.
+// Reads options from the command line, INI files, povray.ini and
+// POVRAYOPT, in POV-Ray's order, into RenderOptions. Errors name the
+// option and where it came from (file:line).
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,12 +20,37 @@ public:
 
 // Applies command-line arguments in order: switches (+X/-X), Key=Value
 // pairs, INI files (`file.ini` or `file.ini[Section]`) and the scene file.
-// Throws OptionError.
-void applyArguments(RenderOptions& options, const std::vector<std::string>& args);
+// Throws OptionError. Returns warnings (e.g. an INI section that does not
+// exist, which POV-Ray skips silently).
+std::vector<std::string> applyArguments(RenderOptions& options, const std::vector<std::string>& args);
 
 // Applies one INI file; `section` empty means the lines before the first
 // section header. `origin` names who asked for it, for messages.
-void applyIniFile(RenderOptions& options, const std::filesystem::path& path,
-                  const std::string& section, const std::string& origin);
+std::vector<std::string> applyIniFile(RenderOptions& options, const std::filesystem::path& path,
+                                      const std::string& section, const std::string& origin);
+
+// Splits an option string (POVRAYOPT, a line of switches) into arguments
+// at blanks outside double quotes.
+std::vector<std::string> splitOptionString(const std::string& text);
+
+// Where the startup options come from: an environment lookup (getenv by
+// default) and the working and home folders.
+struct StartupEnvironment {
+    std::function<const char*(const char*)> getenv;
+    std::filesystem::path workingDir;
+    std::filesystem::path systemIni = "/etc/povray/3.7/povray.ini";
+};
+StartupEnvironment processEnvironment();
+
+// The povray.ini POV-Ray 3.7 for Unix reads: the first that exists of
+// $POVINI, ./povray.ini, $HOME/.povray/3.7/povray.ini,
+// /etc/povray/3.7/povray.ini (then the pre-3.6 $HOME/.povrayrc).
+// Empty when there is none.
+std::filesystem::path findStartupIni(const StartupEnvironment& env);
+
+// Applies the startup sources that come before the command line:
+// POVRAYOPT (switches, as in POV-Ray 2.0 - povray 3.7 for Unix ignores it)
+// and then the povray.ini found above.
+std::vector<std::string> applyStartupOptions(RenderOptions& options, const StartupEnvironment& env);
 
 }  // namespace frameray::options

@@ -1,51 +1,99 @@
-// The typed, immutable result of all option sources (defaults, INI files,
-// switches): what a run renders and how.
+// The typed result of all option sources (defaults, povray.ini, POVRAYOPT,
+// INI files, switches): what a run renders and how. Defaults are POV-Ray
+// 3.7's.
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace frameray::options {
 
+// POV-Ray's text streams, in the order of their option names.
+enum class TextStream { Debug, Fatal, Render, Statistic, Warning, All };
+inline constexpr int kTextStreams = 6;
+
+struct StreamOptions {
+    bool console = true;
+    std::string file;  // empty: no file
+};
+
+// The moments POV-Ray shells out, in the order of their option names.
+enum class ShellHook { PreScene, PreFrame, PostFrame, PostScene, UserAbort, FatalError };
+inline constexpr int kShellHooks = 6;
+
+struct ShellCommand {
+    std::string command;  // empty: none
+    std::string action;   // the *_Return letters, e.g. "f" or "-s"
+};
+
 struct RenderOptions {
     // Input and output.
     std::string inputFile;
     std::string outputFile;        // empty: scene name in the working folder
     bool outputToFile = true;
-    char outputType = 'N';         // N P T C E H J B (seed 003 / POV-Ray 3.7)
-    int bitDepth = 8;
+    char outputType = 'N';         // N P T C E H J B
+    int bitDepth = 8;              // bits per colour channel (Bits_Per_Color, +FN16)
+    bool outputAlpha = false;
     double fileGamma = 0;          // <= 0: sRGB (POV-Ray 3.7's default)
     double displayGamma = 2.2;
+    std::string includeHeader;     // Include_Header (+HI)
 
-    // Image.
+    // Image and render window. Rows/columns as given: a value below 1
+    // (start) or up to 1 (end) is a fraction of the image, others are
+    // 1-based pixel numbers; 0 / -1 mean "not set".
     int width = 800;
     int height = 600;
+    double startRow = 0, endRow = -1, startColumn = 0, endColumn = -1;
 
-    // Animation.
+    // Animation. Frame options keep what was given; anim::planSequence
+    // applies POV-Ray's rules.
     double clock = 0;
     bool clockSet = false;
     int initialFrame = 1, finalFrame = 1;
+    bool initialFrameSet = false, finalFrameSet = false;
     double initialClock = 0, finalClock = 1;
     bool cyclicAnimation = false;
-    int subsetStartFrame = 0, subsetEndFrame = 0;  // 0: no subset
+    double subsetStartFrame = 0, subsetEndFrame = 0;  // fractions below 1, frame numbers otherwise
+    bool subsetStartSet = false, subsetEndSet = false;
+    int frameStep = 1;
+    bool fieldRender = false;
+    bool oddField = false;
 
-    // Quality.
+    // Tracing quality.
     bool antialias = false;
     double antialiasThreshold = 0.3;
+    int antialiasDepth = 3;
+    bool jitter = true;
+    double jitterAmount = 1.0;
+    int samplingMethod = 1;
     int quality = 9;
+    bool bounding = true;
+    int boundingThreshold = 3;
 
     // Parsing.
     double version = 3.7;
-    std::vector<std::filesystem::path> libraryPaths{"/usr/share/povray-3.7/include"};
+    std::vector<std::filesystem::path> libraryPaths;
     std::vector<std::pair<std::string, std::string>> declares;
 
     // Run.
+    bool continueTrace = false;
     int workThreads = 0;  // 0: every core
     bool verbose = true;
     bool display = false;
     bool pauseWhenDone = false;
+    bool testAbort = false;
+    int testAbortCount = 1;
+    std::string createIni;  // Create_Ini (+GI): write the effective options here
+
+    std::array<StreamOptions, kTextStreams> streams;
+    std::array<ShellCommand, kShellHooks> commands;
+
+    // INI keys set by any source so far, for Create_Ini.
+    std::set<std::string> explicitlySet;
 };
 
 }  // namespace frameray::options
