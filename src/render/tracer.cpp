@@ -32,7 +32,9 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
     const scene::Object& obj = *hit.object;
     const Vec3 p = ray.at(hit.t);
     const Vec3 viewDir = normalize(ray.direction);
-    Vec3 n = normalize(obj.transform.normal(obj.shape->normal(obj.transform.inversePoint(p))));
+    // The hit primitive (for CSG, the child whose surface was crossed)
+    // carries its complete transform and inherited texture.
+    Vec3 n = obj.normalAt(p);
     // Shade the side facing the viewer.
     if (dot(n, viewDir) > 0) n = -n;
 
@@ -49,7 +51,14 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
         const double dist = length(toLight);
         if (dist == 0) continue;
         toLight = toLight / dist;
-        const double cosIncidence = dot(n, toLight);
+        // A light behind the surface only reaches double_illuminate
+        // objects: their far side is lit as if it faced the light.
+        Vec3 ln = n;
+        double cosIncidence = dot(n, toLight);
+        if (cosIncidence <= 0 && obj.doubleIlluminate) {
+            ln = -n;
+            cosIncidence = -cosIncidence;
+        }
         if (cosIncidence <= 0) continue;
         if (!light.shadowless) {
             ++counts.shadow;
@@ -70,7 +79,7 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
         }
         if (fin.specular > 0) {
             const Vec3 halfway = normalize(toLight - viewDir);
-            const double c = dot(halfway, n);
+            const double c = dot(halfway, ln);
             if (c > 0) {
                 const RGB tint = fin.metallic ? pigment : RGB(1.0);
                 color += lightColor * tint * (fin.specular * std::pow(c, 1.0 / fin.roughness));

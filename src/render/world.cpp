@@ -30,7 +30,7 @@ float roundDown(double v) {
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
     const auto* obj = static_cast<const scene::Object*>(args->geometryUserPtr);
-    const scene::Bounds b = obj->worldBounds();
+    const scene::Bounds b = obj->surfaceBounds();
     // Pad by a relative margin so float traversal can never miss a surface
     // the double-precision test would find.
     const Vec3 pad = (b.hi - b.lo) * 1e-6 + Vec3(1e-30);
@@ -48,13 +48,13 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     const auto* obj = static_cast<const scene::Object*>(args->geometryUserPtr);
-    if (obj->noImage) return;  // only camera rays use intersect() so far
-    double t;
-    if (!intersectObject(*obj, *ctx->ray, ctx->tMin, ctx->tMax, t)) return;
-    ctx->tMax = t;
-    ctx->hitObject = obj;
+    // Only camera rays use intersect() so far.
+    scene::SurfaceHit h;
+    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Camera, h)) return;
+    ctx->tMax = h.t;
+    ctx->hitObject = h.primitive;
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
-    RTCRayN_tfar(ray, args->N, 0) = roundUp(t);
+    RTCRayN_tfar(ray, args->N, 0) = roundUp(h.t);
     RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
     RTCHitN_geomID(hit, args->N, 0) = args->geomID;
     RTCHitN_primID(hit, args->N, 0) = args->primID;
@@ -64,10 +64,9 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     const auto* obj = static_cast<const scene::Object*>(args->geometryUserPtr);
-    if (obj->noShadow) return;
-    double t;
-    if (!intersectObject(*obj, *ctx->ray, ctx->tMin, ctx->tMax, t)) return;
-    ctx->hitObject = obj;
+    scene::SurfaceHit h;
+    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
+    ctx->hitObject = h.primitive;
     // Embree's convention for "occluded".
     RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
 }
@@ -90,14 +89,6 @@ RTCRay toEmbreeRay(const scene::Ray& ray, double tMax) {
 
 }  // namespace
 
-bool intersectObject(const scene::Object& obj, const scene::Ray& worldRay, double tMin, double tMax,
-                     double& t) {
-    // Object space without renormalising keeps t comparable across objects.
-    const scene::Ray local{obj.transform.inversePoint(worldRay.origin),
-                           obj.transform.inverseDirection(worldRay.direction)};
-    return obj.shape->firstHit(local, tMin, tMax, t);
-}
-
 World::World(const scene::Scene& scene) : scene_(scene) {
     device_ = rtcNewDevice("verbose=0");
     if (!device_) throw std::runtime_error("Embree: cannot create a device");
@@ -105,7 +96,9 @@ World::World(const scene::Scene& scene) : scene_(scene) {
     rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
     for (const auto& obj : scene.objects) {
         if (obj->noImage && obj->noShadow) continue;  // invisible to every ray kind we trace
-        if (!obj->worldBounds().isFinite()) {
+        const scene::Bounds bounds = obj->surfaceBounds();
+        if (bounds.isEmpty()) continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
+        if (!bounds.isFinite()) {
             unbounded_.push_back(obj.get());
             continue;
         }
@@ -142,10 +135,10 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit)
         rtcIntersect1(bvh_, &ctx.embree, &rh);
     }
     for (const scene::Object* obj : unbounded_) {
-        double t;
-        if (!obj->noImage && intersectObject(*obj, ray, tMin, ctx.tMax, t)) {
-            ctx.tMax = t;
-            ctx.hitObject = obj;
+        scene::SurfaceHit h;
+        if (obj->firstHit(ray, tMin, ctx.tMax, scene::RayKind::Camera, h)) {
+            ctx.tMax = h.t;
+            ctx.hitObject = h.primitive;
         }
     }
     if (!ctx.hitObject) return false;
@@ -156,8 +149,8 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit)
 
 bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
     for (const scene::Object* obj : unbounded_) {
-        double t;
-        if (!obj->noShadow && intersectObject(*obj, ray, tMin, tMax, t)) return true;
+        scene::SurfaceHit h;
+        if (obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) return true;
     }
     if (!hasBounded_) return false;
     TraceContext ctx;

@@ -12,6 +12,9 @@
 
 namespace frameray::render {
 
+// The closest surface a ray meets: its distance parameter and the
+// primitive hit (for a CSG object, the child whose surface it is; its
+// transform gives the normal and its texture the colour).
 struct Hit {
     double t = scene::kInfinity;
     const scene::Object* object = nullptr;
@@ -39,8 +42,5 @@ private:
     bool hasBounded_ = false;
 };
 
-// First hit of one object, in world space (object transform applied).
-bool intersectObject(const scene::Object& obj, const scene::Ray& worldRay, double tMin, double tMax,
-                     double& t);
 
 }  // namespace frameray::render

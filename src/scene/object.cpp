@@ -1,17 +1,207 @@
 #include "scene/object.h"
 
+#include <algorithm>
+
+#include "scene/csg.h"
+
 namespace frameray::scene {
 
-Bounds Object::worldBounds() const {
-    const Bounds b = shape->bounds();
-    if (!b.isFinite()) return Bounds::infinite();
-    Bounds out;
-    for (int i = 0; i < 8; ++i) {
-        const Vec3 corner{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y,
-                          (i & 4) ? b.hi.z : b.lo.z};
-        out.extend(transform.point(corner));
+namespace {
+
+// Per-thread scratch vectors for hit lists, handed out as a stack so that
+// nested queries (a bounding object tested inside a CSG child's query)
+// never share one. Keeps the ray callbacks free of allocations once warm.
+class ScratchHits {
+public:
+    ScratchHits() : hits_(acquire()) {}
+    ~ScratchHits() { --depth(); }
+    ScratchHits(const ScratchHits&) = delete;
+    ScratchHits& operator=(const ScratchHits&) = delete;
+    std::vector<SurfaceHit>& get() { return hits_; }
+
+private:
+    static std::vector<std::unique_ptr<std::vector<SurfaceHit>>>& pool() {
+        thread_local std::vector<std::unique_ptr<std::vector<SurfaceHit>>> p;
+        return p;
     }
-    return out;
+    static size_t& depth() {
+        thread_local size_t d = 0;
+        return d;
+    }
+    static std::vector<SurfaceHit>& acquire() {
+        auto& p = pool();
+        size_t& d = depth();
+        if (d == p.size()) p.push_back(std::make_unique<std::vector<SurfaceHit>>());
+        auto& v = *p[d++];
+        v.clear();
+        return v;
+    }
+
+    std::vector<SurfaceHit>& hits_;
+};
+
+bool visibleTo(const Object& primitive, RayKind kind) {
+    switch (kind) {
+        case RayKind::Camera: return !primitive.noImage;
+        case RayKind::Shadow: return !primitive.noShadow;
+        case RayKind::Any: return true;
+    }
+    return true;
+}
+
+std::shared_ptr<const Object> transformedCopy(const ObjectRef& obj, const Transform& t) {
+    auto copy = std::make_shared<Object>(*obj);
+    copy->transformBy(t);
+    return copy;
+}
+
+Bounds intersectAll(Bounds b, const std::vector<ObjectRef>& objects, Bounds (Object::*bounds)() const) {
+    for (const ObjectRef& o : objects) b = b.intersected(((*o).*bounds)());
+    return b;
+}
+
+}  // namespace
+
+void Object::transformBy(const Transform& t) {
+    if (shape) transform = transform.then(t);
+    for (ObjectRef& child : children) child = transformedCopy(child, t);
+    for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
+    for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
+    if (texture) {
+        auto moved = std::make_shared<Texture>(*texture);
+        moved->transform = moved->transform.then(t);
+        texture = moved;
+    }
+}
+
+// --- ray queries ------------------------------------------------------------
+
+namespace {
+
+// bounded_by: a ray that misses a bounding object and does not start
+// inside it cannot see the object (povray's test, which is why an
+// undersized bound cuts parts of the object away).
+bool passesBoundedBy(const Object& obj, const Ray& ray, double tMin) {
+    for (const ObjectRef& bound : obj.boundedBy) {
+        SurfaceHit ignored;
+        if (!bound->firstHit(ray, tMin, kInfinity, RayKind::Any, ignored) && !bound->inside(ray.origin))
+            return false;
+    }
+    return true;
+}
+
+bool insideAllClips(const Object& obj, const Vec3& p) {
+    return std::all_of(obj.clippedBy.begin(), obj.clippedBy.end(), [&](const ObjectRef& c) { return c->inside(p); });
+}
+
+}  // namespace
+
+void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind, std::vector<SurfaceHit>& hits) const {
+    // povray cuts an object at an undersized bound for what the camera
+    // sees but not for the shadow it casts.
+    if (kind != RayKind::Shadow && !boundedBy.empty() && !passesBoundedBy(*this, ray, tMin)) return;
+    const size_t from = hits.size();
+    if (shape) {
+        thread_local std::vector<double> ts;  // the shape call below never recurses
+        ts.clear();
+        // Object space without renormalising keeps t the same in every space.
+        const Ray local{transform.inversePoint(ray.origin), transform.inverseDirection(ray.direction)};
+        shape->allHits(local, tMin, tMax, ts);
+        for (const double t : ts) hits.push_back({t, this});
+    } else {
+        csg::allHits(*this, ray, tMin, tMax, kind, hits);
+    }
+    if (clippedBy.empty()) return;
+    size_t kept = from;
+    for (size_t r = from; r < hits.size(); ++r)
+        if (insideAllClips(*this, ray.at(hits[r].t))) hits[kept++] = hits[r];
+    hits.resize(kept);
+}
+
+bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, SurfaceHit& hit) const {
+    const bool plain = clippedBy.empty() && boundedBy.empty();
+    if (shape && plain) {
+        if (!visibleTo(*this, kind)) return false;
+        const Ray local{transform.inversePoint(ray.origin), transform.inverseDirection(ray.direction)};
+        double t;
+        if (!shape->firstHit(local, tMin, tMax, t)) return false;
+        hit = {t, this};
+        return true;
+    }
+    if (!shape && plain && op == CsgOp::Union) {
+        // The nearest child hit; no inside tests needed.
+        bool found = false;
+        for (const ObjectRef& child : children) {
+            SurfaceHit h;
+            if (child->firstHit(ray, tMin, tMax, kind, h)) {
+                hit = h;
+                tMax = h.t;
+                found = true;
+            }
+        }
+        return found;
+    }
+    ScratchHits scratch;
+    std::vector<SurfaceHit>& hits = scratch.get();
+    allHits(ray, tMin, tMax, kind, hits);
+    for (const SurfaceHit& h : hits) {
+        if (visibleTo(*h.primitive, kind)) {
+            hit = h;
+            return true;
+        }
+    }
+    return false;
+}
+
+// --- inside -----------------------------------------------------------------
+
+bool Object::isPatch() const { return shape && shape->isPatch(); }
+
+namespace {
+
+
+// The inside test with the object inverted `inverted` times more than
+// its own inverse flag says.
+bool insideAs(const Object& obj, const Vec3& p, bool inverted) {
+    if (obj.isPatch()) return false;
+    const bool inverse = obj.inverse != inverted;
+    const bool raw = obj.shape ? obj.shape->inside(obj.transform.inversePoint(p)) : csg::inside(obj, p);
+    const bool in = raw != inverse;
+    // Inverting does not invert the clips (povray: difference { box
+    // sphere clipped_by { plane } } removes the box beyond the plane).
+    return in && insideAllClips(obj, p);
+}
+
+}  // namespace
+
+bool Object::inside(const Vec3& p) const { return insideAs(*this, p, false); }
+
+bool Object::insideInverted(const Vec3& p) const { return insideAs(*this, p, true); }
+
+Vec3 Object::normalAt(const Vec3& p) const {
+    return normalize(transform.normal(shape->normal(transform.inversePoint(p))));
+}
+
+// --- bounds -----------------------------------------------------------------
+
+Bounds Object::surfaceBounds() const {
+    // bounded_by plays no part: shadow rays see the whole object.
+    const Bounds raw = shape ? shape->bounds().transformed(transform) : csg::surfaceBounds(*this);
+    return intersectAll(raw, clippedBy, &Object::insideBounds);
+}
+
+Bounds Object::insideBounds() const {
+    if (isPatch()) return {};
+    Bounds raw = Bounds::infinite();
+    if (!inverse) raw = shape ? shape->insideBounds().transformed(transform) : csg::insideBounds(*this);
+    return intersectAll(raw, clippedBy, &Object::insideBounds);
+}
+
+Bounds Object::insideInvertedBounds() const {
+    if (isPatch()) return {};
+    Bounds raw = Bounds::infinite();
+    if (inverse) raw = shape ? shape->insideBounds().transformed(transform) : csg::insideBounds(*this);
+    return intersectAll(raw, clippedBy, &Object::insideBounds);
 }
 
 }  // namespace frameray::scene

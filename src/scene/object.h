@@ -1,24 +1,99 @@
-// A scene object: a shape placed by a transform, with its texture and the
-// object modifiers (seed 003 §5.3).
+// A scene object (seed 003 §5.2-5.3): either a primitive — a shape placed
+// by a transform — or a CSG node combining child objects; either kind with
+// its texture and the object modifiers (inverse, clipped_by, bounded_by,
+// no_shadow, ...).
+//
+// Transforms are pushed down to the primitives when applied (transformBy),
+// as povray does, so every primitive carries its complete object-to-world
+// transform and a hit on it can be shaded from the primitive alone. All
+// queries below take and return world-space values.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "scene/shapes.h"
 #include "scene/texture.h"
 
 namespace frameray::scene {
 
+struct Object;
+using ObjectRef = std::shared_ptr<const Object>;
+
+// How a CSG node combines its children (scene/csg.h implements it).
+enum class CsgOp { Union, Merge, Intersection, Difference };
+
+// Which object flags hide a surface from a kind of ray.
+enum class RayKind {
+    Camera,  // skips no_image surfaces
+    Shadow,  // skips no_shadow surfaces
+    Any,     // sees everything (bounding tests)
+};
+
+// A crossing of an object's surface: the ray parameter and the primitive
+// whose surface it is (the one to shade: its normal, its texture).
+struct SurfaceHit {
+    double t = kInfinity;
+    const Object* primitive = nullptr;
+};
+
 struct Object {
+    // A primitive when `shape` is set, else a CSG node over `children`.
     std::shared_ptr<const Shape> shape;
-    Transform transform;  // object space -> world space
-    std::shared_ptr<const Texture> texture;  // null: the default texture
+    Transform transform;  // primitives: object space -> world space
+    CsgOp op = CsgOp::Union;
+    std::vector<ObjectRef> children;
+
+    // Null: the nearest ancestor's texture, finally the default texture
+    // (resolved once the object is placed in the scene, see csg.h).
+    std::shared_ptr<const Texture> texture;
+    bool inverse = false;
+    // Only the parts of the surface inside every clipping object remain.
+    std::vector<ObjectRef> clippedBy;
+    // A camera ray that neither hits every bounding object nor starts
+    // inside it skips this object (povray; shadow rays ignore the bound).
+    std::vector<ObjectRef> boundedBy;
     bool noShadow = false;
     bool noImage = false;
     bool noReflection = false;
+    bool doubleIlluminate = false;  // lights reach the side facing away from them
 
-    // World-space bounds (conservative), infinite when the shape is unbounded.
-    Bounds worldBounds() const;
+    bool isCsg() const { return !shape; }
+
+    // Applies `t` after everything so far: to the primitive's transform or
+    // to every child, to the clipping and bounding objects and to the
+    // textures already attached (a transform after a texture moves it).
+    // Shared children are copied, never modified.
+    void transformBy(const Transform& t);
+
+    // First surface crossing in (tMin, tMax) that `kind` rays see.
+    bool firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, SurfaceHit& hit) const;
+    // Every surface crossing in (tMin, tMax), appended to `hits` in
+    // increasing t (the caller's vector is used as scratch beyond its end).
+    // `kind` only decides whether bounded_by applies (not to shadow rays);
+    // the flags are firstHit's to check.
+    void allHits(const Ray& ray, double tMin, double tMax, RayKind kind, std::vector<SurfaceHit>& hits) const;
+    // povray's inside test: the object's own region (toggled by inverse,
+    // except for patches, which enclose nothing) within every clip.
+    bool inside(const Vec3& p) const;
+    // As inside(), for this object used inverted (a subtracted operand of
+    // a difference).
+    bool insideInverted(const Vec3& p) const;
+    // Unit normal of a primitive's surface at a world point on it.
+    Vec3 normalAt(const Vec3& p) const;
+
+    // Conservative world bounds of what a ray can hit, and of where
+    // inside() can be true. Empty when there is nothing; infinite when
+    // unbounded.
+    Bounds surfaceBounds() const;
+    Bounds insideBounds() const;
+    // The bounding box the SDL reports (min_extent, max_extent).
+    Bounds worldBounds() const { return surfaceBounds(); }
+    // Bounds of insideInverted(): infinite, or empty for patches.
+    Bounds insideInvertedBounds() const;
+    // Whether nothing can ever be inside, inverted or not (patches, and
+    // CSG built from them only in ways that keep this).
+    bool isPatch() const;
 };
 
 }  // namespace frameray::scene

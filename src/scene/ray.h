@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include "util/matrix.h"
 #include "util/vec3.h"
 
 namespace frameray::scene {
@@ -27,6 +28,13 @@ struct Bounds {
     bool isEmpty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
     bool isFinite() const;
     void extend(const Vec3& p) { lo = vmin(lo, p); hi = vmax(hi, p); }
+    void extend(const Bounds& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
+    // The common part; empty when the two do not overlap.
+    Bounds intersected(const Bounds& b) const { return {vmax(lo, b.lo), vmin(hi, b.hi)}; }
+    // Conservative bounds of this box's image under `t`: the box around
+    // its eight transformed corners. Empty stays empty; a box that is
+    // infinite along any axis becomes infinite along all of them.
+    Bounds transformed(const Transform& t) const;
 };
 
 }  // namespace frameray::scene

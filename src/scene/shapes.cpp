@@ -4,11 +4,6 @@
 
 namespace frameray::scene {
 
-bool Bounds::isFinite() const {
-    return std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(lo.z) &&
-           std::isfinite(hi.x) && std::isfinite(hi.y) && std::isfinite(hi.z);
-}
-
 bool Shape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
     std::vector<double> ts;
     allHits(ray, tMin, tMax, ts);
@@ -91,6 +86,22 @@ bool Plane::firstHit(const Ray& ray, double tMin, double tMax, double& t) const 
     return t > tMin && t < tMax;
 }
 
+Bounds Plane::insideBounds() const {
+    int axis = -1, nonZero = 0;
+    for (int i = 0; i < 3; ++i)
+        if (normal_[i] != 0) {
+            axis = i;
+            ++nonZero;
+        }
+    Bounds b = Bounds::infinite();
+    if (nonZero != 1) return b;
+    // normal_[axis] is +1 or -1 here.
+    const double limit = (distance_ + kInsideMargin) / normal_[axis];
+    if (normal_[axis] > 0) b.hi[axis] = limit;
+    else b.lo[axis] = limit;
+    return b;
+}
+
 void Plane::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
     double t;
     if (firstHit(ray, tMin, tMax, t)) ts.push_back(t);
@@ -134,7 +145,9 @@ Vec3 Box::normal(const Vec3& p) const {
 }
 
 bool Box::inside(const Vec3& p) const {
-    return p.x > lo_.x && p.x < hi_.x && p.y > lo_.y && p.y < hi_.y && p.z > lo_.z && p.z < hi_.z;
+    // Faces count as inside (povray: intersecting two boxes that share a
+    // face leaves that face visible).
+    return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z && p.z <= hi_.z;
 }
 
 }  // namespace frameray::scene

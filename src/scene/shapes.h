@@ -23,10 +23,27 @@ public:
     virtual bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const;
     // Outward unit normal at a point on the surface.
     virtual Vec3 normal(const Vec3& p) const = 0;
-    // Strictly inside (POV-Ray's inside test, used by CSG and `inside()`).
+    // POV-Ray's inside test, used by CSG and clipped_by. How a point ON the
+    // surface counts differs per shape, as in povray 3.7 (measured with
+    // coincident CSG surfaces): boxes include their faces, planes a 1e-10
+    // margin, cylinders and cones exclude a 1e-10 margin, the rest compare
+    // exactly. This decides which of two coincident faces survives.
     virtual bool inside(const Vec3& p) const = 0;
-    // Object-space bounds; Bounds::infinite() for unbounded shapes.
+    // Patch shapes (triangles) enclose nothing: their inside test is false
+    // whether or not they are inverted (povray: "Patch objects not allowed
+    // in intersection", and difference { sphere triangle } keeps no sphere).
+    virtual bool isPatch() const { return false; }
+    // Object-space bounds of the surface; Bounds::infinite() for unbounded
+    // shapes.
     virtual Bounds bounds() const = 0;
+    // Object-space bounds of the region where inside() can be true; the
+    // surface bounds unless the inside reaches further (a disc's inside is
+    // a half-space) or is empty (patches).
+    virtual Bounds insideBounds() const { return bounds(); }
+    // Whether inside() holds beyond bounds() (a disc's half-space). povray
+    // skips a CSG intersection along rays that miss the common part of its
+    // operands' bounding boxes, which only shows with such shapes.
+    virtual bool insideReachesPastBounds() const { return false; }
     virtual const char* name() const = 0;
 };
 
@@ -52,11 +69,16 @@ public:
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
     bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
     Vec3 normal(const Vec3&) const override { return normal_; }
-    bool inside(const Vec3& p) const override { return dot(p, normal_) < distance_; }
+    bool inside(const Vec3& p) const override { return dot(p, normal_) - distance_ < kInsideMargin; }
     Bounds bounds() const override { return Bounds::infinite(); }
+    // A half-space along an axis is bounded on one side (clipped_by
+    // { plane { y, 0 } } bounds the clipped object from above).
+    Bounds insideBounds() const override;
     const char* name() const override { return "plane"; }
 
 private:
+    // povray keeps points up to 1e-10 beyond the plane inside.
+    static constexpr double kInsideMargin = 1e-10;
     Vec3 normal_;      // unit length
     double distance_;  // along normal_, scaled with it
 };

@@ -646,8 +646,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             auto a = parseArguments(2, 2, fn);
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
             if (!obj) fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
-            const scene::Object& o = **obj;
-            return double(o.shape->inside(o.transform.inversePoint(vec(a[1]))));
+            return double((*obj)->inside(vec(a[1])));
         }
         case Keyword::kw_datetime: {
             // Days since 2000-01-01 00:00 UTC, formatted by strftime (default

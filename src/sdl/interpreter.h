@@ -189,6 +189,12 @@ private:
     bool isObjectStart(const Token& t) const;
     ObjectPtr parseObject();       // sphere { }, box { }, object { }...
     bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
+    std::shared_ptr<const scene::Shape> parseShape(const Token& kind);  // after '{'
+    void parseCsgChildren(const Token& kind, scene::Object& csg);     // union/merge/... objects
+    // clipped_by { objects } / bounded_by { objects }, or the other list
+    // when the block names `alternative`.
+    std::vector<scene::ObjectRef> parseObjectList(const Token& modifier, Keyword alternative,
+                                                  const std::vector<scene::ObjectRef>& alternativeList);
     bool parseTransformation(Transform& transform);
     Transform parseTransformBlock();
     scene::Camera parseCamera();

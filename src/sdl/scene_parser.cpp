@@ -5,6 +5,10 @@
 
 #include <fmt/format.h>
 
+#include "scene/csg.h"
+#include "scene/flat_shapes.h"
+#include "scene/quadric.h"
+#include "scene/revolved_shapes.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
@@ -19,13 +23,13 @@ struct ObjectKeyword {
 constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_sphere, true},         {Keyword::kw_box, true},
     {Keyword::kw_plane, true},          {Keyword::kw_object, true},
-    {Keyword::kw_cylinder, false},      {Keyword::kw_cone, false},
-    {Keyword::kw_torus, false},         {Keyword::kw_disc, false},
-    {Keyword::kw_triangle, false},      {Keyword::kw_smooth_triangle, false},
-    {Keyword::kw_quadric, false},       {Keyword::kw_quartic, false},
+    {Keyword::kw_cylinder, true},       {Keyword::kw_cone, true},
+    {Keyword::kw_torus, false},         {Keyword::kw_disc, true},
+    {Keyword::kw_triangle, true},       {Keyword::kw_smooth_triangle, true},
+    {Keyword::kw_quadric, true},        {Keyword::kw_quartic, false},
     {Keyword::kw_cubic, false},         {Keyword::kw_poly, false},
-    {Keyword::kw_union, false},         {Keyword::kw_merge, false},
-    {Keyword::kw_intersection, false},  {Keyword::kw_difference, false},
+    {Keyword::kw_union, true},          {Keyword::kw_merge, true},
+    {Keyword::kw_intersection, true},   {Keyword::kw_difference, true},
     {Keyword::kw_blob, false},          {Keyword::kw_lathe, false},
     {Keyword::kw_sor, false},           {Keyword::kw_prism, false},
     {Keyword::kw_superellipsoid, false}, {Keyword::kw_sphere_sweep, false},
@@ -52,7 +56,8 @@ bool Interpreter::parseStatement() {
     const Token t = peek();
     if (t.kind == TokenKind::End) return false;
     if (isObjectStart(t)) {
-        scene_.objects.push_back(parseObject());
+        // Placing the object settles what its CSG children inherit.
+        scene_.objects.push_back(scene::csg::resolveInheritance(parseObject()));
         return true;
     }
     switch (t.kw) {
@@ -82,28 +87,10 @@ ObjectPtr Interpreter::parseObject() {
     expect(Sym::LBrace, fmt::format("'{{' after '{}'", kind.text).c_str());
 
     auto obj = std::make_shared<scene::Object>();
+    // The texture being built by this object's modifiers; it becomes
+    // obj->texture when the object is closed.
     std::optional<scene::Texture> texture;
     switch (kind.kw) {
-        case Keyword::kw_sphere: {
-            const Vec3 c = parseVec3();
-            expect(Sym::Comma, "',' between the centre and the radius");
-            obj->shape = std::make_shared<scene::Sphere>(c, parseFloat());
-            break;
-        }
-        case Keyword::kw_box: {
-            const Vec3 a = parseVec3();
-            expect(Sym::Comma, "',' between the corners");
-            obj->shape = std::make_shared<scene::Box>(a, parseVec3());
-            break;
-        }
-        case Keyword::kw_plane: {
-            const Token at = peek();
-            const Vec3 n = parseVec3();
-            if (length(n) == 0) fail(at, "the normal of a plane must not be zero");
-            expect(Sym::Comma, "',' between the normal and the distance");
-            obj->shape = std::make_shared<scene::Plane>(n, parseFloat());
-            break;
-        }
         case Keyword::kw_object: {
             const Token id = next();
             if (!id.isIdentifier()) fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
@@ -112,15 +99,25 @@ ObjectPtr Interpreter::parseObject() {
             if (!src) fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
             *obj = **src;
             if (obj->texture) texture = *obj->texture;
+            obj->texture.reset();
             break;
         }
-        default: unsupported(kind, std::string(kind.text));
+        case Keyword::kw_union: case Keyword::kw_merge: case Keyword::kw_intersection:
+        case Keyword::kw_difference:
+            parseCsgChildren(kind, *obj);
+            break;
+        default: obj->shape = parseShape(kind); break;
     }
 
     for (;;) {
         if (accept(Sym::RBrace)) break;
         if (!parseObjectModifier(*obj, texture)) {
             const Token t = peek();
+            // povray reads a CSG's objects before its modifiers.
+            if (obj->isCsg() && isObjectStart(t))
+                fail(t, fmt::format("No matching }} in '{}', {} found instead: a CSG's objects come before "
+                                    "its modifiers",
+                                    kind.text, t.text));
             if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                 unsupported(t, fmt::format("'{}' in {}", t.text, kind.text));
             fail(t, fmt::format("expected an object modifier or '}}', found {}", describeToken(t)));
@@ -130,10 +127,142 @@ ObjectPtr Interpreter::parseObject() {
     return obj;
 }
 
+void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
+    switch (kind.kw) {
+        case Keyword::kw_merge: csg.op = scene::CsgOp::Merge; break;
+        case Keyword::kw_intersection: csg.op = scene::CsgOp::Intersection; break;
+        case Keyword::kw_difference: csg.op = scene::CsgOp::Difference; break;
+        default: csg.op = scene::CsgOp::Union; break;
+    }
+    while (isObjectStart(peek())) {
+        const Token at = peek();
+        csg.children.push_back(parseObject());
+        // povray's warning (its wording, for difference too); the triangle
+        // still takes part, enclosing nothing.
+        if (csg.op != scene::CsgOp::Union && csg.op != scene::CsgOp::Merge && csg.children.back()->isPatch())
+            warn(at, "Patch objects not allowed in intersection.");
+    }
+    if (csg.children.size() < 2) warn(kind, "Should have at least 2 objects in csg.");
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
+    // Reads "<first>, <second>" style arguments with povray's commas.
+    auto comma = [&](const char* what) { expect(Sym::Comma, what); };
+    // `open` follows a cylinder's or cone's numbers, before any modifier.
+    auto parseOpen = [&]() { return accept(Keyword::kw_open); };
+    switch (kind.kw) {
+        case Keyword::kw_sphere: {
+            const Vec3 c = parseVec3();
+            comma("',' between the centre and the radius");
+            return std::make_shared<scene::Sphere>(c, parseFloat());
+        }
+        case Keyword::kw_box: {
+            const Vec3 a = parseVec3();
+            comma("',' between the corners");
+            return std::make_shared<scene::Box>(a, parseVec3());
+        }
+        case Keyword::kw_plane: {
+            const Token at = peek();
+            const Vec3 n = parseVec3();
+            if (length(n) == 0) fail(at, "the normal of a plane must not be zero");
+            comma("',' between the normal and the distance");
+            return std::make_shared<scene::Plane>(n, parseFloat());
+        }
+        case Keyword::kw_cylinder: {
+            const Vec3 base = parseVec3();
+            comma("',' between the base and the cap");
+            const Vec3 cap = parseVec3();
+            comma("',' between the cap and the radius");
+            const double r = parseFloat();
+            if (base.x == cap.x && base.y == cap.y && base.z == cap.z)
+                fail(kind, "Degenerate cylinder, base point = apex point.");
+            return std::make_shared<scene::Cylinder>(base, cap, std::fabs(r), parseOpen());
+        }
+        case Keyword::kw_cone: {
+            const Vec3 base = parseVec3();
+            comma("',' between the base point and its radius");
+            const double r1 = parseFloat();
+            comma("',' between the base radius and the cap point");
+            const Vec3 cap = parseVec3();
+            comma("',' between the cap point and its radius");
+            const double r2 = parseFloat();
+            if (base.x == cap.x && base.y == cap.y && base.z == cap.z) fail(kind, "Degenerate cone/cylinder.");
+            const bool open = parseOpen();
+            if (r1 == r2) return std::make_shared<scene::Cylinder>(base, cap, std::fabs(r1), open);
+            return std::make_shared<scene::Cone>(base, std::fabs(r1), cap, std::fabs(r2), open);
+        }
+        case Keyword::kw_disc: {
+            const Vec3 center = parseVec3();
+            comma("',' between the centre and the normal");
+            const Token at = peek();
+            const Vec3 n = parseVec3();
+            if (length(n) == 0) fail(at, "the normal of a disc must not be zero");
+            comma("',' between the normal and the radius");
+            const double r = parseFloat();
+            double hole = 0;
+            if (accept(Sym::Comma)) hole = parseFloat();
+            return std::make_shared<scene::Disc>(center, n, r, hole);
+        }
+        case Keyword::kw_triangle: {
+            Vec3 v[3];
+            for (int i = 0; i < 3; ++i) {
+                if (i) comma("',' between the corners");
+                v[i] = parseVec3();
+            }
+            auto tri = std::make_shared<scene::Triangle>(v[0], v[1], v[2]);
+            if (tri->isDegenerate()) warn(kind, "Degenerate triangle. Please remove.");
+            return tri;
+        }
+        case Keyword::kw_smooth_triangle: {
+            Vec3 v[3], n[3];
+            for (int i = 0; i < 3; ++i) {
+                if (i) comma("',' between the corners");
+                v[i] = parseVec3();
+                comma("',' between a corner and its normal");
+                n[i] = parseVec3();
+            }
+            auto tri = std::make_shared<scene::SmoothTriangle>(v[0], n[0], v[1], n[1], v[2], n[2]);
+            if (tri->isDegenerate()) warn(kind, "Degenerate triangle. Please remove.");
+            return tri;
+        }
+        case Keyword::kw_quadric: {
+            const Vec3 sq = parseVec3();
+            comma("',' after the square terms <A,B,C>");
+            const Vec3 mixed = parseVec3();
+            comma("',' after the mixed terms <D,E,F>");
+            const Vec3 lin = parseVec3();
+            comma("',' after the linear terms <G,H,I>");
+            const double j = parseFloat();
+            return std::make_shared<scene::Quadric>(
+                scene::Quadric::Coefficients{sq.x, sq.y, sq.z, mixed.x, mixed.y, mixed.z, lin.x, lin.y, lin.z, j});
+        }
+        default: unsupported(kind, std::string(kind.text));
+    }
+}
+
 void Interpreter::addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const {
-    obj.transform = obj.transform.then(t);
+    obj.transformBy(t);
     // A transformation after the texture moves the texture too (seed 003 B.3).
     if (texture) texture->transform = texture->transform.then(t);
+}
+
+std::vector<scene::ObjectRef> Interpreter::parseObjectList(const Token& modifier, Keyword alternative,
+                                                           const std::vector<scene::ObjectRef>& alternativeList) {
+    expect(Sym::LBrace, fmt::format("'{{' after '{}'", modifier.text).c_str());
+    // clipped_by { bounded_by } and bounded_by { clipped_by } reuse the
+    // other list.
+    if (accept(alternative)) {
+        expect(Sym::RBrace, fmt::format("'}}' closing '{}'", modifier.text).c_str());
+        return alternativeList;
+    }
+    std::vector<scene::ObjectRef> list;
+    while (isObjectStart(peek())) list.push_back(parseObject());
+    if (list.empty()) {
+        const Token t = peek();
+        fail(t, fmt::format("expected an object in '{}', found {}", modifier.text, describeToken(t)));
+    }
+    expect(Sym::RBrace, fmt::format("'}}' closing '{}'", modifier.text).c_str());
+    return list;
 }
 
 bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture) {
@@ -161,6 +290,16 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             tx = *parseTexture(&tx);
             return true;
         }
+        case Keyword::kw_inverse: next(); obj.inverse = !obj.inverse; return true;
+        case Keyword::kw_clipped_by:
+            next();
+            obj.clippedBy = parseObjectList(tok, Keyword::kw_bounded_by, obj.boundedBy);
+            return true;
+        case Keyword::kw_bounded_by:
+            next();
+            obj.boundedBy = parseObjectList(tok, Keyword::kw_clipped_by, obj.clippedBy);
+            return true;
+        case Keyword::kw_double_illuminate: next(); obj.doubleIlluminate = true; return true;
         case Keyword::kw_no_shadow: next(); obj.noShadow = true; return true;
         case Keyword::kw_no_image: next(); obj.noImage = true; return true;
         case Keyword::kw_no_reflection: next(); obj.noReflection = true; return true;

@@ -1,0 +1,163 @@
+#include "scene/csg.h"
+
+#include <algorithm>
+
+namespace frameray::scene::csg {
+
+namespace {
+
+// Whether child `self`'s crossing at p lies on the node's boundary.
+bool keepsCrossing(const Object& node, size_t self, const Vec3& p) {
+    const auto& kids = node.children;
+    for (size_t j = 0; j < kids.size(); ++j) {
+        if (j == self) continue;
+        const Object& other = *kids[j];
+        switch (node.op) {
+            case CsgOp::Union: return true;
+            case CsgOp::Merge:
+                if (other.inside(p)) return false;
+                break;
+            case CsgOp::Intersection:
+                if (!other.inside(p)) return false;
+                break;
+            case CsgOp::Difference:
+                if (j == 0 ? !other.inside(p) : !other.insideInverted(p)) return false;
+                break;
+        }
+    }
+    return true;
+}
+
+// The region a child stands for as an operand of the node: a subtracted
+// child of a difference counts inverted.
+Bounds operandInsideBounds(const Object& node, size_t i) {
+    const Object& child = *node.children[i];
+    return node.op == CsgOp::Difference && i > 0 ? child.insideInvertedBounds() : child.insideBounds();
+}
+
+// Whether the ray (from tMin on) passes through an axis-aligned box.
+bool rayMeetsBox(const Ray& ray, double tMin, const Bounds& b) {
+    double tNear = tMin, tFar = kInfinity;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis], d = ray.direction[axis];
+        if (d == 0) {
+            if (o < b.lo[axis] || o > b.hi[axis]) return false;
+            continue;
+        }
+        double t0 = (b.lo[axis] - o) / d, t1 = (b.hi[axis] - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        tNear = std::max(tNear, t0);
+        tFar = std::min(tFar, t1);
+        if (tNear > tFar) return false;
+    }
+    return true;
+}
+
+// povray skips an intersection (or difference) along rays that miss its
+// bounding box, the common part of its uninverted operands' boxes. That is
+// invisible unless an operand's inside reaches past its box (a disc, whose
+// box is a thin slab): then the slab limits which rays see the rest.
+// Elsewhere the box only saves work, so it is only computed for those.
+bool rayMeetsOperandBoxes(const Object& node, const Ray& ray, double tMin) {
+    bool matters = false;
+    Bounds box = Bounds::infinite();
+    for (size_t i = 0; i < node.children.size(); ++i) {
+        const Object& child = *node.children[i];
+        const bool inverted = child.inverse != (node.op == CsgOp::Difference && i > 0);
+        if (inverted) continue;
+        box = box.intersected(child.surfaceBounds());
+        matters = matters || (child.shape && child.shape->insideReachesPastBounds());
+    }
+    return !matters || rayMeetsBox(ray, tMin, box);
+}
+
+}  // namespace
+
+void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
+             std::vector<SurfaceHit>& hits) {
+    if ((node.op == CsgOp::Intersection || node.op == CsgOp::Difference) && !rayMeetsOperandBoxes(node, ray, tMin))
+        return;
+    const size_t from = hits.size();
+    for (size_t i = 0; i < node.children.size(); ++i) {
+        const size_t start = hits.size();
+        node.children[i]->allHits(ray, tMin, tMax, kind, hits);
+        if (node.op == CsgOp::Union) continue;
+        size_t kept = start;
+        for (size_t r = start; r < hits.size(); ++r)
+            if (keepsCrossing(node, i, ray.at(hits[r].t))) hits[kept++] = hits[r];
+        hits.resize(kept);
+    }
+    // Stable: at equal t the earlier child comes first.
+    std::stable_sort(hits.begin() + static_cast<std::ptrdiff_t>(from), hits.end(),
+                     [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
+}
+
+bool inside(const Object& node, const Vec3& p) {
+    const auto& kids = node.children;
+    switch (node.op) {
+        case CsgOp::Union:
+        case CsgOp::Merge:
+            return std::any_of(kids.begin(), kids.end(), [&](const ObjectRef& c) { return c->inside(p); });
+        case CsgOp::Intersection:
+            return std::all_of(kids.begin(), kids.end(), [&](const ObjectRef& c) { return c->inside(p); });
+        case CsgOp::Difference:
+            if (kids.empty() || !kids[0]->inside(p)) return false;
+            return std::all_of(kids.begin() + 1, kids.end(), [&](const ObjectRef& c) { return c->insideInverted(p); });
+    }
+    return false;
+}
+
+Bounds surfaceBounds(const Object& node) {
+    Bounds out;
+    const size_t n = node.children.size();
+    for (size_t i = 0; i < n; ++i) {
+        Bounds part = node.children[i]->surfaceBounds();
+        // A crossing survives intersection and difference only inside all
+        // the other operands.
+        if (node.op == CsgOp::Intersection || node.op == CsgOp::Difference)
+            for (size_t j = 0; j < n; ++j)
+                if (j != i) part = part.intersected(operandInsideBounds(node, j));
+        if (!part.isEmpty()) out.extend(part);
+    }
+    return out;
+}
+
+Bounds insideBounds(const Object& node) {
+    const size_t n = node.children.size();
+    if (node.op == CsgOp::Union || node.op == CsgOp::Merge) {
+        Bounds out;
+        for (const ObjectRef& c : node.children) {
+            const Bounds b = c->insideBounds();
+            if (!b.isEmpty()) out.extend(b);
+        }
+        return out;
+    }
+    if (n == 0) return {};
+    Bounds out = Bounds::infinite();
+    for (size_t i = 0; i < n; ++i) out = out.intersected(operandInsideBounds(node, i));
+    return out;
+}
+
+namespace {
+
+ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& texture, const Object& flags) {
+    const bool needsTexture = !obj->texture && texture;
+    const bool needsFlags = (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
+                            (flags.noReflection && !obj->noReflection) ||
+                            (flags.doubleIlluminate && !obj->doubleIlluminate);
+    if (!obj->isCsg() && !needsTexture && !needsFlags) return obj;
+    auto copy = std::make_shared<Object>(*obj);
+    if (needsTexture) copy->texture = texture;
+    copy->noShadow |= flags.noShadow;
+    copy->noImage |= flags.noImage;
+    copy->noReflection |= flags.noReflection;
+    copy->doubleIlluminate |= flags.doubleIlluminate;
+    for (ObjectRef& child : copy->children) child = inherit(child, copy->texture, *copy);
+    return copy;
+}
+
+}  // namespace
+
+ObjectRef resolveInheritance(const ObjectRef& top) { return inherit(top, nullptr, Object{}); }
+
+}  // namespace frameray::scene::csg

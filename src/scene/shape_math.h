@@ -1,0 +1,70 @@
+// Small numeric helpers shared by the shape implementations (internal to
+// scene/; not part of any shape's interface).
+#pragma once
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "scene/ray.h"
+
+namespace frameray::scene::detail {
+
+// Real roots of a t^2 + b t + c = 0 in increasing order; returns how many
+// (0, 1 or 2). Uses the cancellation-free form (q = -(b + sign(b) sqrt(D))/2,
+// roots q/a and c/q) so a root near zero keeps its precision even when the
+// other one is huge. a == 0 degrades to the linear equation.
+inline int solveQuadratic(double a, double b, double c, double& t0, double& t1) {
+    if (a == 0) {
+        if (b == 0) return 0;
+        t0 = t1 = -c / b;
+        return 1;
+    }
+    const double disc = b * b - 4 * a * c;
+    if (disc < 0) return 0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    if (q == 0) {  // b == 0 and c == 0: a double root at 0
+        t0 = t1 = 0;
+        return 2;
+    }
+    t0 = q / a;
+    t1 = c / q;
+    if (t0 > t1) std::swap(t0, t1);
+    return 2;
+}
+
+// Roots of |f + t g|^2 = r2: where a ray, given by its start f and
+// direction g relative to a centre (or projected onto a plane around an
+// axis), is at distance sqrt(r2). Measures the discriminant at the point of
+// closest approach, which stays accurate when the ray starts far away.
+inline bool distanceRoots(const Vec3& f, const Vec3& g, double r2, double& t0, double& t1) {
+    const double a = dot(g, g);
+    if (a == 0) return false;
+    const double b = -dot(f, g);
+    const Vec3 closest = f + g * (b / a);
+    const double disc = r2 - dot(closest, closest);
+    if (disc < 0) return false;
+    const double c = dot(f, f) - r2;
+    const double q = b + std::copysign(std::sqrt(a * disc), b);
+    if (q == 0) {
+        t0 = t1 = 0;
+        return true;
+    }
+    t0 = c / q;
+    t1 = q / a;
+    if (t0 > t1) std::swap(t0, t1);
+    return true;
+}
+
+// Appends t to ts when it lies in the open interval (tMin, tMax).
+inline void keepIfInRange(double t, double tMin, double tMax, std::vector<double>& ts) {
+    if (t > tMin && t < tMax) ts.push_back(t);
+}
+
+// A unit vector perpendicular to unit vector n.
+inline Vec3 anyPerpendicular(const Vec3& n) {
+    const Vec3 other = std::fabs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    return normalize(cross(n, other));
+}
+
+}  // namespace frameray::scene::detail

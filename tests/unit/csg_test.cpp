@@ -1,0 +1,310 @@
+// CSG trees and object modifiers in world space: which crossings survive,
+// which primitive is reported, inside tests, bounds, inheritance, and the
+// SDL that builds them.
+#include <gtest/gtest.h>
+
+#include "render/world.h"
+#include "scene/csg.h"
+#include "scene/flat_shapes.h"
+#include "scene/revolved_shapes.h"
+#include "sdl/interpreter.h"
+
+using namespace frameray;
+using namespace frameray::scene;
+
+namespace {
+
+std::shared_ptr<Object> primitive(std::shared_ptr<const Shape> shape) {
+    auto o = std::make_shared<Object>();
+    o->shape = std::move(shape);
+    return o;
+}
+std::shared_ptr<Object> sphere(const Vec3& c, double r) { return primitive(std::make_shared<Sphere>(c, r)); }
+std::shared_ptr<Object> box(const Vec3& a, const Vec3& b) { return primitive(std::make_shared<Box>(a, b)); }
+
+std::shared_ptr<Object> csgOf(CsgOp op, std::vector<ObjectRef> kids) {
+    auto o = std::make_shared<Object>();
+    o->op = op;
+    o->children = std::move(kids);
+    return o;
+}
+
+std::vector<SurfaceHit> allHits(const Object& o, const Ray& r) {
+    std::vector<SurfaceHit> h;
+    o.allHits(r, 0, kInfinity, RayKind::Camera, h);
+    return h;
+}
+
+const Ray kAlongX{{-10, 0, 0}, {1, 0, 0}};
+
+}  // namespace
+
+TEST(Csg, UnionKeepsEveryCrossing) {
+    auto a = sphere({-1, 0, 0}, 2), b = sphere({1, 0, 0}, 2);
+    auto u = csgOf(CsgOp::Union, {a, b});
+    const auto h = allHits(*u, kAlongX);
+    ASSERT_EQ(h.size(), 4u);
+    EXPECT_DOUBLE_EQ(h[0].t, 7);
+    EXPECT_EQ(h[0].primitive, a.get());
+    EXPECT_DOUBLE_EQ(h[1].t, 9);
+    EXPECT_EQ(h[1].primitive, b.get());
+    EXPECT_DOUBLE_EQ(h[2].t, 11);
+    EXPECT_DOUBLE_EQ(h[3].t, 13);
+    EXPECT_TRUE(u->inside({2.5, 0, 0}));
+    SurfaceHit first;
+    ASSERT_TRUE(u->firstHit(kAlongX, 0, kInfinity, RayKind::Camera, first));
+    EXPECT_EQ(first.primitive, a.get());
+}
+
+TEST(Csg, MergeDropsInnerSurfaces) {
+    auto m = csgOf(CsgOp::Merge, {sphere({-1, 0, 0}, 2), sphere({1, 0, 0}, 2)});
+    const auto h = allHits(*m, kAlongX);
+    ASSERT_EQ(h.size(), 2u);
+    EXPECT_DOUBLE_EQ(h[0].t, 7);
+    EXPECT_DOUBLE_EQ(h[1].t, 13);
+}
+
+TEST(Csg, IntersectionAndDifference) {
+    auto a = sphere({-1, 0, 0}, 2), b = sphere({1, 0, 0}, 2);
+    auto i = csgOf(CsgOp::Intersection, {a, b});
+    auto h = allHits(*i, kAlongX);
+    ASSERT_EQ(h.size(), 2u);
+    EXPECT_DOUBLE_EQ(h[0].t, 9);  // b's near side, inside a
+    EXPECT_EQ(h[0].primitive, b.get());
+    EXPECT_DOUBLE_EQ(h[1].t, 11);
+    EXPECT_EQ(h[1].primitive, a.get());
+    EXPECT_TRUE(i->inside({0, 0, 0}));
+    EXPECT_FALSE(i->inside({-2, 0, 0}));
+
+    auto d = csgOf(CsgOp::Difference, {a, b});
+    h = allHits(*d, kAlongX);
+    ASSERT_EQ(h.size(), 2u);
+    EXPECT_DOUBLE_EQ(h[0].t, 7);
+    EXPECT_DOUBLE_EQ(h[1].t, 9);  // the bite: b's surface, inside a
+    EXPECT_EQ(h[1].primitive, b.get());
+    EXPECT_TRUE(d->inside({-2, 0, 0}));
+    EXPECT_FALSE(d->inside({0, 0, 0}));
+    // Bounds: the difference is within its first operand.
+    const Bounds db = d->surfaceBounds();
+    EXPECT_DOUBLE_EQ(db.lo.x, -3);
+    EXPECT_DOUBLE_EQ(db.hi.x, 1);
+}
+
+TEST(Csg, CoincidentBoxFacesFollowPovray) {
+    // difference { box { -1, 1 } box { <-0.5,0,-0.5>, <0.5,1,0.5> } }:
+    // povray keeps a lid over the pit (the subtracted box's top face).
+    auto outer = box({-1, -1, -1}, {1, 1, 1}), pit = box({-0.5, 0, -0.5}, {0.5, 1, 0.5});
+    auto d = csgOf(CsgOp::Difference, {outer, pit});
+    SurfaceHit h;
+    ASSERT_TRUE(d->firstHit({{0.1, 5, 0.2}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
+    EXPECT_DOUBLE_EQ(h.t, 4);
+    // Two boxes sharing a face intersect in that face (box faces are inside).
+    auto i = csgOf(CsgOp::Intersection, {box({-1, -1, -1}, {1, 0, 1}), box({-1, 0, -1}, {1, 1, 1})});
+    ASSERT_TRUE(i->firstHit({{0.1, 5, 0.2}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
+    EXPECT_DOUBLE_EQ(h.t, 5);
+}
+
+TEST(Csg, InverseAndPatches) {
+    auto s = sphere({0, 0, 0}, 1);
+    s->inverse = true;
+    EXPECT_FALSE(s->inside({0, 0, 0}));
+    EXPECT_TRUE(s->inside({5, 0, 0}));
+    EXPECT_TRUE(s->insideInverted({0, 0, 0}));
+    EXPECT_FALSE(s->insideBounds().isFinite());
+    // The surface is still the sphere.
+    EXPECT_EQ(allHits(*s, kAlongX).size(), 2u);
+    // A triangle is never inside, inverted or not: difference { sphere
+    // triangle } keeps none of the sphere (povray).
+    auto tri = primitive(std::make_shared<Triangle>(Vec3{-5, 0, -5}, Vec3{5, 0, -5}, Vec3{0, 0, 5}));
+    EXPECT_FALSE(tri->insideInverted({0, 1, 0}));
+    auto d = csgOf(CsgOp::Difference, {sphere({0, 0, 0}, 1), tri});
+    const auto h = allHits(*d, {{0.1, 5, 0.1}, {0, -1, 0}});
+    ASSERT_EQ(h.size(), 1u);  // only the triangle, inside the sphere
+    EXPECT_EQ(h[0].primitive, tri.get());
+    EXPECT_DOUBLE_EQ(h[0].t, 5);
+}
+
+TEST(Csg, TransformsReachEveryPrimitiveAndCopyShared) {
+    auto a = sphere({0, 0, 0}, 1);
+    auto u = csgOf(CsgOp::Union, {a, sphere({3, 0, 0}, 1)});
+    auto moved = std::make_shared<Object>(*u);
+    moved->transformBy(Transform::translate({0, 10, 0}));
+    SurfaceHit h;
+    ASSERT_TRUE(moved->firstHit({{0, 20, 0}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
+    EXPECT_DOUBLE_EQ(h.t, 9);
+    EXPECT_NE(h.primitive, a.get());  // a transformed copy, the original untouched
+    ASSERT_TRUE(u->firstHit({{0, 20, 0}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
+    EXPECT_EQ(h.primitive, a.get());
+    EXPECT_DOUBLE_EQ(h.t, 19);
+    // The normal comes from the primitive's own transform.
+    const Vec3 n = h.primitive->normalAt({0, 1, 0});
+    EXPECT_DOUBLE_EQ(n.y, 1);
+}
+
+TEST(Csg, ClippedByKeepsOnlyCrossingsInsideTheClip) {
+    auto s = sphere({0, 0, 0}, 2);
+    s->clippedBy = {primitive(std::make_shared<Plane>(Vec3{1, 0, 0}, 0))};  // keep x < 0
+    auto h = allHits(*s, kAlongX);
+    ASSERT_EQ(h.size(), 1u);
+    EXPECT_DOUBLE_EQ(h[0].t, 8);
+    EXPECT_FALSE(s->inside({1, 0, 0}));
+    EXPECT_TRUE(s->inside({-1, 0, 0}));
+    // Inverting a clipped object does not invert its clip (povray).
+    EXPECT_FALSE(s->insideInverted({1, 0, 0}));
+    EXPECT_TRUE(s->insideInverted({-3, 0, 0}));
+    const Bounds b = s->surfaceBounds();
+    EXPECT_DOUBLE_EQ(b.lo.x, -2);
+    EXPECT_DOUBLE_EQ(b.hi.x, 1e-10);
+}
+
+TEST(Csg, BoundedBySkipsRaysThatMissTheBound) {
+    auto s = sphere({0, 0, 0}, 2);
+    s->boundedBy = {box({-1, -1, -1}, {1, 1, 1})};  // smaller than the sphere
+    EXPECT_EQ(allHits(*s, kAlongX).size(), 2u);
+    EXPECT_TRUE(allHits(*s, {{-10, 1.5, 0}, {1, 0, 0}}).empty());
+    // Shadows are cast by the whole sphere (povray), so its bounds stay.
+    SurfaceHit h;
+    EXPECT_TRUE(s->firstHit({{-10, 1.5, 0}, {1, 0, 0}}, 0, kInfinity, RayKind::Shadow, h));
+    const Bounds b = s->surfaceBounds();
+    EXPECT_DOUBLE_EQ(b.hi.x, 2);
+}
+
+TEST(Csg, NoShadowChildHidesOnlyItselfFromShadowRays) {
+    auto a = sphere({-3, 0, 0}, 1), b = sphere({3, 0, 0}, 1);
+    b->noShadow = true;
+    auto u = csg::resolveInheritance(csgOf(CsgOp::Union, {a, b}));
+    SurfaceHit h;
+    EXPECT_TRUE(u->firstHit({{-3, 5, 0}, {0, -1, 0}}, 0, kInfinity, RayKind::Shadow, h));
+    EXPECT_FALSE(u->firstHit({{3, 5, 0}, {0, -1, 0}}, 0, kInfinity, RayKind::Shadow, h));
+    EXPECT_TRUE(u->firstHit({{3, 5, 0}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
+}
+
+TEST(Csg, ChildrenInheritTextureAndFlags) {
+    auto red = std::make_shared<Texture>();
+    red->pigment = std::make_shared<Pigment>(Color(RGB(1, 0, 0)));
+    auto green = std::make_shared<Texture>();
+    green->pigment = std::make_shared<Pigment>(Color(RGB(0, 1, 0)));
+    auto plain = sphere({0, 0, 0}, 1);
+    auto own = sphere({3, 0, 0}, 1);
+    own->texture = green;
+    auto inner = csgOf(CsgOp::Union, {plain, own});
+    auto outer = csgOf(CsgOp::Union, {inner});
+    outer->texture = red;
+    outer->noShadow = true;
+    const ObjectRef placed = csg::resolveInheritance(outer);
+    const Object& placedInner = *placed->children[0];
+    EXPECT_EQ(placedInner.children[0]->texture, red);
+    EXPECT_EQ(placedInner.children[1]->texture, green);
+    EXPECT_TRUE(placedInner.children[1]->noShadow);
+    EXPECT_FALSE(plain->texture);  // the declared tree is untouched
+}
+
+TEST(World, CsgHitReportsTheChildPrimitive) {
+    Scene s;
+    auto a = box({-1, -1, -1}, {1, 1, 1});
+    auto cut = sphere({0, 0, -1}, 0.5);
+    s.objects = {csg::resolveInheritance(csgOf(CsgOp::Difference, {a, cut}))};
+    render::World w(s);
+    render::Hit hit;
+    ASSERT_TRUE(w.intersect({{0, 0, -5}, {0, 0, 1}}, 0, kInfinity, hit));
+    EXPECT_DOUBLE_EQ(hit.t, 4.5);  // the bottom of the bite
+    ASSERT_TRUE(hit.object->shape);
+    EXPECT_STREQ(hit.object->shape->name(), "sphere");
+    ASSERT_TRUE(w.intersect({{0.9, 0, -5}, {0, 0, 1}}, 0, kInfinity, hit));
+    EXPECT_DOUBLE_EQ(hit.t, 4);
+    EXPECT_STREQ(hit.object->shape->name(), "box");
+}
+
+// --- SDL ---------------------------------------------------------------------
+
+namespace {
+
+struct Quiet : sdl::MessageSink {
+    std::string warnings;
+    void message(sdl::Stream s, const std::string& t) override {
+        if (s == sdl::Stream::Warning) warnings += t;
+    }
+};
+
+struct Parsed {
+    sdl::FrameContext ctx;
+    sdl::TokenCache cache;
+    Quiet sink;
+    sdl::Interpreter interp{ctx, cache, sink};
+    Scene scene;
+    explicit Parsed(const std::string& text) { scene = interp.parseText("t.pov", text); }
+};
+
+std::string parseError(const std::string& text) {
+    try {
+        Parsed p(text);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(CsgSdl, ShapesCsgAndModifiersParse) {
+    Parsed p(R"(
+        #declare U = union { sphere { 0, 1 } cylinder { 0, y, 0.5 pigment { rgb <0,1,0> } } pigment { rgb <1,0,0> } }
+        object { U pigment { rgb <0,0,1> } translate x }
+        difference { box { -1, 1 } cone { -2*y, 0.5, 2*y, 0.2 open } inverse }
+        disc { 0, y, 2, 1 clipped_by { plane { x, 0 } } bounded_by { clipped_by } }
+        triangle { 0, x, y double_illuminate }
+        smooth_triangle { 0, -z, x, -z, y, -z no_shadow }
+        quadric { <1,1,1>, 0, 0, -1 hollow }
+    )");
+    ASSERT_EQ(p.scene.objects.size(), 6u);
+    const Object& u = *p.scene.objects[0];
+    ASSERT_TRUE(u.isCsg());
+    ASSERT_EQ(u.children.size(), 2u);
+    // The untextured child takes the object's (recoloured) texture.
+    EXPECT_EQ(u.children[0]->texture->pigment->solidColor().rgb.b, 1);
+    EXPECT_EQ(u.children[1]->texture->pigment->solidColor().rgb.g, 1);
+    EXPECT_DOUBLE_EQ(u.children[1]->transform.point({0, 0, 0}).x, 1);
+    EXPECT_EQ(p.scene.objects[1]->op, CsgOp::Difference);
+    EXPECT_TRUE(p.scene.objects[1]->inverse);
+    EXPECT_EQ(p.scene.objects[2]->clippedBy.size(), 1u);
+    EXPECT_EQ(p.scene.objects[2]->boundedBy.size(), 1u);
+    EXPECT_TRUE(p.scene.objects[3]->doubleIlluminate);
+    EXPECT_TRUE(p.scene.objects[4]->noShadow);
+    EXPECT_STREQ(p.scene.objects[5]->shape->name(), "quadric");
+}
+
+TEST(CsgSdl, PovrayErrorsAndWarnings) {
+    EXPECT_NE(parseError("cylinder { 0, 0, 1 }").find("Degenerate cylinder"), std::string::npos);
+    EXPECT_NE(parseError("cone { y, 1, y, 0.5 }").find("Degenerate cone/cylinder"), std::string::npos);
+    EXPECT_NE(parseError("union { sphere { 0, 1 } translate x sphere { 0, 1 } }").find("No matching }"),
+              std::string::npos);
+    EXPECT_NE(parseError("torus { 1, 0.5 }").find("not supported yet: torus"), std::string::npos);
+    EXPECT_NE(parseError("sphere { 0, 1 interior { ior 1.5 } }").find("not supported yet"), std::string::npos);
+    Parsed one("union { sphere { 0, 1 } }  triangle { 0, x, 2*x }  difference { sphere { 0, 1 } triangle { 0, x, y } }");
+    EXPECT_NE(one.sink.warnings.find("Patch objects not allowed in intersection."), std::string::npos);
+    EXPECT_NE(one.sink.warnings.find("Should have at least 2 objects in csg."), std::string::npos);
+    EXPECT_NE(one.sink.warnings.find("Degenerate triangle. Please remove."), std::string::npos);
+}
+
+TEST(Csg, IntersectionWithADiscOnlyAlongRaysThroughItsBox) {
+    // povray: intersection { disc { 0, y, 2 } box { -1, 1 } } seen edge-on
+    // keeps the box's front face only in the disc's 0.001-thin bounding box
+    // (the disc's inside is the half-space below it).
+    auto disc = primitive(std::make_shared<Disc>(Vec3{0, 0, 0}, Vec3{0, 1, 0}, 2, 0));
+    auto i = csgOf(CsgOp::Intersection, {disc, box({-1, -1, -1}, {1, 1, 1})});
+    SurfaceHit h;
+    ASSERT_TRUE(i->firstHit({{0, -0.0005, -5}, {0, 0, 1}}, 0, kInfinity, RayKind::Camera, h));
+    EXPECT_DOUBLE_EQ(h.t, 4);
+    EXPECT_FALSE(i->firstHit({{0, -0.5, -5}, {0, 0, 1}}, 0, kInfinity, RayKind::Camera, h));
+    // From above, through the disc: the disc inside the box, then the box's
+    // bottom (below the disc, so inside its half-space).
+    const auto hits = allHits(*i, {{0.5, 5, 0}, {0, -1, 0}});
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_DOUBLE_EQ(hits[0].t, 5);
+    EXPECT_DOUBLE_EQ(hits[1].t, 6);
+    // A ray that misses the common box of both operands (the slab
+    // [-1,1] x [-0.001,0.001] x [-1,1]) sees nothing, even one through the
+    // disc towards a part of the box below the disc's plane.
+    EXPECT_TRUE(allHits(*i, {{-10, -3.5, 0}, {1, 1, 0}}).empty());
+    EXPECT_TRUE(allHits(*i, {{1.6, 0.5, 0}, {-1, -1, 0}}).empty());
+}
