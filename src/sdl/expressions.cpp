@@ -642,6 +642,31 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             const scene::Bounds b = (*obj)->worldBounds();
             return VectorValue::fromVec3(fn.kw == Keyword::kw_min_extent ? b.lo : b.hi);
         }
+        case Keyword::kw_trace: {
+            // trace(Object, Start, Direction [, NormalIdentifier]): the first
+            // surface point along the ray, <0,0,0> (and a zero normal) if none.
+            expectAfter(Sym::LParen, "'('", fn.text);
+            const Token objToken = peek();
+            const Value objValue = parseExpression();
+            const auto* obj = std::get_if<ObjectPtr>(&objValue);
+            if (!obj) fail(objToken, fmt::format("'trace' needs an object, found a {}", valueKindName(objValue)));
+            expect(Sym::Comma, "','");
+            const Vec3 start = parseVec3();
+            expect(Sym::Comma, "','");
+            const Vec3 direction = parseVec3();
+            std::string normalName;
+            if (accept(Sym::Comma)) normalName = expectIdentifier();
+            expect(Sym::RParen, "')'");
+            scene::SurfaceHit hit;
+            Vec3 point, normal;
+            if (length(direction) > 0 &&
+                (*obj)->firstHit({start, direction}, 0.0, scene::kInfinity, scene::RayKind::Any, hit)) {
+                point = start + direction * hit.t;
+                normal = hit.primitive->normalAt(point);
+            }
+            if (!normalName.empty()) declare(normalName, VectorValue::fromVec3(normal), false);
+            return VectorValue::fromVec3(point);
+        }
         case Keyword::kw_inside: {
             auto a = parseArguments(2, 2, fn);
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
