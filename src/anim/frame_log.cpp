@@ -62,11 +62,29 @@ void FrameLog::message(sdl::Stream stream, const std::string& text) {
 }
 
 void FrameLog::message(TextStream stream, const std::string& text) {
+    std::lock_guard lock(mutex_);
     text_ += text;
-    streams_.write(stream, text);
+    if (live_)
+        streams_.write(stream, text);
+    else
+        held_.emplace_back(stream, text);
+}
+
+void FrameLog::goLive() {
+    std::lock_guard lock(mutex_);
+    if (live_) return;
+    for (const auto& [stream, text] : held_) streams_.write(stream, text);
+    held_.clear();
+    live_ = true;
+}
+
+std::string FrameLog::text() const {
+    std::lock_guard lock(mutex_);
+    return text_;
 }
 
 void FrameLog::save(const std::filesystem::path& path) const {
+    std::lock_guard lock(mutex_);
     if (text_.empty()) return;
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << text_;

@@ -12,6 +12,8 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "options/render_options.h"
 #include "sdl/frame_context.h"
@@ -41,19 +43,29 @@ private:
 
 options::TextStream toTextStream(sdl::Stream s);
 
+// A frame's messages. A log made held (`live` false) keeps its console and
+// stream output back until goLive(): frames overlap in the scheduler, and
+// the run prints each frame's messages only once every earlier frame's are
+// out, so the console reads exactly as when frames run one after another.
 class FrameLog final : public sdl::MessageSink {
 public:
-    explicit FrameLog(RunStreams& streams) : streams_(streams) {}
+    explicit FrameLog(RunStreams& streams, bool live = true) : streams_(streams), live_(live) {}
 
     void message(sdl::Stream stream, const std::string& text) override;
     void message(options::TextStream stream, const std::string& text);
+    // Writes out what was held back, in order; later messages go straight
+    // to the streams.
+    void goLive();
     // Writes everything logged so far; an empty log writes no file.
     void save(const std::filesystem::path& path) const;
-    const std::string& text() const { return text_; }
+    std::string text() const;
 
 private:
     RunStreams& streams_;
+    mutable std::mutex mutex_;
+    bool live_;
     std::string text_;
+    std::vector<std::pair<options::TextStream, std::string>> held_;
 };
 
 }  // namespace frameray::anim

@@ -3,13 +3,24 @@
 #include <fmt/format.h>
 #include <signal.h>
 
+#include <sys/resource.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_group.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <fstream>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <set>
+#include <thread>
+#include <vector>
 
 #include "anim/frame_log.h"
 #include "anim/hooks.h"
@@ -102,6 +113,12 @@ void removeStaleTemporaries(const Sequence& seq) {
             if (name.empty() || name[0] != '.') continue;
             const auto dot = name.find(".", 1);
             if (dot == std::string::npos) continue;
+            // sequence.json's own temporary (see writeStatistics).
+            if (long pid = 0; image::isTemporaryFor(name, "sequence.json", pid)) {
+                if (pid == static_cast<long>(getpid()) || kill(static_cast<pid_t>(pid), 0) != 0)
+                    fs::remove(entry.path(), ec);
+                continue;
+            }
             for (const std::string& target : names) {
                 long pid = 0;
                 if (!image::isTemporaryFor(name, target, pid)) continue;
@@ -113,6 +130,85 @@ void removeStaleTemporaries(const Sequence& seq) {
     }
 }
 
+// A frame's way through the pipeline, or a marker that ends the run once
+// every earlier frame is out.
+struct Outcome {
+    enum class Kind { None, Finish, Quit, UserAbort, Fatal };
+    Kind kind = Kind::None;
+    std::string why;               // Fatal: the message ("" when the frame's log has it)
+    const FrameSpec* frame = nullptr;
+};
+
+struct Job {
+    enum class Kind { Render, Kept, Stop };
+    Kind kind = Kind::Render;
+    size_t index = 0;               // position in the pipeline (order of stage 3)
+    size_t position = 0;            // position in the sequence
+    const FrameSpec* frame = nullptr;
+    Outcome stop;                   // Kind::Stop
+    std::unique_ptr<FrameLog> log;
+    std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
+    std::optional<scene::Scene> scene;
+    image::EncodedImage encoded;
+    render::FrameStats stats;
+    bool failed = false;            // the log holds the fatal message
+    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
+};
+
+// What sequence.json records of a frame written in this run.
+struct FrameRecord {
+    int number = 0;
+    double clock = 0;
+    std::string file;
+    render::RayCounts rays;
+    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double cpuSeconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
+}
+
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20)
+                    out += fmt::format("\\u{:04x}", static_cast<int>(c));
+                else
+                    out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string jsonRays(const render::RayCounts& r) {
+    return fmt::format("{{\"camera\": {}, \"shadow\": {}, \"reflection\": 0, \"refraction\": 0}}", r.camera,
+                       r.shadow);
+}
+
+// The frame scheduler (DESIGN.md, "Data flow"): a oneTBB pipeline with a
+// bounded number of frames in flight.
+//   1. parse: serial, in frame order (a frame may #read what the one before
+//      #wrote); also the Continue_Trace check and Pre_Frame_Command.
+//   2. prepare + render: parallel across frames; the tiles of each frame
+//      are spread over the same threads, so no core idles at a frame's tail.
+//   3. write + journal + log + Post_Frame_Command: serial, in frame order,
+//      so the journal, the console and every outcome (a failing frame, a
+//      hook's *_Return action, Ctrl-C) are what a frame-after-frame run
+//      gives: frames before the one that ends the run are written, later
+//      ones never are.
 class Run {
 public:
     Run(const options::RenderOptions& o, const Sequence& seq) : o_(o), seq_(seq), streams_(o) {}
@@ -143,39 +239,304 @@ public:
             case HookAction::Fatal: return fatal("Pre_Scene_Command failed", nullptr);
         }
 
-        for (const FrameSpec& frame : seq_.frames) {
-            ++index_;
-            if (stopRequested()) return userAbort();
-            const std::string clock = clockText(frame.clock);
-            if (o_.continueTrace && journal_ && journal_->verified(frame.number, clock, frame.output)) {
-                ++finished_;
-                if (o_.verbose)
-                    say(TextStream::Render, fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
-                                                        frame.number, index_, seq_.frames.size(),
-                                                        frame.output.string()));
-                continue;
-            }
-            switch (runHook(o_.commands[static_cast<int>(ShellHook::PreFrame)], values(&frame))) {
-                case HookAction::Continue: break;
-                case HookAction::SkipFrame: continue;
-                case HookAction::SkipAll: return finish();
-                case HookAction::Quit: return 0;
-                case HookAction::UserAbort: return userAbort();
-                case HookAction::Fatal: return fatal("Pre_Frame_Command failed", &frame);
-            }
-            if (const int status = renderOne(frame); status != 0) return status;
-            switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
-                case HookAction::Continue: case HookAction::SkipFrame: break;
-                case HookAction::SkipAll: return finish();
-                case HookAction::Quit: return 0;
-                case HookAction::UserAbort: return userAbort();
-                case HookAction::Fatal: return fatal("Post_Frame_Command failed", &frame);
-            }
+        runPipeline();
+        writeStatistics();
+
+        switch (outcome_.kind) {
+            case Outcome::Kind::None: case Outcome::Kind::Finish: return finish();
+            case Outcome::Kind::Quit: return 0;
+            case Outcome::Kind::UserAbort: current_ = outcome_.frame; return userAbort();
+            case Outcome::Kind::Fatal: return fatal(outcome_.why, outcome_.frame);
         }
         return finish();
     }
 
 private:
+    size_t framesInFlight() const {
+        // Shell-outs between frames keep POV-Ray's strict order: frame N's
+        // Post_Frame_Command before frame N+1's Pre_Frame_Command.
+        if (!o_.commands[static_cast<int>(ShellHook::PreFrame)].command.empty() ||
+            !o_.commands[static_cast<int>(ShellHook::PostFrame)].command.empty())
+            return 1;
+        if (o_.framesInFlight > 0) return static_cast<size_t>(o_.framesInFlight);
+        return std::min<size_t>(threads_ + 1, kMaxDefaultFramesInFlight);
+    }
+
+    void runPipeline() {
+        threads_ = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+        inFlight_ = framesInFlight();
+        runStart_ = Clock::now();
+        cpuStart_ = cpuSeconds();
+
+        // Ctrl-C while every thread is inside a long render: the watcher
+        // cancels the pipeline (tiles included) so the run stops at once.
+        std::mutex doneMutex;
+        std::condition_variable doneCv;
+        bool done = false;
+        std::thread watcher([&] {
+            std::unique_lock lock(doneMutex);
+            while (!done) {
+                doneCv.wait_for(lock, std::chrono::milliseconds(50));
+                if (!done && stopRequested()) decide({Outcome::Kind::UserAbort, "", current_.load()});
+            }
+        });
+        try {
+            tbb::parallel_pipeline(
+                inFlight_,
+                tbb::make_filter<void, Job*>(tbb::filter_mode::serial_in_order,
+                                             [this](tbb::flow_control& fc) -> Job* {
+                                                 Job* job = nextJob();
+                                                 if (!job) fc.stop();
+                                                 return job;
+                                             }) &
+                    tbb::make_filter<Job*, Job*>(tbb::filter_mode::parallel,
+                                                 [this](Job* job) {
+                                                     renderJob(*job);
+                                                     return job;
+                                                 }) &
+                    tbb::make_filter<Job*, void>(tbb::filter_mode::serial_in_order,
+                                                 [this](Job* job) { finishJob(*job); }),
+                context_);
+        } catch (...) {
+            {
+                std::lock_guard lock(doneMutex);
+                done = true;
+            }
+            doneCv.notify_all();
+            watcher.join();
+            throw;
+        }
+        {
+            std::lock_guard lock(doneMutex);
+            done = true;
+        }
+        doneCv.notify_all();
+        watcher.join();
+        wallSeconds_ = secondsSince(runStart_);
+        cpuSecondsUsed_ = cpuSeconds() - cpuStart_;
+    }
+
+    // The first outcome wins; later frames are dropped.
+    void decide(Outcome outcome) {
+        std::lock_guard lock(decideMutex_);
+        if (decided_) return;
+        outcome_ = std::move(outcome);
+        decided_ = true;
+        context_.cancel_group_execution();
+    }
+
+    Job& newJob(Job::Kind kind, size_t position) {
+        std::lock_guard lock(jobsMutex_);
+        auto job = std::make_unique<Job>();
+        job->kind = kind;
+        job->index = jobs_.size();
+        job->position = position;
+        if (position < seq_.frames.size()) job->frame = &seq_.frames[position];
+        // Only the oldest frame in flight prints as it goes; the others
+        // hold their messages until it is out.
+        job->log = std::make_unique<FrameLog>(streams_, job->index == head_);
+        if (job->index == head_ && kind == Job::Kind::Render) current_ = job->frame;
+        jobs_.push_back(std::move(job));
+        return *jobs_.back();
+    }
+
+    Job* stopJob(Outcome outcome) {
+        inputDone_ = true;
+        Job& job = newJob(Job::Kind::Stop, seq_.frames.size());
+        job.stop = std::move(outcome);
+        return &job;
+    }
+
+    // Stage 1: the next frame to render, parsed; nullptr when there is none.
+    Job* nextJob() {
+        while (!inputDone_ && !decided_ && next_ < seq_.frames.size()) {
+            if (stopRequested()) return stopJob({Outcome::Kind::UserAbort, "", nullptr});
+            const size_t position = next_++;
+            const FrameSpec& frame = seq_.frames[position];
+            if (o_.continueTrace && journal_) {
+                bool kept = false;
+                {
+                    std::lock_guard lock(journalMutex_);
+                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output);
+                }
+                if (kept) return &newJob(Job::Kind::Kept, position);
+            }
+            switch (runHook(o_.commands[static_cast<int>(ShellHook::PreFrame)], values(&frame))) {
+                case HookAction::Continue: break;
+                case HookAction::SkipFrame: continue;
+                case HookAction::SkipAll: return stopJob({Outcome::Kind::Finish, "", nullptr});
+                case HookAction::Quit: return stopJob({Outcome::Kind::Quit, "", nullptr});
+                case HookAction::UserAbort: return stopJob({Outcome::Kind::UserAbort, "", nullptr});
+                case HookAction::Fatal: return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", &frame});
+            }
+            Job& job = newJob(Job::Kind::Render, position);
+            const auto start = Clock::now();
+            try {
+                job.interpreter = std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame), cache_, *job.log);
+                job.scene.emplace(job.interpreter->parseFile(o_.inputFile));
+            } catch (const sdl::SdlError& e) {
+                job.log->message(sdl::Stream::Fatal, e.what());
+                job.failed = true;
+            } catch (const std::exception& e) {
+                job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
+                job.failed = true;
+            }
+            job.parseSeconds = secondsSince(start);
+            // A frame that failed to parse ends the run: later frames
+            // could depend on what it should have written.
+            if (job.failed) inputDone_ = true;
+            return &job;
+        }
+        return nullptr;
+    }
+
+    // Stage 2, in parallel: build the world, render, encode.
+    void renderJob(Job& job) {
+        if (job.kind != Job::Kind::Render || job.failed || decided_ || stopRequested()) return;
+        try {
+            auto start = Clock::now();
+            const render::World world(*job.scene);
+            job.prepareSeconds = secondsSince(start);
+            start = Clock::now();
+            const render::FrameImage image = render::renderFrame(world, {o_.width, o_.height}, job.stats);
+            job.renderSeconds = secondsSince(start);
+            if (o_.outputToFile && !decided_) {
+                const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
+                job.encoded = encode(image, gamma, o_.bitDepth, seq_.window);
+            }
+        } catch (const sdl::SdlError& e) {
+            job.log->message(sdl::Stream::Fatal, e.what());
+            job.failed = true;
+        } catch (const std::exception& e) {
+            job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", job.frame->number, e.what()));
+            job.failed = true;
+        }
+        job.scene.reset();
+        job.interpreter.reset();
+    }
+
+    // Stage 3, serial in frame order: write, journal, messages, hooks.
+    void finishJob(Job& job) {
+        if (!decided_) finishInOrder(job);
+        // The next frame in line prints from now on.
+        std::lock_guard lock(jobsMutex_);
+        head_ = job.index + 1;
+        job.encoded = {};
+        job.log.reset();
+        if (head_ < jobs_.size()) {
+            Job& next = *jobs_[head_];
+            if (next.log) next.log->goLive();
+            current_ = next.kind == Job::Kind::Render ? next.frame : nullptr;
+        } else {
+            current_ = nullptr;
+        }
+    }
+
+    void finishInOrder(Job& job) {
+        if (stopRequested())
+            return decide({Outcome::Kind::UserAbort, "", job.kind == Job::Kind::Render ? job.frame : nullptr});
+        if (job.kind == Job::Kind::Stop) return decide(job.stop);
+        const FrameSpec& frame = *job.frame;
+        const size_t index = job.position + 1;
+        if (job.kind == Job::Kind::Kept) {
+            ++finished_;
+            if (o_.verbose)
+                say(TextStream::Render, fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
+                                                    frame.number, index, seq_.frames.size(),
+                                                    frame.output.string()));
+            return;
+        }
+        FrameLog& log = *job.log;
+        if (!job.failed && o_.outputToFile) {
+            const auto start = Clock::now();
+            try {
+                image::writeAtomic(frame.output, seq_.fileType, job.encoded);
+                if (journal_) {
+                    std::lock_guard lock(journalMutex_);
+                    journal_->record(frame.number, clockText(frame.clock), frame.output);
+                }
+            } catch (const std::exception& e) {
+                log.message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
+                job.failed = true;
+            }
+            job.writeSeconds = secondsSince(start);
+        }
+        if (job.failed) {
+            if (o_.outputToFile) log.save(frame.log);
+            return decide({Outcome::Kind::Fatal, "", &frame});
+        }
+        ++finished_;
+        records_.push_back({frame.number, frame.clock, frame.output.filename().string(), job.stats.rays,
+                            job.parseSeconds, job.prepareSeconds, job.renderSeconds, job.writeSeconds});
+        const double seconds = job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
+        const std::string where = o_.outputToFile ? frame.output.string() : std::string("(no file)");
+        if (o_.verbose) {
+            log.message(TextStream::Render,
+                        fmt::format("frame {} ({} of {}): {}\n", frame.number, index, seq_.frames.size(), where));
+            log.message(TextStream::Statistic, fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n",
+                                                           frame.number, seconds, job.stats.rays.camera,
+                                                           job.stats.rays.shadow));
+        }
+        if (o_.outputToFile) log.save(frame.log);
+        switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
+            case HookAction::Continue: case HookAction::SkipFrame: break;
+            case HookAction::SkipAll: return decide({Outcome::Kind::Finish, "", nullptr});
+            case HookAction::Quit: return decide({Outcome::Kind::Quit, "", nullptr});
+            case HookAction::UserAbort: return decide({Outcome::Kind::UserAbort, "", nullptr});
+            case HookAction::Fatal: return decide({Outcome::Kind::Fatal, "Post_Frame_Command failed", &frame});
+        }
+    }
+
+    // sequence.json beside the frames of an animation: per-frame ray
+    // counts and times, their sums, and how busy the cores were.
+    void writeStatistics() const {
+        if (!o_.outputToFile || !seq_.animated || seq_.frames.empty()) return;
+        const fs::path dir = seq_.frames.front().output.parent_path();
+        const fs::path path = (dir.empty() ? fs::path(".") : dir) / "sequence.json";
+        render::RayCounts total;
+        double parse = 0, prepare = 0, render = 0, write = 0;
+        std::string frames;
+        for (const FrameRecord& r : records_) {
+            total += r.rays;
+            parse += r.parseSeconds;
+            prepare += r.prepareSeconds;
+            render += r.renderSeconds;
+            write += r.writeSeconds;
+            if (!frames.empty()) frames += ",\n";
+            frames += fmt::format(
+                "    {{\"number\": {}, \"clock\": {}, \"file\": {}, \"rays\": {}, \"parse_seconds\": {:.6f}, "
+                "\"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, \"write_seconds\": {:.6f}}}",
+                r.number, clockText(r.clock), jsonString(r.file), jsonRays(r.rays), r.parseSeconds, r.prepareSeconds,
+                r.prepareSeconds + r.renderSeconds, r.writeSeconds);
+        }
+        const double utilisation =
+            wallSeconds_ > 0 && threads_ > 0 ? cpuSecondsUsed_ / (wallSeconds_ * static_cast<double>(threads_)) : 0;
+        const std::string text = fmt::format(
+            "{{\n  \"scene\": {},\n  \"frames\": [\n{}\n  ],\n  \"rays\": {},\n  \"frames_rendered\": {},\n"
+            "  \"frames_finished\": {},\n  \"frames_planned\": {},\n  \"parse_seconds\": {:.6f},\n"
+            "  \"prepare_seconds\": {:.6f},\n  \"render_seconds\": {:.6f},\n  \"write_seconds\": {:.6f},\n"
+            "  \"wall_seconds\": {:.6f},\n  \"cpu_seconds\": {:.6f},\n  \"work_threads\": {},\n"
+            "  \"frames_in_flight\": {},\n  \"cpu_utilisation\": {:.4f}\n}}\n",
+            jsonString(seq_.sceneName), frames, jsonRays(total), records_.size(), finished_.load(),
+            seq_.frames.size(), parse, prepare, prepare + render, write, wallSeconds_, cpuSecondsUsed_, threads_,
+            inFlight_, utilisation);
+        const fs::path temporary = path.parent_path() / fmt::format(".sequence.json.{}.tmp", getpid());
+        {
+            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+            out << text;
+            if (!out) {
+                say(TextStream::Warning, fmt::format("frameray: warning: cannot write {}\n", path.string()));
+                return;
+            }
+        }
+        std::error_code ec;
+        fs::rename(temporary, path, ec);
+        if (ec) {
+            fs::remove(temporary, ec);
+            say(TextStream::Warning, fmt::format("frameray: warning: cannot write {}\n", path.string()));
+        }
+    }
+
     int finish() {
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PostScene)], values(nullptr))) {
             case HookAction::UserAbort: return userAbort();
@@ -196,50 +557,7 @@ private:
         return v;
     }
 
-    void say(TextStream stream, const std::string& text) { streams_.write(stream, text); }
-
-    // Parses, renders and writes one frame. Returns 0, or the exit status.
-    int renderOne(const FrameSpec& frame) {
-        const auto start = std::chrono::steady_clock::now();
-        FrameLog log(streams_);
-        current_ = &frame;
-        try {
-            sdl::Interpreter interpreter(contextFor(o_, seq_, frame), cache_, log);
-            const scene::Scene scene = interpreter.parseFile(o_.inputFile);
-            if (stopRequested()) return userAbort();
-            const render::World world(scene);
-            render::FrameStats stats;
-            const render::FrameImage image = render::renderFrame(world, {o_.width, o_.height}, stats);
-            if (stopRequested()) return userAbort();
-            if (o_.outputToFile) {
-                const auto gamma = render::GammaEncoding::forScene(scene, o_.fileGamma);
-                image::writeAtomic(frame.output, seq_.fileType, encode(image, gamma, o_.bitDepth, seq_.window));
-                if (journal_) journal_->record(frame.number, clockText(frame.clock), frame.output);
-            }
-            ++finished_;
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const std::string where = o_.outputToFile ? frame.output.string() : std::string("(no file)");
-            const std::string render = fmt::format("frame {} ({} of {}): {}\n", frame.number, index_,
-                                                   seq_.frames.size(), where);
-            const std::string statistic = fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n",
-                                                      frame.number, seconds, stats.rays.camera, stats.rays.shadow);
-            if (o_.verbose) {
-                log.message(TextStream::Render, render);
-                log.message(TextStream::Statistic, statistic);
-            }
-        } catch (const sdl::SdlError& e) {
-            log.message(sdl::Stream::Fatal, e.what());
-            if (o_.outputToFile) log.save(frame.log);
-            return fatal("", &frame);
-        } catch (const std::exception& e) {
-            log.message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
-            if (o_.outputToFile) log.save(frame.log);
-            return fatal("", &frame);
-        }
-        if (o_.outputToFile) log.save(frame.log);
-        current_ = nullptr;
-        return 0;
-    }
+    void say(TextStream stream, const std::string& text) const { streams_.write(stream, text); }
 
     int fatal(const std::string& why, const FrameSpec* frame) {
         if (!why.empty()) say(TextStream::Fatal, fmt::format("frameray: error: {}\n", why));
@@ -260,7 +578,8 @@ private:
         return 2;
     }
 
-    // Runs on the watcher thread while a frame is still rendering.
+    // Runs on the watcher thread when the run missed the grace time. Only
+    // the frame at the head of the pipeline can be writing its image.
     void emergencyStop() {
         if (const FrameSpec* f = current_) {
             std::error_code ec;
@@ -270,14 +589,35 @@ private:
         runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
     }
 
+    static constexpr size_t kMaxDefaultFramesInFlight = 16;
+
     const options::RenderOptions& o_;
     const Sequence& seq_;
-    RunStreams streams_;
+    mutable RunStreams streams_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
-    std::atomic<const FrameSpec*> current_{nullptr};
-    size_t index_ = 0;
+    std::mutex journalMutex_;
+    std::atomic<const FrameSpec*> current_{nullptr};  // the oldest frame in flight
     std::atomic<size_t> finished_{0};
+
+    // Pipeline state. Stage 1 alone touches next_ and inputDone_; jobs_
+    // and head_ are shared with stage 3 under jobsMutex_.
+    tbb::task_group_context context_;
+    size_t next_ = 0;
+    bool inputDone_ = false;
+    std::mutex jobsMutex_;
+    std::deque<std::unique_ptr<Job>> jobs_;
+    size_t head_ = 0;
+    std::mutex decideMutex_;
+    std::atomic<bool> decided_{false};
+    Outcome outcome_;
+
+    // Statistics (stage 3 appends; read after the pipeline).
+    std::vector<FrameRecord> records_;
+    size_t threads_ = 1;
+    size_t inFlight_ = 1;
+    Clock::time_point runStart_;
+    double cpuStart_ = 0, wallSeconds_ = 0, cpuSecondsUsed_ = 0;
 };
 
 }  // namespace

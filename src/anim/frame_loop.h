@@ -1,7 +1,7 @@
 // Runs a sequence: for every frame, parse the scene afresh with the
 // frame's clock, build the world, render, and write the image and the
-// frame's message log. Frames run one after another for now; the
-// scheduler issue overlaps them.
+// frame's message log. Frames overlap in a oneTBB pipeline (parse serial
+// in frame order, render in parallel, write in order); see frame_loop.cpp.
 #pragma once
 
 #include "anim/sequence.h"

@@ -292,6 +292,12 @@ const OptionSpec kOptions[] = {
     {"Frame_Step", "STP", OptionType::Int, "1", "Render every n-th frame of the animation (or subset).",
      [](RenderOptions& o, const OptionInput& in) { o.frameStep = toInt(in.value); }, FR_WRITE(num(o.frameStep)),
      nullptr},
+    {"Frames_In_Flight", "WF", OptionType::Int, "threads + 1, at most 16",
+     "Frames an animation keeps in flight at once: one is parsed (in frame order) while the others render. 1 "
+     "renders frame after frame; the images are the same either way. With Pre_Frame_Command or "
+     "Post_Frame_Command set, frames run one at a time.",
+     [](RenderOptions& o, const OptionInput& in) { o.framesInFlight = toPositiveInt(in.value); },
+     FR_WRITE(num(o.framesInFlight)), nullptr},
     {"Height", "H", OptionType::Int, "600", "Image height in pixels.",
      [](RenderOptions& o, const OptionInput& in) { o.height = toPositiveInt(in.value); }, FR_WRITE(num(o.height)),
      nullptr},

@@ -82,6 +82,7 @@ struct RenderOptions {
     // Run.
     bool continueTrace = false;
     int workThreads = 0;  // 0: every core
+    int framesInFlight = 0;  // frames parsed/rendered/written at once; 0: work threads + 1
     bool verbose = true;
     bool display = false;
     bool pauseWhenDone = false;

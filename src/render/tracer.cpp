@@ -12,10 +12,20 @@ const scene::Texture& defaultTexture() {
     return kDefault;
 }
 
-// Distance below which a secondary ray ignores crossings: relative to the
-// magnitude of the point, so a scene behaves the same at any scale.
-double selfHitEpsilon(const Vec3& p) {
-    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+// Distance below which a secondary ray leaving the surface point p (found
+// along `ray`) ignores crossings, so it does not re-hit its own surface.
+// p = origin + t * direction is computed in double, so its error is a few
+// ulps of the largest magnitude involved: of p itself and of the ray's
+// origin (a camera far from a surface near the world origin gives |p| ~ 0
+// but an error ~ ulp(|origin|)). 1e-9 of that magnitude is ~10^7 ulps:
+// far above the rounding error, far below any visible detail, and purely
+// relative, so a scene renders the same at any scale
+// (tests/stability/scale_all_primitives.pov checks 1e-4 to 1e5).
+double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
+    const Vec3& o = ray.origin;
+    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z), std::fabs(o.x), std::fabs(o.y),
+                               std::fabs(o.z)});
+    // The floor only keeps the epsilon positive (a scene at the origin).
     return std::max(m * 1e-9, 1e-300);
 }
 
@@ -45,7 +55,7 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
     RGB color = fin.ambient * pigment * scene_.globals.ambientLight + fin.emission * pigment;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-    const double eps = selfHitEpsilon(p);
+    const double eps = selfHitEpsilon(p, ray);
     for (const scene::Light& light : scene_.lights) {
         Vec3 toLight = light.position - p;
         const double dist = length(toLight);

@@ -34,10 +34,18 @@ public:
 
     const scene::Scene& scene() const { return scene_; }
 
+    // The BVH's primitives (the bounded top-level objects) and their world
+    // bounds, both indexed by Embree's primID.
+    struct Primitives {
+        std::vector<const scene::Object*> objects;
+        std::vector<scene::Bounds> bounds;
+    };
+
 private:
     const scene::Scene& scene_;
     RTCDevice device_ = nullptr;
     RTCScene bvh_ = nullptr;
+    Primitives bounded_;
     std::vector<const scene::Object*> unbounded_;
     bool hasBounded_ = false;
 };

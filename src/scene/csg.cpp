@@ -59,16 +59,21 @@ bool rayMeetsBox(const Ray& ray, double tMin, const Bounds& b) {
 // box is a thin slab): then the slab limits which rays see the rest.
 // Elsewhere the box only saves work, so it is only computed for those.
 bool rayMeetsOperandBoxes(const Object& node, const Ray& ray, double tMin) {
+    // Called for every ray that reaches the node: decide whether the box
+    // matters before computing it (operand bounds cost a walk of the tree).
+    auto uninverted = [&](size_t i) {
+        return node.children[i]->inverse == (node.op == CsgOp::Difference && i > 0);
+    };
     bool matters = false;
-    Bounds box = Bounds::infinite();
-    for (size_t i = 0; i < node.children.size(); ++i) {
+    for (size_t i = 0; i < node.children.size() && !matters; ++i) {
         const Object& child = *node.children[i];
-        const bool inverted = child.inverse != (node.op == CsgOp::Difference && i > 0);
-        if (inverted) continue;
-        box = box.intersected(child.surfaceBounds());
-        matters = matters || (child.shape && child.shape->insideReachesPastBounds());
+        matters = uninverted(i) && child.shape && child.shape->insideReachesPastBounds();
     }
-    return !matters || rayMeetsBox(ray, tMin, box);
+    if (!matters) return true;
+    Bounds box = Bounds::infinite();
+    for (size_t i = 0; i < node.children.size(); ++i)
+        if (uninverted(i)) box = box.intersected(node.children[i]->surfaceBounds());
+    return rayMeetsBox(ray, tMin, box);
 }
 
 }  // namespace

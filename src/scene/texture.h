@@ -1,25 +1,63 @@
-// Surface appearance: pigment and finish (seed 003 §5.4). The skeleton has
-// solid-colour pigments; patterns arrive with the textures issue behind the
-// same Pigment interface.
+// Surface appearance: pigment and finish (seed 003 §5.4). Pigments are solid
+// colours or deterministic patterns (patterns.h) with colour lists, colour
+// maps (color_map.h) or pigment maps.
 #pragma once
 
 #include <memory>
+#include <vector>
+
+#include "scene/color_map.h"
+#include "scene/patterns.h"
 
 #include "util/color.h"
 #include "util/matrix.h"
 
 namespace frameray::scene {
 
+// A pigment is a solid colour, a colour-list pattern (checker, hexagon,
+// brick: one sub-pigment per index), a colour-mapped pattern or a
+// pigment-mapped pattern. Evaluation is const, thread-safe and does not
+// allocate.
 class Pigment {
 public:
+    enum class Kind { Solid, List, ColorMapped, PigmentMapped };
+    struct MapEntry {
+        double value;
+        std::shared_ptr<const Pigment> pigment;
+    };
+
     Pigment() = default;
     explicit Pigment(const Color& c) : color_(c) {}
-    // Colour at a point in the texture's space.
-    Color at(const Vec3& /*p*/) const { return color_; }
+
+    // Colour at a point in the texture's space; the pigment's own
+    // transformation is applied here.
+    Color at(const Vec3& p) const;
     const Color& solidColor() const { return color_; }
+    Kind kind() const { return kind_; }
+    bool isSolid() const { return kind_ == Kind::Solid; }
+
+    // Builders used by the parser.
+    void setSolid(const Color& c) { kind_ = Kind::Solid; color_ = c; }
+    void setPattern(const Pattern& p);  // picks List or ColorMapped from the pattern
+    Pattern& pattern() { return pattern_; }
+    const Pattern& pattern() const { return pattern_; }
+    void setList(std::vector<std::shared_ptr<const Pigment>> list) { list_ = std::move(list); }
+    const std::vector<std::shared_ptr<const Pigment>>& list() const { return list_; }
+    void setColorMap(ColorMap map);
+    void setPigmentMap(std::vector<MapEntry> map);
+    // Pigment-local transformation ("this, then t"); composes before the
+    // texture's transform.
+    void transform(const Transform& t) { transform_ = transform_.then(t); hasTransform_ = true; }
 
 private:
+    Kind kind_ = Kind::Solid;
     Color color_;  // POV-Ray's default pigment is black
+    Pattern pattern_;
+    std::vector<std::shared_ptr<const Pigment>> list_;
+    ColorMap colorMap_;
+    std::vector<MapEntry> pigmentMap_;
+    bool hasTransform_ = false;
+    Transform transform_;
 };
 
 // POV-Ray 3.7 finish defaults.

@@ -201,6 +201,12 @@ private:
     scene::Light parseLightSource();
     TexturePtr parseTexture(const scene::Texture* base);
     PigmentPtr parsePigment();
+    // Pattern keywords and their modifiers inside pigment { }; false when
+    // the next token is none of them.
+    bool parsePigmentPatternItem(scene::Pigment& pigment);
+    PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
+    scene::ColorMap parseColorMap();
+    std::vector<scene::Pigment::MapEntry> parsePigmentMap();
     FinishPtr parseFinish(const scene::Finish* base);
     void parseFinishItems(scene::Finish& finish);
     void parseGlobalSettings();

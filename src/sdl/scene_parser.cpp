@@ -2,6 +2,7 @@
 // global settings. Builds scene:: values from the token stream.
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -386,39 +387,81 @@ Transform Interpreter::parseTransformBlock() {
 
 // --- textures ------------------------------------------------------------------
 
+namespace {
+
+bool startsColor(const Token& t) {
+    return t.isIdentifier() || t.is(Sym::Less) || t.kind == TokenKind::Number || t.is(Keyword::kw_color) ||
+           t.is(Keyword::kw_colour) || t.is(Keyword::kw_rgb) || t.is(Keyword::kw_rgbf) || t.is(Keyword::kw_rgbt) ||
+           t.is(Keyword::kw_rgbft) || t.is(Keyword::kw_srgb) || t.is(Keyword::kw_srgbf) ||
+           t.is(Keyword::kw_srgbt) || t.is(Keyword::kw_srgbft) || t.is(Keyword::kw_red) ||
+           t.is(Keyword::kw_green) || t.is(Keyword::kw_blue) || t.is(Keyword::kw_filter) ||
+           t.is(Keyword::kw_transmit) || t.is(Sym::LParen);
+}
+
+// Pattern keywords that take a colour list or a colour map, and their
+// default colours (POV-Ray's: checker blue/green, hexagon blue/green/red,
+// brick grey mortar and red brick).
+std::optional<scene::PatternKind> patternKeyword(Keyword k) {
+    using scene::PatternKind;
+    switch (k) {
+        case Keyword::kw_checker: return PatternKind::Checker;
+        case Keyword::kw_hexagon: return PatternKind::Hexagon;
+        case Keyword::kw_brick: return PatternKind::Brick;
+        case Keyword::kw_gradient: return PatternKind::Gradient;
+        case Keyword::kw_onion: return PatternKind::Onion;
+        case Keyword::kw_radial: return PatternKind::Radial;
+        case Keyword::kw_spherical: return PatternKind::Spherical;
+        case Keyword::kw_cylindrical: return PatternKind::Cylindrical;
+        case Keyword::kw_planar: return PatternKind::Planar;
+        case Keyword::kw_boxed: return PatternKind::Boxed;
+        case Keyword::kw_leopard: return PatternKind::Leopard;
+        // quilted, spiral1 and spiral2 do not match povray yet: they stay
+        // "not supported yet" until they do.
+        default: return std::nullopt;
+    }
+}
+
+std::vector<Color> defaultListColors(scene::PatternKind kind) {
+    using scene::PatternKind;
+    const Color blue(RGB(0, 0, 1)), green(RGB(0, 1, 0)), red(RGB(1, 0, 0));
+    switch (kind) {
+        case PatternKind::Checker: return {blue, green};
+        case PatternKind::Hexagon: return {blue, green, red};
+        case PatternKind::Brick: return {Color(RGB(0.5)), Color(RGB(0.6, 0.15, 0.15))};
+        default: return {};
+    }
+}
+
+}  // namespace
+
 PigmentPtr Interpreter::parsePigment() {
     next();  // pigment
     expect(Sym::LBrace, "'{' after 'pigment'");
-    PigmentPtr result = std::make_shared<scene::Pigment>();
+    auto result = std::make_shared<scene::Pigment>();
     const Token t = peek();
     if (t.isIdentifier()) {
         const Value* v = lookup(std::string(t.text));
         if (v && std::holds_alternative<PigmentPtr>(*v)) {
             next();
-            result = std::get<PigmentPtr>(*v);
+            result = std::make_shared<scene::Pigment>(*std::get<PigmentPtr>(*v));
         }
     }
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token item = peek();
-        Transform ignored;
-        if (parseTransformation(ignored)) continue;  // a solid colour looks the same anywhere
+        Transform step;
+        if (parseTransformation(step)) {
+            result->transform(step);
+            continue;
+        }
         if (item.is(Keyword::kw_quick_color) || item.is(Keyword::kw_quick_colour)) {
             next();
             parseColor();
             continue;
         }
-        const bool colorStart = item.isIdentifier() || item.is(Sym::Less) || item.kind == TokenKind::Number ||
-                                item.is(Keyword::kw_color) || item.is(Keyword::kw_colour) ||
-                                item.is(Keyword::kw_rgb) || item.is(Keyword::kw_rgbf) ||
-                                item.is(Keyword::kw_rgbt) || item.is(Keyword::kw_rgbft) ||
-                                item.is(Keyword::kw_srgb) || item.is(Keyword::kw_srgbf) ||
-                                item.is(Keyword::kw_srgbt) || item.is(Keyword::kw_srgbft) ||
-                                item.is(Keyword::kw_red) || item.is(Keyword::kw_green) ||
-                                item.is(Keyword::kw_blue) || item.is(Keyword::kw_filter) ||
-                                item.is(Keyword::kw_transmit) || item.is(Sym::LParen);
-        if (colorStart) {
-            result = std::make_shared<scene::Pigment>(parseColor());
+        if (parsePigmentPatternItem(*result)) continue;
+        if (startsColor(item)) {
+            result->setSolid(parseColor());
             continue;
         }
         if (item.kind == TokenKind::Word && item.kw != Keyword::None)
@@ -426,6 +469,182 @@ PigmentPtr Interpreter::parsePigment() {
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
     return result;
+}
+
+PigmentPtr Interpreter::parsePigmentListEntry() {
+    const Token t = peek();
+    if (t.is(Keyword::kw_pigment)) return parsePigment();
+    if (t.isIdentifier()) {
+        const Value* v = lookup(std::string(t.text));
+        if (v && std::holds_alternative<PigmentPtr>(*v)) {
+            next();
+            return std::get<PigmentPtr>(*v);
+        }
+    }
+    return std::make_shared<const scene::Pigment>(parseColor());
+}
+
+bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
+    const Token item = peek();
+    if (const auto kind = patternKeyword(item.kw)) {
+        next();
+        scene::Pattern pattern = pigment.pattern();
+        pattern.kind = *kind;
+        if (*kind == scene::PatternKind::Gradient) {
+            const Vec3 g = parseVec3();
+            const double len = length(g);
+            if (len == 0) fail(item, "gradient vector is zero");
+            pattern.gradient = g * (1.0 / len);
+        } else if (*kind == scene::PatternKind::Spiral1 || *kind == scene::PatternKind::Spiral2) {
+            pattern.arms = static_cast<int>(parseFloat());
+        }
+        pigment.setPattern(pattern);
+        if (pattern.isList()) {
+            // Up to listSize colours or pigments, optionally comma-separated;
+            // missing ones keep the pattern's defaults.
+            const std::vector<Color> defaults = defaultListColors(*kind);
+            std::vector<PigmentPtr> list;
+            for (const Color& c : defaults) list.push_back(std::make_shared<const scene::Pigment>(c));
+            for (std::size_t i = 0; i < defaults.size(); ++i) {
+                if (i > 0) accept(Sym::Comma);
+                const Token n = peek();
+                const bool isPigmentId = n.isIdentifier() && lookup(std::string(n.text)) &&
+                                         std::holds_alternative<PigmentPtr>(*lookup(std::string(n.text)));
+                if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
+                list[i] = parsePigmentListEntry();
+            }
+            pigment.setList(std::move(list));
+        }
+        return true;
+    }
+    auto editPattern = [&](auto&& edit) {
+        scene::Pattern p = pigment.pattern();
+        edit(p);
+        pigment.pattern() = p;
+    };
+    switch (item.kw) {
+        case Keyword::kw_color_map:
+        case Keyword::kw_colour_map:
+            pigment.setColorMap(parseColorMap());
+            return true;
+        case Keyword::kw_brick_size: {
+            next();
+            const Vec3 v = parseVec3();
+            editPattern([&](scene::Pattern& p) { p.brickSize = v; });
+            return true;
+        }
+        case Keyword::kw_mortar: {
+            next();
+            const double m = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.mortar = m; });
+            return true;
+        }
+        case Keyword::kw_control0: {
+            next();
+            const double c = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.control0 = c; });
+            return true;
+        }
+        case Keyword::kw_control1: {
+            next();
+            const double c = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.control1 = c; });
+            return true;
+        }
+        case Keyword::kw_frequency: {
+            next();
+            const double f = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.frequency = f; });
+            return true;
+        }
+        case Keyword::kw_phase: {
+            next();
+            const double f = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.phase = f; });
+            return true;
+        }
+        case Keyword::kw_ramp_wave:
+        case Keyword::kw_triangle_wave:
+        case Keyword::kw_sine_wave:
+        case Keyword::kw_scallop_wave:
+        case Keyword::kw_cubic_wave: {
+            next();
+            const scene::WaveType w = item.kw == Keyword::kw_ramp_wave       ? scene::WaveType::Ramp
+                                      : item.kw == Keyword::kw_triangle_wave ? scene::WaveType::Triangle
+                                      : item.kw == Keyword::kw_sine_wave     ? scene::WaveType::Sine
+                                      : item.kw == Keyword::kw_scallop_wave  ? scene::WaveType::Scallop
+                                                                             : scene::WaveType::Cubic;
+            editPattern([&](scene::Pattern& p) { p.wave = w; });
+            return true;
+        }
+        case Keyword::kw_poly_wave: {
+            next();
+            double e = 1.0;
+            const Token n = peek();
+            if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
+                (n.isIdentifier() && lookup(std::string(n.text)) &&
+                 std::holds_alternative<double>(*lookup(std::string(n.text)))))
+                e = parseFloat();
+            editPattern([&](scene::Pattern& p) {
+                p.wave = scene::WaveType::Poly;
+                p.exponent = e;
+            });
+            return true;
+        }
+        default: return false;
+    }
+}
+
+scene::ColorMap Interpreter::parseColorMap() {
+    const Token kw = next();  // color_map
+    expect(Sym::LBrace, "'{' after 'color_map'");
+    std::vector<scene::ColorMap::Entry> entries;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token open = peek();
+        expect(Sym::LBracket, "'[' or '}' in color_map");
+        const double v1 = parseFloat();
+        const bool hadComma = accept(Sym::Comma);
+        if (hadComma && peek().kind == TokenKind::Number) {
+            // [v1, v2 color C1 color C2]: a band from C1 to C2
+            const double v2 = parseFloat();
+            const Color c1 = parseColor();
+            const Color c2 = parseColor();
+            entries.push_back({v1, c1});
+            entries.push_back({v2, c2});
+        } else {
+            entries.push_back({v1, parseColor()});
+        }
+        expect(Sym::RBracket, "']' after a color_map entry");
+        if (entries.size() > scene::ColorMap::kMaxEntries)
+            fail(open, fmt::format("a color_map holds at most {} entries", scene::ColorMap::kMaxEntries));
+    }
+    if (entries.empty()) fail(kw, "color_map needs at least one entry");
+    for (std::size_t i = 1; i < entries.size(); ++i)
+        if (entries[i].value < entries[i - 1].value)
+            fail(kw, "color_map entries must be in increasing order");
+    return scene::ColorMap(std::move(entries));
+}
+
+std::vector<scene::Pigment::MapEntry> Interpreter::parsePigmentMap() {
+    const Token kw = next();  // pigment_map
+    expect(Sym::LBrace, "'{' after 'pigment_map'");
+    std::vector<scene::Pigment::MapEntry> entries;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        expect(Sym::LBracket, "'[' or '}' in pigment_map");
+        const double v = parseFloat();
+        accept(Sym::Comma);
+        entries.push_back({v, parsePigmentListEntry()});
+        expect(Sym::RBracket, "']' after a pigment_map entry");
+    }
+    if (entries.empty()) fail(kw, "pigment_map needs at least one entry");
+    if (entries.size() > scene::ColorMap::kMaxEntries)
+        fail(kw, fmt::format("a pigment_map holds at most {} entries", scene::ColorMap::kMaxEntries));
+    for (std::size_t i = 1; i < entries.size(); ++i)
+        if (entries[i].value < entries[i - 1].value)
+            fail(kw, "pigment_map entries must be in increasing order");
+    return entries;
 }
 
 void Interpreter::parseFinishItems(scene::Finish& f) {
@@ -591,26 +810,71 @@ scene::Light Interpreter::parseLightSource() {
     light.position = parseVec3();
     accept(Sym::Comma);
     light.color = parseColor().rgb;
+    // looks_like { OBJECT }: a visible stand-in for the light. As povray 3.7
+    // does (checked against it): the object is moved to where the light is
+    // when looks_like is read, the light's later transforms move both, and
+    // it casts no shadow from any light (its own light sits inside it).
+    std::shared_ptr<scene::Object> looksLike;
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token t = peek();
         Transform step;
         if (parseTransformation(step)) {
             light.position = step.point(light.position);
+            if (looksLike) looksLike->transformBy(step);
             continue;
         }
         next();
         switch (t.kw) {
             case Keyword::kw_shadowless: light.shadowless = true; break;
+            case Keyword::kw_looks_like: {
+                expect(Sym::LBrace, "'{' after 'looks_like'");
+                const Token at = peek();
+                if (isObjectStart(at)) {
+                    looksLike = std::make_shared<scene::Object>(*parseObject());
+                    looksLike->transformBy(Transform::translate(light.position));
+                    expect(Sym::RBrace, "'}' closing 'looks_like'");
+                } else if (at.isIdentifier()) {
+                    // looks_like { Bulb scale 0.8 }: povray moves the
+                    // object to the light first and applies the modifiers
+                    // after that (the scale above also scales the position;
+                    // checked against povray 3.7), unlike looks_like {
+                    // object { Bulb scale 0.8 } }.
+                    next();
+                    const Value v = identifierValue(at);
+                    const auto* src = std::get_if<ObjectPtr>(&v);
+                    if (!src) fail(at, fmt::format("'{}' is a {}, not an object", at.text, valueKindName(v)));
+                    looksLike = std::make_shared<scene::Object>(**src);
+                    looksLike->transformBy(Transform::translate(light.position));
+                    std::optional<scene::Texture> texture;
+                    if (looksLike->texture) texture = *looksLike->texture;
+                    looksLike->texture.reset();
+                    while (!accept(Sym::RBrace)) {
+                        if (!parseObjectModifier(*looksLike, texture)) {
+                            const Token bad = peek();
+                            fail(bad, fmt::format("expected an object modifier or '}}' in looks_like, found {}",
+                                                  describeToken(bad)));
+                        }
+                    }
+                    if (texture) looksLike->texture = std::make_shared<const scene::Texture>(*texture);
+                } else {
+                    fail(at, fmt::format("expected an object in looks_like, found {}", describeToken(at)));
+                }
+                looksLike->noShadow = true;
+                break;
+            }
             case Keyword::kw_point_at: case Keyword::kw_spotlight: case Keyword::kw_cylinder:
             case Keyword::kw_parallel: case Keyword::kw_area_light: case Keyword::kw_fade_distance:
-            case Keyword::kw_fade_power: case Keyword::kw_looks_like: case Keyword::kw_projected_through:
+            case Keyword::kw_fade_power: case Keyword::kw_projected_through:
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                     unsupported(t, fmt::format("'{}' in light_source", t.text));
                 fail(t, fmt::format("expected a light_source item or '}}', found {}", describeToken(t)));
         }
     }
+    // Placed in the scene like any object (which settles what its CSG
+    // children inherit, the no_shadow flag included).
+    if (looksLike) scene_.objects.push_back(scene::csg::resolveInheritance(looksLike));
     return light;
 }
 

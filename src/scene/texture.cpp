@@ -1,0 +1,50 @@
+#include "scene/texture.h"
+
+namespace frameray::scene {
+
+void Pigment::setPattern(const Pattern& p) {
+    pattern_ = p;
+    kind_ = p.isList() ? Kind::List : Kind::ColorMapped;
+    if (kind_ == Kind::ColorMapped && colorMap_.empty()) colorMap_ = ColorMap::grayscale();
+}
+
+void Pigment::setColorMap(ColorMap map) {
+    colorMap_ = std::move(map);
+    if (kind_ == Kind::PigmentMapped) kind_ = Kind::ColorMapped;
+}
+
+void Pigment::setPigmentMap(std::vector<MapEntry> map) {
+    pigmentMap_ = std::move(map);
+    kind_ = Kind::PigmentMapped;
+}
+
+Color Pigment::at(const Vec3& point) const {
+    if (kind_ == Kind::Solid) return color_;
+    const Vec3 p = hasTransform_ ? transform_.inversePoint(point) : point;
+    switch (kind_) {
+        case Kind::List: {
+            const auto i = static_cast<std::size_t>(pattern_.index(p));
+            return i < list_.size() && list_[i] ? list_[i]->at(p) : Color();
+        }
+        case Kind::ColorMapped: return colorMap_.at(pattern_.value(p));
+        case Kind::PigmentMapped: {
+            if (pigmentMap_.empty()) return Color();
+            const double v = pattern_.value(p);
+            if (v <= pigmentMap_.front().value) return pigmentMap_.front().pigment->at(p);
+            std::size_t hi = 1;
+            while (hi < pigmentMap_.size() && pigmentMap_[hi].value <= v) ++hi;
+            if (hi == pigmentMap_.size()) return pigmentMap_.back().pigment->at(p);
+            const MapEntry& a = pigmentMap_[hi - 1];
+            const MapEntry& b = pigmentMap_[hi];
+            const double span = b.value - a.value;
+            if (span <= 0) return b.pigment->at(p);
+            const double t = (v - a.value) / span, s = 1.0 - t;
+            const Color ca = a.pigment->at(p), cb = b.pigment->at(p);
+            return Color(ca.rgb * s + cb.rgb * t, ca.filter * s + cb.filter * t, ca.transmit * s + cb.transmit * t);
+        }
+        case Kind::Solid: break;
+    }
+    return color_;
+}
+
+}  // namespace frameray::scene
