@@ -1,5 +1,7 @@
 #include "scene/shapes.h"
 
+#include "scene/shape_math.h"
+
 #include <cmath>
 
 namespace frameray::scene {
@@ -16,26 +18,10 @@ bool Shape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const 
 
 namespace {
 
-// Both roots of |o + t d - c|^2 = r^2, in increasing order. Uses the
-// formulation that avoids cancellation when the ray starts far from the
-// sphere (the closest-approach vector instead of b^2 - 4ac).
+// Both roots of |o + t d - c|^2 = r^2, in increasing order, by the
+// cancellation-free closest-approach formulation of shape_math.h.
 bool sphereRoots(const Ray& ray, const Vec3& center, double radius, double& t0, double& t1) {
-    const Vec3 f = ray.origin - center;
-    const double a = dot(ray.direction, ray.direction);
-    const double b = -dot(f, ray.direction);
-    const Vec3 closest = f + ray.direction * (b / a);
-    const double disc = radius * radius - dot(closest, closest);
-    if (disc < 0) return false;
-    const double c = dot(f, f) - radius * radius;
-    const double q = b + std::copysign(std::sqrt(a * disc), b);
-    if (q == 0) {
-        t0 = t1 = 0;
-        return true;
-    }
-    t0 = c / q;
-    t1 = q / a;
-    if (t0 > t1) std::swap(t0, t1);
-    return true;
+    return detail::distanceRoots(ray.origin - center, ray.direction, radius * radius, t0, t1);
 }
 
 }  // namespace
