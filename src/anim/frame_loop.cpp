@@ -390,6 +390,25 @@ private:
         return nullptr;
     }
 
+    render::FrameSettings frameSettings(const render::GammaEncoding& gamma) const {
+        render::FrameSettings f;
+        f.width = o_.width;
+        f.height = o_.height;
+        f.window = {seq_.window.x0, seq_.window.y0, seq_.window.x1, seq_.window.y1};
+        f.blockSize = o_.renderBlockSize;
+        if (o_.antialias) {
+            render::AntialiasSettings& aa = f.antialias;
+            aa.method = o_.samplingMethod;
+            // povray clips these (threshold and jitter to [0,1]).
+            aa.threshold = std::clamp(o_.antialiasThreshold, 0.0, 1.0);
+            aa.depth = o_.antialiasDepth;
+            aa.jitter = o_.jitter ? std::clamp(o_.jitterAmount, 0.0, 1.0) : 0.0;
+            aa.gamma = o_.antialiasGamma;
+            aa.toLinear = [gamma](double v) { return gamma.toLinear(v); };
+        }
+        return f;
+    }
+
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
         if (job.kind != Job::Kind::Render || job.failed || decided_ || stopRequested()) return;
@@ -398,12 +417,10 @@ private:
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
             start = Clock::now();
-            const render::FrameImage image = render::renderFrame(world, {o_.width, o_.height}, job.stats);
+            const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
+            const render::FrameImage image = render::renderFrame(world, frameSettings(gamma), job.stats);
             job.renderSeconds = secondsSince(start);
-            if (o_.outputToFile && !decided_) {
-                const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
-                job.encoded = encode(image, gamma, o_.bitDepth, seq_.window);
-            }
+            if (o_.outputToFile && !decided_) job.encoded = encode(image, gamma, o_.bitDepth, seq_.window);
         } catch (const sdl::SdlError& e) {
             job.log->message(sdl::Stream::Fatal, e.what());
             job.failed = true;

@@ -67,11 +67,16 @@ int subsetFrame(double value, int initial, int final) {
 }
 
 // Start_Row & co: a start value below 1 is a fraction of the size, an end
-// value up to 1 is; other values are 1-based pixel numbers.
-int windowStart(double v, int size) { return v < 1.0 ? static_cast<int>(std::floor(v * size)) : static_cast<int>(v) - 1; }
+// value up to 1 is; other values are 1-based pixel numbers. povray keeps
+// these options in single precision, which shows: +EC0.7 at width 160
+// ends at column 111, not 112 (0.7f * 160 = 111.9999981).
+int windowFraction(double v, int size) {
+    return static_cast<int>(std::floor(static_cast<double>(static_cast<float>(v)) * size));
+}
+int windowStart(double v, int size) { return v < 1.0 ? windowFraction(v, size) : static_cast<int>(v) - 1; }
 int windowEnd(double v, int size) {
     if (v < 0) return size;
-    return v <= 1.0 ? static_cast<int>(std::floor(v * size)) : static_cast<int>(v);
+    return v <= 1.0 ? windowFraction(v, size) : static_cast<int>(v);
 }
 
 }  // namespace

@@ -200,11 +200,14 @@ const OptionSpec kOptions[] = {
              o.antialias = toBool(in);
          }
      },
-     FR_WRITE(onOff(o.antialias)),
-     [](const RenderOptions& o) -> const char* { return o.antialias ? "anti-aliasing" : nullptr; }},
+     FR_WRITE(onOff(o.antialias)), nullptr},
     {"Antialias_Threshold", "", OptionType::Float, "0.3", "Colour difference that triggers super-sampling.",
      [](RenderOptions& o, const OptionInput& in) { o.antialiasThreshold = toNonNegative(in.value); },
      FR_WRITE(num(o.antialiasThreshold)), nullptr},
+    {"Antialias_Gamma", "", OptionType::Float, "2.5",
+     "Gamma in which anti-aliasing compares colours (0: linear light).",
+     [](RenderOptions& o, const OptionInput& in) { o.antialiasGamma = toNonNegative(in.value); },
+     FR_WRITE(num(o.antialiasGamma)), nullptr},
     {"Bits_Per_Color", "", OptionType::Int, "8", "Bits per colour channel of the output file (also +FN16).",
      [](RenderOptions& o, const OptionInput& in) { o.bitDepth = std::clamp(toInt(in.value), 1, 16); },
      FR_WRITE(num(o.bitDepth)), nullptr},
@@ -380,6 +383,10 @@ const OptionSpec kOptions[] = {
          return o.quality < 4 ? "Quality below 4 (+Q0..+Q3 drop shadows and shading)" : nullptr;
      }},
     FR_STREAM(TextStream::Render, "Render", "R", "render progress"),
+    {"Render_Block_Size", "BS", OptionType::Int, "32",
+     "Side of the square pixel blocks rendered at once; anti-aliasing depends on it as in povray (4..).",
+     [](RenderOptions& o, const OptionInput& in) { o.renderBlockSize = std::max(toInt(in.value), 4); },
+     FR_WRITE(num(o.renderBlockSize)), nullptr},
     {"Sampling_Method", "AM", OptionType::Int, "1", "Anti-aliasing method: 1 non-recursive, 2 adaptive.",
      [](RenderOptions& o, const OptionInput& in) { o.samplingMethod = std::clamp(toInt(in.value), 1, 2); },
      FR_WRITE(num(o.samplingMethod)), nullptr},

@@ -66,10 +66,12 @@ struct RenderOptions {
     // Tracing quality.
     bool antialias = false;
     double antialiasThreshold = 0.3;
+    double antialiasGamma = 2.5;
     int antialiasDepth = 3;
     bool jitter = true;
     double jitterAmount = 1.0;
     int samplingMethod = 1;
+    int renderBlockSize = 32;
     int quality = 9;
     bool bounding = true;
     int boundingThreshold = 3;

@@ -18,10 +18,15 @@ GammaEncoding GammaEncoding::forScene(const scene::Scene& scene, double fileGamm
     return g;
 }
 
+double GammaEncoding::toLinear(double v) const {
+    if (curve_ == Curve::Identity || assumedGamma_ == 1.0) return v;
+    return std::pow(v, assumedGamma_);
+}
+
 double GammaEncoding::encode(double v) const {
     if (curve_ == Curve::Identity) return v;
     // Working space -> linear light -> file encoding.
-    const double linear = assumedGamma_ == 1.0 ? v : std::pow(v, assumedGamma_);
+    const double linear = toLinear(v);
     if (curve_ == Curve::Power) return std::pow(linear, 1.0 / fileGamma_);
     return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }

@@ -20,6 +20,10 @@ public:
     // Maps a working-space value in [0,1] (already clipped) to [0,1] file space.
     double encode(double working) const;
 
+    // Working space -> linear light (identity when gamma handling is off,
+    // as for pre-3.7 scenes without assumed_gamma).
+    double toLinear(double working) const;
+
 private:
     double assumedGamma_ = 1.0;
     Curve curve_ = Curve::SRGB;

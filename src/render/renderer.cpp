@@ -1,16 +1,12 @@
 #include "render/renderer.h"
 
-#include <tbb/blocked_range2d.h>
+#include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 
 namespace frameray::render {
-
-namespace {
-constexpr int kTileSize = 16;
-}
 
 scene::Ray primaryRay(const scene::Camera& camera, double x, double y, int width, int height) {
     // Screen coordinates in [-0.5, 0.5], y up.
@@ -24,26 +20,46 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     image.width = settings.width;
     image.height = settings.height;
     image.rgb.assign(static_cast<size_t>(settings.width) * settings.height * 3, 0.0f);
+    PixelBlock window = settings.window;
+    if (window.x1 <= window.x0 || window.y1 <= window.y0) window = {0, 0, settings.width, settings.height};
+    const int blockSize = std::max(settings.blockSize, 4);
+    const int blocksX = (window.x1 - window.x0 + blockSize - 1) / blockSize;
+    const int blocksY = (window.y1 - window.y0 + blockSize - 1) / blockSize;
+
     const Tracer tracer(world);
     const scene::Camera& camera = world.scene().camera;
-    tbb::combinable<RayCounts> counts;
+    tbb::combinable<RayCounts> rayCounts;
+    tbb::combinable<AntialiasCounts> aaCounts;
 
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, settings.height, kTileSize, 0, settings.width, kTileSize),
-        [&](const tbb::blocked_range2d<int>& tile) {
-            RayCounts& local = counts.local();
-            for (int y = tile.rows().begin(); y < tile.rows().end(); ++y)
-                for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                    const scene::Ray ray =
-                        primaryRay(camera, x + 0.5, y + 0.5, settings.width, settings.height);
-                    const RGB c = tracer.traceCamera(ray, local);
+    tbb::parallel_for(tbb::blocked_range<int>(0, blocksX * blocksY), [&](const tbb::blocked_range<int>& range) {
+        RayCounts& rays = rayCounts.local();
+        AntialiasCounts& aa = aaCounts.local();
+        const SampleFunction sample = [&](double x, double y) {
+            // (x, y) = (i, j) is the centre of pixel column i, row j.
+            const scene::Ray ray = primaryRay(camera, x + 0.5, y + 0.5, settings.width, settings.height);
+            return PixelSample{tracer.traceCamera(ray, rays), 0.0};
+        };
+        for (int index = range.begin(); index < range.end(); ++index) {
+            const int bx = window.x0 + (index % blocksX) * blockSize;
+            const int by = window.y0 + (index / blocksX) * blockSize;
+            const PixelBlock block{bx, by, std::min(bx + blockSize, window.x1), std::min(by + blockSize, window.y1)};
+            const std::vector<PixelSample> pixels = sampleBlock(block, settings.antialias, sample, aa);
+            size_t i = 0;
+            for (int y = block.y0; y < block.y1; ++y)
+                for (int x = block.x0; x < block.x1; ++x, ++i) {
+                    const RGB& c = pixels[i].rgb;
                     float* out = &image.rgb[(static_cast<size_t>(y) * settings.width + x) * 3];
                     out[0] = static_cast<float>(std::clamp(c.r, 0.0, 1.0));
                     out[1] = static_cast<float>(std::clamp(c.g, 0.0, 1.0));
                     out[2] = static_cast<float>(std::clamp(c.b, 0.0, 1.0));
                 }
-        });
-    counts.combine_each([&](const RayCounts& c) { stats.rays += c; });
+        }
+    });
+    rayCounts.combine_each([&](const RayCounts& c) { stats.rays += c; });
+    aaCounts.combine_each([&](const AntialiasCounts& c) {
+        stats.antialias.supersampledPixels += c.supersampledPixels;
+        stats.antialias.samples += c.samples;
+    });
     return image;
 }
 

@@ -1,12 +1,13 @@
 // Renders one frame: primary rays through the camera for every pixel of
-// the render window, in tiles spread over threads by oneTBB. The result is
-// deterministic whatever the thread count (each pixel depends only on its
-// own coordinates).
+// the render window, in blocks spread over threads by oneTBB, anti-aliased
+// as render/antialias.h describes. The result is deterministic whatever the
+// thread count (each block depends only on its own position).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "render/antialias.h"
 #include "render/tracer.h"
 #include "render/world.h"
 
@@ -15,6 +16,11 @@ namespace frameray::render {
 struct FrameSettings {
     int width = 320;
     int height = 240;
+    // The pixels rendered, [x0,x1) x [y0,y1); empty means the whole image.
+    // Pixels outside stay black.
+    PixelBlock window{0, 0, 0, 0};
+    int blockSize = 32;  // Render_Block_Size: anti-aliasing depends on it
+    AntialiasSettings antialias;
 };
 
 // Linear working-space colours, clipped to [0,1], row-major from the top.
@@ -26,6 +32,7 @@ struct FrameImage {
 
 struct FrameStats {
     RayCounts rays;
+    AntialiasCounts antialias;
 };
 
 FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameStats& stats);

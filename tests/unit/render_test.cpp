@@ -62,8 +62,11 @@ TEST(Renderer, DeterministicAcrossRuns) {
     s.lights.push_back({{5, 5, -5}, RGB(1), false});
     render::World w(s);
     render::FrameStats a, b;
-    const auto i1 = render::renderFrame(w, {40, 30}, a);
-    const auto i2 = render::renderFrame(w, {40, 30}, b);
+    render::FrameSettings size;
+    size.width = 40;
+    size.height = 30;
+    const auto i1 = render::renderFrame(w, size, a);
+    const auto i2 = render::renderFrame(w, size, b);
     EXPECT_EQ(i1.rgb, i2.rgb);
     EXPECT_EQ(a.rays.camera, 1200u);
     // The centre pixel sees the lit sphere, a corner sees the background.
