@@ -398,7 +398,7 @@ private:
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
             start = Clock::now();
-            const render::FrameImage image = render::renderFrame(world, {o_.width, o_.height}, job.stats);
+            const render::FrameImage image = render::renderFrame(world, {o_.width, o_.height, o_.quality}, job.stats);
             job.renderSeconds = secondsSince(start);
             if (o_.outputToFile && !decided_) {
                 const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);

@@ -24,7 +24,7 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     image.width = settings.width;
     image.height = settings.height;
     image.rgb.assign(static_cast<size_t>(settings.width) * settings.height * 3, 0.0f);
-    const Tracer tracer(world);
+    const Tracer tracer(world, settings.quality >= 9);
     const scene::Camera& camera = world.scene().camera;
     tbb::combinable<RayCounts> counts;
 

@@ -15,6 +15,7 @@ namespace frameray::render {
 struct FrameSettings {
     int width = 320;
     int height = 240;
+    int quality = 9;  // +Q: fog and rainbows from 9 up
 };
 
 // Linear working-space colours, clipped to [0,1], row-major from the top.
