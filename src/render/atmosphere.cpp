@@ -23,10 +23,11 @@ RGB passedThrough(const Color& c) { return c.rgb * c.filter + RGB(c.transmit); }
 // Sky sphere and background from language version 3.7 on: the background
 // is one more layer below the sky's pigments, and the layers combine as a
 // layered texture does. Each layer adds its colour weighted by its opacity
-// (1 - transmit; filtering layers stay opaque for their own colour) and by
-// what the layers above let through. The background's filter and transmit
-// count even without an alpha channel (checked against povray 3.7.0.10:
-// background { rgbt <c, 0.5> } renders 0.5 c).
+// (1 - filter - transmit) and by what the layers above let through.
+// The background's opacity ignores its filter but not its transmit, even
+// without an alpha channel (measured with povray 3.7.0.10: background
+// { rgbt <c, 0.5> } renders 0.5 c, background { rgbf <c, 0.5> } renders c,
+// a sky layer rgbf <c, 0.7> over black renders 0.3 c).
 Color layeredSky(const scene::Scene& scene, const Vec3& direction) {
     RGB color;
     RGB through(1.0);
@@ -34,7 +35,7 @@ Color layeredSky(const scene::Scene& scene, const Vec3& direction) {
         const Vec3 p = sky->transform.inversePoint(direction);
         for (auto layer = sky->pigments.rbegin(); layer != sky->pigments.rend(); ++layer) {
             const Color c = (*layer)->at(p);
-            color += c.rgb * (1.0 - c.transmit) * through * sky->emission;
+            color += c.rgb * (1.0 - c.filter - c.transmit) * through * sky->emission;
             through *= passedThrough(c);
         }
     }
