@@ -14,11 +14,15 @@ constexpr double kEpsilon = 1e-10;
 
 // Reference data from POV-Ray 3.7: the weights of its greyscale(), which
 // turns a filter colour into the single transmit value of an alpha channel.
-double greyscale(const RGB& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b; }
+double greyscale(const RGB& c) {
+    return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+}
 
 // What a layer lets through: its colour where it filters, plus what it
 // transmits unchanged.
-RGB passedThrough(const Color& c) { return c.rgb * c.filter + RGB(c.transmit); }
+RGB passedThrough(const Color& c) {
+    return c.rgb * c.filter + RGB(c.transmit);
+}
 
 // Sky sphere and background from language version 3.7 on: the background
 // is one more layer below the sky's pigments, and the layers combine as a
@@ -59,12 +63,14 @@ Color legacySky(const scene::Scene& scene, const Vec3& direction) {
     for (auto layer = sky->pigments.rbegin(); layer != sky->pigments.rend(); ++layer) {
         const Color c = (*layer)->at(p);
         color += c.rgb * (remaining * (1.0 - c.filter - c.transmit));
-        combined = Color(combined.rgb * c.rgb, combined.filter * c.filter, combined.transmit * c.transmit);
+        combined =
+            Color(combined.rgb * c.rgb, combined.filter * c.filter, combined.transmit * c.transmit);
         remaining = std::fabs(combined.filter) + std::fabs(combined.transmit);
     }
     color *= sky->emission;
     const RGB behind = combined.rgb * combined.filter + RGB(combined.transmit);
-    return Color(color + bg.rgb * behind, bg.filter * combined.filter, bg.transmit * combined.transmit);
+    return Color(color + bg.rgb * behind, bg.filter * combined.filter,
+                 bg.transmit * combined.transmit);
 }
 
 // A number in [0, 1) that depends only on the ray direction. POV-Ray
@@ -95,7 +101,8 @@ double groundFogDensity(double start, double end) {
 }
 
 // Transmittance of one fog over `depth` along the ray.
-double fogTransmittance(const scene::Fog& fog, const Vec3& origin, const Vec3& direction, double depth) {
+double fogTransmittance(const scene::Fog& fog, const Vec3& origin, const Vec3& direction,
+                        double depth) {
     if (fog.kind == scene::Fog::Kind::Constant) return std::exp(-depth / fog.distance);
     const Vec3 end = origin + direction * depth;
     const double start = (dot(origin, fog.up) - fog.offset) / fog.altitude;
@@ -107,10 +114,12 @@ double fogTransmittance(const scene::Fog& fog, const Vec3& origin, const Vec3& d
 
 AtmosphereView::AtmosphereView(const scene::Scene& scene, bool volumetric)
     : scene_(scene),
-      volumetric_(volumetric && (!scene.atmosphere.fogs.empty() || !scene.atmosphere.rainbows.empty())) {}
+      volumetric_(volumetric &&
+                  (!scene.atmosphere.fogs.empty() || !scene.atmosphere.rainbows.empty())) {}
 
 Color AtmosphereView::sky(const Vec3& unitDirection) const {
-    return scene_.languageVersion < 3.7 - 1e-9 ? legacySky(scene_, unitDirection) : layeredSky(scene_, unitDirection);
+    return scene_.languageVersion < 3.7 - 1e-9 ? legacySky(scene_, unitDirection)
+                                               : layeredSky(scene_, unitDirection);
 }
 
 Color AtmosphereView::throughRainbows(const Vec3& d, double depth, const Color& seen) const {
@@ -154,7 +163,8 @@ Color AtmosphereView::throughRainbows(const Vec3& d, double depth, const Color& 
     return Color(sum * (1.0 / count), seen.filter * filter, seen.transmit * transmit);
 }
 
-Color AtmosphereView::throughFogs(const Vec3& origin, const Vec3& d, double depth, const Color& seen) const {
+Color AtmosphereView::throughFogs(const Vec3& origin, const Vec3& d, double depth,
+                                  const Color& seen) const {
     RGB attenuation(1.0);
     RGB added;
     for (const scene::Fog& fog : scene_.atmosphere.fogs) {
@@ -165,7 +175,8 @@ Color AtmosphereView::throughFogs(const Vec3& origin, const Vec3& d, double dept
         attenuation *= (RGB(1.0 - fog.color.filter) + fog.color.rgb * fog.color.filter) * keep;
         added += fog.color.rgb * (1.0 - keep);
     }
-    return Color(added + attenuation * seen.rgb, seen.filter, seen.transmit * greyscale(attenuation));
+    return Color(added + attenuation * seen.rgb, seen.filter,
+                 seen.transmit * greyscale(attenuation));
 }
 
 Color AtmosphereView::miss(const scene::Ray& ray) const {

@@ -25,7 +25,7 @@ namespace frameray::render {
 inline constexpr double kMissDepth = 2.0e10;
 
 class AtmosphereView {
-public:
+  public:
     // `volumetric`: rainbows and fogs are computed (POV-Ray: +Q9 and up).
     AtmosphereView(const scene::Scene& scene, bool volumetric);
 
@@ -44,9 +44,10 @@ public:
     // direction. `depth` is a distance along `unitDirection`.
     Color sky(const Vec3& unitDirection) const;
     Color throughRainbows(const Vec3& unitDirection, double depth, const Color& seen) const;
-    Color throughFogs(const Vec3& origin, const Vec3& unitDirection, double depth, const Color& seen) const;
+    Color throughFogs(const Vec3& origin, const Vec3& unitDirection, double depth,
+                      const Color& seen) const;
 
-private:
+  private:
     const scene::Scene& scene_;
     bool volumetric_;
 };

@@ -25,12 +25,12 @@ struct Fog {
     enum class Kind { Constant, Ground };
 
     Kind kind = Kind::Constant;
-    int typeNumber = 1;     // fog_type as given
-    double distance = 0;    // a fog with |distance| <= 1e-10 has no effect
-    Color color;            // filter tints what is behind, transmit is the least transmittance
-    double offset = 0;      // ground fog: the height where it starts thinning
-    double altitude = 0;    // ground fog: the height scale of the thinning
-    Vec3 up{0, 1, 0};       // normalised; rotated/scaled by the fog's transformations
+    int typeNumber = 1;   // fog_type as given
+    double distance = 0;  // a fog with |distance| <= 1e-10 has no effect
+    Color color;          // filter tints what is behind, transmit is the least transmittance
+    double offset = 0;    // ground fog: the height where it starts thinning
+    double altitude = 0;  // ground fog: the height scale of the thinning
+    Vec3 up{0, 1, 0};     // normalised; rotated/scaled by the fog's transformations
     double turbulenceDepth = 0.5;  // only used with turbulence (not supported yet)
 };
 
@@ -55,10 +55,10 @@ struct Rainbow {
     // povray's raw default 180 (not converted), which no ray angle reaches.
     double arcAngle = 180.0;
     double falloffAngle = 180.0;
-    double falloffWidth = 0;   // arcAngle - falloffAngle
-    Vec3 antisolar;            // direction, normalised
-    Vec3 up{0, 1, 0};          // normalised, made perpendicular to antisolar
-    Vec3 right{1, 0, 0};       // up x antisolar, normalised
+    double falloffWidth = 0;  // arcAngle - falloffAngle
+    Vec3 antisolar;           // direction, normalised
+    Vec3 up{0, 1, 0};         // normalised, made perpendicular to antisolar
+    Vec3 right{1, 0, 0};      // up x antisolar, normalised
     // Without a colour map a rainbow shows nothing.
     std::optional<ColorMap> colorMap;
 };

@@ -212,8 +212,8 @@ private:
     void parseGlobalSettings();
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
-    void parseFog();
-    void parseSkySphere();
+    scene::Fog parseFog();              // fog { }, also as a declared value
+    scene::SkySphere parseSkySphere();  // sky_sphere { }, also as a declared value
     void parseRainbow();
     void finalizeCamera(scene::Camera& camera, const Vec3* lookAt, double angle) const;
     void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;

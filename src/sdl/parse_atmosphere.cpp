@@ -2,10 +2,10 @@
 // are checked and converted the way POV-Ray 3.7's parser does (its
 // messages, its defaults, its angle conversions), so scene::Atmosphere
 // holds exactly what POV-Ray renders from.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "sdl/interpreter.h"
 
@@ -17,9 +17,10 @@ constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in its vector checks
 
 // Keywords that start a colour where a fog expects one.
 constexpr Keyword kColorKeywords[] = {
-    Keyword::kw_color, Keyword::kw_colour, Keyword::kw_rgb,   Keyword::kw_rgbf,  Keyword::kw_rgbt,
-    Keyword::kw_rgbft, Keyword::kw_srgb,   Keyword::kw_srgbf, Keyword::kw_srgbt, Keyword::kw_srgbft,
-    Keyword::kw_red,   Keyword::kw_green,  Keyword::kw_blue,  Keyword::kw_filter, Keyword::kw_transmit,
+    Keyword::kw_color, Keyword::kw_colour, Keyword::kw_rgb,      Keyword::kw_rgbf,
+    Keyword::kw_rgbt,  Keyword::kw_rgbft,  Keyword::kw_srgb,     Keyword::kw_srgbf,
+    Keyword::kw_srgbt, Keyword::kw_srgbft, Keyword::kw_red,      Keyword::kw_green,
+    Keyword::kw_blue,  Keyword::kw_filter, Keyword::kw_transmit,
 };
 
 bool isColorKeyword(Keyword k) {
@@ -30,7 +31,10 @@ bool isColorKeyword(Keyword k) {
 
 // Fog items that need POV-Ray's noise (turbulence of the fog density).
 constexpr Keyword kFogTurbulenceKeywords[] = {
-    Keyword::kw_turbulence, Keyword::kw_octaves, Keyword::kw_omega, Keyword::kw_lambda,
+    Keyword::kw_turbulence,
+    Keyword::kw_octaves,
+    Keyword::kw_omega,
+    Keyword::kw_lambda,
 };
 
 bool isFogTurbulenceKeyword(Keyword k) {
@@ -48,10 +52,17 @@ void Interpreter::parseBackground() {
     expect(Sym::RBrace, "'}' closing 'background'");
 }
 
-void Interpreter::parseFog() {
+scene::Fog Interpreter::parseFog() {
     next();  // fog
     expect(Sym::LBrace, "'{' after 'fog'");
     scene::Fog fog;
+    // fog { Identifier ... } starts from a declared fog.
+    if (const Token first = peek(); first.isIdentifier()) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<FogPtr>(*v)) {
+            next();
+            fog = *std::get<FogPtr>(*v);
+        }
+    }
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token t = peek();
@@ -68,9 +79,10 @@ void Interpreter::parseFog() {
                 continue;
             }
         }
-        const bool floatStart = t.kind == TokenKind::Number || t.is(Sym::LParen) || t.is(Sym::Minus) ||
-                                t.is(Sym::Plus) ||
-                                (t.isIdentifier() && lookup(t.text) && std::holds_alternative<double>(*lookup(t.text)));
+        const bool floatStart =
+            t.kind == TokenKind::Number || t.is(Sym::LParen) || t.is(Sym::Minus) ||
+            t.is(Sym::Plus) ||
+            (t.isIdentifier() && lookup(t.text) && std::holds_alternative<double>(*lookup(t.text)));
         if (floatStart) {
             warn(t, "Should use distance keyword.");
             fog.distance = parseFloat();
@@ -92,17 +104,28 @@ void Interpreter::parseFog() {
         }
         next();
         switch (t.kw) {
-            case Keyword::kw_distance: fog.distance = parseFloat(); break;
+            case Keyword::kw_distance:
+                fog.distance = parseFloat();
+                break;
             case Keyword::kw_fog_type: {
                 fog.typeNumber = static_cast<int>(parseFloat());
                 if (fog.typeNumber < 1 || fog.typeNumber > 2) warn(t, "Unknown fog type.");
-                fog.kind = fog.typeNumber == 2 ? scene::Fog::Kind::Ground : scene::Fog::Kind::Constant;
+                fog.kind =
+                    fog.typeNumber == 2 ? scene::Fog::Kind::Ground : scene::Fog::Kind::Constant;
                 break;
             }
-            case Keyword::kw_fog_alt: fog.altitude = parseFloat(); break;
-            case Keyword::kw_fog_offset: fog.offset = parseFloat(); break;
-            case Keyword::kw_turb_depth: fog.turbulenceDepth = parseFloat(); break;
-            case Keyword::kw_up: fog.up = parseVec3(); break;
+            case Keyword::kw_fog_alt:
+                fog.altitude = parseFloat();
+                break;
+            case Keyword::kw_fog_offset:
+                fog.offset = parseFloat();
+                break;
+            case Keyword::kw_turb_depth:
+                fog.turbulenceDepth = parseFloat();
+                break;
+            case Keyword::kw_up:
+                fog.up = parseVec3();
+                break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                     unsupported(t, fmt::format("'{}' in fog", t.text));
@@ -111,13 +134,20 @@ void Interpreter::parseFog() {
     }
     // povray normalises without a check: a zero up vector gives NaNs there.
     fog.up = fog.up * (1.0 / length(fog.up));
-    scene_.atmosphere.fogs.push_back(fog);
+    return fog;
 }
 
-void Interpreter::parseSkySphere() {
+scene::SkySphere Interpreter::parseSkySphere() {
     const Token kw = next();  // sky_sphere
     expect(Sym::LBrace, "'{' after 'sky_sphere'");
     scene::SkySphere sky;
+    // sky_sphere { Identifier ... } adds to a declared sky sphere.
+    if (const Token first = peek(); first.isIdentifier()) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<SkySpherePtr>(*v)) {
+            next();
+            sky = *std::get<SkySpherePtr>(*v);
+        }
+    }
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token t = peek();
@@ -140,10 +170,12 @@ void Interpreter::parseSkySphere() {
         fail(t, fmt::format("expected a sky_sphere item or '}}', found {}", describeToken(t)));
     }
     if (sky.pigments.empty()) fail(kw, "Empty sky_sphere statement.");
-    if (scene_.atmosphere.skySphere) warn(kw, "Only one sky-sphere allowed (last one will be used).");
-    scene_.atmosphere.skySphere = std::move(sky);
+    return sky;
 }
 
+// A rainbow cannot be declared yet (the expression parser reports it as
+// not supported): povray 3.7 converts a declared rainbow's angles to
+// radians a second time when it is used, and crashes freeing it at exit.
 void Interpreter::parseRainbow() {
     const Token kw = next();  // rainbow
     expect(Sym::LBrace, "'{' after 'rainbow'");
@@ -155,7 +187,8 @@ void Interpreter::parseRainbow() {
     auto halfAngle = [&](const Token& at, const char* what) {
         const double a = parseFloat();
         if (a < 0.0 || a > 360.0)
-            fail(at, fmt::format("Illegal {} angle in rainbow (Use value from 0 to 360 degrees).", what));
+            fail(at, fmt::format("Illegal {} angle in rainbow (Use value from 0 to 360 degrees).",
+                                 what));
         return a * std::numbers::pi / 360.0;
     };
     for (;;) {
@@ -167,12 +200,24 @@ void Interpreter::parseRainbow() {
         }
         next();
         switch (t.kw) {
-            case Keyword::kw_angle: angle = parseFloat(); break;
-            case Keyword::kw_width: width = parseFloat(); break;
-            case Keyword::kw_direction: r.antisolar = parseVec3(); break;
-            case Keyword::kw_up: r.up = parseVec3(); break;
-            case Keyword::kw_distance: r.distance = parseFloat(); break;
-            case Keyword::kw_jitter: r.jitter = parseFloat(); break;
+            case Keyword::kw_angle:
+                angle = parseFloat();
+                break;
+            case Keyword::kw_width:
+                width = parseFloat();
+                break;
+            case Keyword::kw_direction:
+                r.antisolar = parseVec3();
+                break;
+            case Keyword::kw_up:
+                r.up = parseVec3();
+                break;
+            case Keyword::kw_distance:
+                r.distance = parseFloat();
+                break;
+            case Keyword::kw_jitter:
+                r.jitter = parseFloat();
+                break;
             case Keyword::kw_falloff_angle:
                 r.falloffAngle = halfAngle(t, "falloff");
                 falloffGiven = true;
@@ -189,9 +234,11 @@ void Interpreter::parseRainbow() {
     }
     // An arc without a falloff fades nowhere: the falloff starts at its end.
     if (arcGiven && !falloffGiven) r.falloffAngle = r.arcAngle;
-    if (r.arcAngle < r.falloffAngle) fail(kw, "Arc angle is smaller than falloff angle in rainbow.");
+    if (r.arcAngle < r.falloffAngle)
+        fail(kw, "Arc angle is smaller than falloff angle in rainbow.");
     r.falloffWidth = r.arcAngle - r.falloffAngle;
-    if (std::fabs(dot(r.antisolar, r.antisolar)) < kEpsilon) fail(kw, "Rainbow's direction vector is zero.");
+    if (std::fabs(dot(r.antisolar, r.antisolar)) < kEpsilon)
+        fail(kw, "Rainbow's direction vector is zero.");
     if (std::fabs(dot(r.up, r.up)) < kEpsilon) fail(kw, "Rainbow's up vector is zero.");
     r.antisolar = normalize(r.antisolar);
     r.up = normalize(r.up);

@@ -1,11 +1,12 @@
 // Atmosphere: parsing of background, fog, sky_sphere and rainbow as POV-Ray
 // 3.7 does, and render::AtmosphereView's formulas on hand-computed cases.
+#include "render/atmosphere.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "render/atmosphere.h"
 #include "sdl/interpreter.h"
 
 using namespace frameray;
@@ -50,8 +51,10 @@ void expectRGB(const RGB& c, double r, double g, double b, double tol = 1e-12) {
 // --- parsing ---------------------------------------------------------------
 
 TEST(AtmosphereParse, FogItemsAndDefaults) {
-    Parsed p("fog { distance 12 color rgbft <0.2, 0.4, 0.6, 0.5, 0.25> }\n"
-             "fog { fog_type 2 distance 3 rgb 1 fog_offset 1.5 fog_alt 0.5 up <0, 2, 0> rotate z * 90 }");
+    Parsed p(
+        "fog { distance 12 color rgbft <0.2, 0.4, 0.6, 0.5, 0.25> }\n"
+        "fog { fog_type 2 distance 3 rgb 1 fog_offset 1.5 fog_alt 0.5 up <0, 2, 0> rotate z * 90 "
+        "}");
     const auto& fogs = p.scene.atmosphere.fogs;
     ASSERT_EQ(fogs.size(), 2u);
     EXPECT_EQ(fogs[0].kind, scene::Fog::Kind::Constant);
@@ -81,27 +84,49 @@ TEST(AtmosphereParse, FogWarningsAsPovray) {
 TEST(AtmosphereParse, FogTurbulenceIsNotSupportedYet) {
     for (const char* item : {"turbulence 0.5", "octaves 3", "omega 0.4", "lambda 3"}) {
         const std::string err = parseError(std::string("fog { distance 3 rgb 1 ") + item + " }");
-        EXPECT_NE(err.find("not supported yet: fog turbulence"), std::string::npos) << item << ": " << err;
+        EXPECT_NE(err.find("not supported yet: fog turbulence"), std::string::npos)
+            << item << ": " << err;
     }
     // turb_depth alone changes nothing in povray and is accepted.
     EXPECT_EQ(parseError("fog { distance 3 rgb 1 turb_depth 0.3 }"), "");
 }
 
 TEST(AtmosphereParse, SkySphere) {
-    Parsed p("sky_sphere { pigment { rgb 1 } }\n"
-             "sky_sphere { pigment { rgb <1, 0, 0> } pigment { rgbt <0, 1, 0, 0.5> } emission 0.5 translate y }");
+    Parsed p(
+        "sky_sphere { pigment { rgb 1 } }\n"
+        "sky_sphere { pigment { rgb <1, 0, 0> } pigment { rgbt <0, 1, 0, 0.5> } emission 0.5 "
+        "translate y }");
     ASSERT_TRUE(p.scene.atmosphere.skySphere);
     const auto& sky = *p.scene.atmosphere.skySphere;
     EXPECT_EQ(sky.pigments.size(), 2u);  // the last sky_sphere replaces the first
     expectRGB(sky.emission, 0.5, 0.5, 0.5, 1e-7);
     EXPECT_NEAR(sky.transform.inversePoint({0, 1, 0}).y, 0, 1e-12);
-    EXPECT_NE(p.sink.text.find("Only one sky-sphere allowed (last one will be used)."), std::string::npos);
-    EXPECT_NE(parseError("sky_sphere { emission 1 }").find("Empty sky_sphere statement."), std::string::npos);
+    EXPECT_NE(p.sink.text.find("Only one sky-sphere allowed (last one will be used)."),
+              std::string::npos);
+    EXPECT_NE(parseError("sky_sphere { emission 1 }").find("Empty sky_sphere statement."),
+              std::string::npos);
+}
+
+TEST(AtmosphereParse, DeclaredFogAndSkySphere) {
+    Parsed p(
+        "#declare F = fog { distance 5 rgb <1, 0, 0> }\n"
+        "#declare S = sky_sphere { pigment { rgb 1 } emission 0.5 }\n"
+        "fog { F fog_type 2 }\nsky_sphere { S pigment { rgbt <0, 0, 1, 0.5> } }");
+    const auto& fog = p.scene.atmosphere.fogs.at(0);
+    EXPECT_DOUBLE_EQ(fog.distance, 5);
+    EXPECT_EQ(fog.kind, scene::Fog::Kind::Ground);
+    EXPECT_NEAR(fog.color.rgb.r, 1, 1e-7);
+    ASSERT_TRUE(p.scene.atmosphere.skySphere);
+    EXPECT_EQ(p.scene.atmosphere.skySphere->pigments.size(), 2u);
+    EXPECT_NEAR(p.scene.atmosphere.skySphere->emission.g, 0.5, 1e-7);
+    EXPECT_NE(parseError("#declare R = rainbow { direction z }").find("not supported yet"),
+              std::string::npos);
 }
 
 TEST(AtmosphereParse, RainbowAnglesAndVectors) {
-    Parsed p("rainbow { angle 42 width 4 direction <0, 0, 2> up <0, 1, 1> arc_angle 120 "
-             "color_map { [0 rgb 0] [1 rgb 1] } }");
+    Parsed p(
+        "rainbow { angle 42 width 4 direction <0, 0, 2> up <0, 1, 1> arc_angle 120 "
+        "color_map { [0 rgb 0] [1 rgb 1] } }");
     const auto& r = p.scene.atmosphere.rainbows.at(0);
     EXPECT_NEAR(r.bandStart, 40 * kPi / 180, 1e-12);
     EXPECT_NEAR(r.width, 4 * kPi / 180, 1e-12);
@@ -127,12 +152,15 @@ TEST(AtmosphereParse, RainbowAnglesAndVectors) {
 }
 
 TEST(AtmosphereParse, RainbowErrors) {
-    EXPECT_NE(parseError("rainbow { angle 42 width 4 }").find("Rainbow's direction vector is zero."),
+    EXPECT_NE(
+        parseError("rainbow { angle 42 width 4 }").find("Rainbow's direction vector is zero."),
+        std::string::npos);
+    EXPECT_NE(parseError("rainbow { direction y }")
+                  .find("Rainbow's up and direction vector are co-linear."),
               std::string::npos);
-    EXPECT_NE(parseError("rainbow { direction y }").find("Rainbow's up and direction vector are co-linear."),
-              std::string::npos);
-    EXPECT_NE(parseError("rainbow { direction z arc_angle 400 }").find("Illegal arc angle in rainbow"),
-              std::string::npos);
+    EXPECT_NE(
+        parseError("rainbow { direction z arc_angle 400 }").find("Illegal arc angle in rainbow"),
+        std::string::npos);
     EXPECT_NE(parseError("rainbow { direction z arc_angle 40 falloff_angle 60 }")
                   .find("Arc angle is smaller than falloff angle in rainbow."),
               std::string::npos);
@@ -171,7 +199,8 @@ TEST(AtmosphereView, FogFilterAndTransmit) {
     // tinted half by the fog colour (filter 0.5).
     const Color seen = view.throughFogs({0, 0, 0}, {0, 0, 1}, 100, Color(RGB(1)));
     const double keep = 0.25;
-    expectRGB(seen.rgb, 0.2 * (1 - keep) + keep * (0.5 + 0.5 * 0.2), 0.4 * (1 - keep) + keep * (0.5 + 0.5 * 0.4),
+    expectRGB(seen.rgb, 0.2 * (1 - keep) + keep * (0.5 + 0.5 * 0.2),
+              0.4 * (1 - keep) + keep * (0.5 + 0.5 * 0.4),
               0.8 * (1 - keep) + keep * (0.5 + 0.5 * 0.8));
 }
 
