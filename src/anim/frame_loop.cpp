@@ -396,6 +396,7 @@ private:
         f.height = o_.height;
         f.window = {seq_.window.x0, seq_.window.y0, seq_.window.x1, seq_.window.y1};
         f.blockSize = o_.renderBlockSize;
+        f.quality = o_.quality;
         if (o_.antialias) {
             render::AntialiasSettings& aa = f.antialias;
             aa.method = o_.samplingMethod;

@@ -21,6 +21,7 @@ struct FrameSettings {
     PixelBlock window{0, 0, 0, 0};
     int blockSize = 32;  // Render_Block_Size: anti-aliasing depends on it
     AntialiasSettings antialias;
+    int quality = 9;  // +Q: fog and rainbows from 9 up
 };
 
 // Linear working-space colours, clipped to [0,1], row-major from the top.

@@ -34,8 +34,8 @@ double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
 RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts) const {
     ++counts.camera;
     Hit hit;
-    if (!world_.intersect(ray, 0.0, scene::kInfinity, hit)) return scene_.background.rgb;
-    return shade(ray, hit, counts);
+    if (!world_.intersect(ray, 0.0, scene::kInfinity, hit)) return atmosphere_.miss(ray).rgb;
+    return atmosphere_.along(ray, hit.t, Color(shade(ray, hit, counts))).rgb;
 }
 
 RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) const {

@@ -2,6 +2,7 @@
 // brilliance, phong and specular highlights, hard shadows from point lights.
 #pragma once
 
+#include "render/atmosphere.h"
 #include "render/world.h"
 #include "util/color.h"
 
@@ -21,7 +22,9 @@ struct RayCounts {
 
 class Tracer {
 public:
-    explicit Tracer(const World& world) : world_(world), scene_(world.scene()) {}
+    // `volumetric`: rainbows and fogs are traced (POV-Ray: quality 9 and up).
+    explicit Tracer(const World& world, bool volumetric = true)
+        : world_(world), scene_(world.scene()), atmosphere_(world.scene(), volumetric) {}
 
     // Colour seen along a camera ray (working colour space, unclipped).
     RGB traceCamera(const scene::Ray& ray, RayCounts& counts) const;
@@ -31,6 +34,7 @@ private:
 
     const World& world_;
     const scene::Scene& scene_;
+    AtmosphereView atmosphere_;
 };
 
 }  // namespace frameray::render

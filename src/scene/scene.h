@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "scene/atmosphere.h"
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/object.h"
@@ -26,6 +27,7 @@ struct Scene {
     std::vector<std::shared_ptr<const Object>> objects;
     GlobalSettings globals;
     Color background;  // black, fully opaque by default
+    Atmosphere atmosphere;  // fogs, sky sphere, rainbows
     double languageVersion = 3.7;  // the #version in force at the end of parse
     bool versionDeclared = false;
 };

@@ -34,6 +34,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const SplinePtr&) const { return "spline"; }
         const char* operator()(const FunctionPtr&) const { return "function"; }
         const char* operator()(const IdentifierAlias&) const { return "identifier"; }
+        const char* operator()(const FogPtr&) const { return "fog"; }
+        const char* operator()(const SkySpherePtr&) const { return "sky_sphere"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -397,6 +399,8 @@ Value Interpreter::parseRValue() {
         case Keyword::kw_spline: return parseSpline();
         case Keyword::kw_function: return parseFunctionDeclaration();
         case Keyword::kw_light_source: return std::make_shared<const scene::Light>(parseLightSource());
+        case Keyword::kw_fog: return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_sky_sphere: return std::make_shared<const scene::SkySphere>(parseSkySphere());
         default: break;
     }
     // A string value is complete without looking further (see parseString).

@@ -210,7 +210,11 @@ private:
     FinishPtr parseFinish(const scene::Finish* base);
     void parseFinishItems(scene::Finish& finish);
     void parseGlobalSettings();
+    // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
+    scene::Fog parseFog();              // fog { }, also as a declared value
+    scene::SkySphere parseSkySphere();  // sky_sphere { }, also as a declared value
+    void parseRainbow();
     void finalizeCamera(scene::Camera& camera, const Vec3* lookAt, double angle) const;
     void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;
 

@@ -66,7 +66,14 @@ bool Interpreter::parseStatement() {
         case Keyword::kw_light_source: scene_.lights.push_back(parseLightSource()); return true;
         case Keyword::kw_global_settings: parseGlobalSettings(); return true;
         case Keyword::kw_background: parseBackground(); return true;
-        case Keyword::kw_fog: case Keyword::kw_sky_sphere: case Keyword::kw_rainbow:
+        case Keyword::kw_fog: scene_.atmosphere.fogs.push_back(parseFog()); return true;
+        case Keyword::kw_sky_sphere: {
+            scene::SkySphere sky = parseSkySphere();
+            if (scene_.atmosphere.skySphere) warn(t, "Only one sky-sphere allowed (last one will be used).");
+            scene_.atmosphere.skySphere = std::move(sky);
+            return true;
+        }
+        case Keyword::kw_rainbow: parseRainbow(); return true;
         case Keyword::kw_media: case Keyword::kw_photons: case Keyword::kw_radiosity:
             unsupported(t, std::string(t.text));
         default: break;
@@ -899,13 +906,6 @@ void Interpreter::parseGlobalSettings() {
                 fail(t, fmt::format("expected a global setting or '}}', found {}", describeToken(t)));
         }
     }
-}
-
-void Interpreter::parseBackground() {
-    next();
-    expect(Sym::LBrace, "'{' after 'background'");
-    scene_.background = parseColor();
-    expect(Sym::RBrace, "'}' closing 'background'");
 }
 
 }  // namespace frameray::sdl

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "scene/atmosphere.h"
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/object.h"
@@ -48,6 +49,8 @@ using CameraPtr = std::shared_ptr<const scene::Camera>;
 using LightPtr = std::shared_ptr<const scene::Light>;
 using MacroPtr = std::shared_ptr<const Macro>;
 using TransformPtr = std::shared_ptr<const Transform>;
+using FogPtr = std::shared_ptr<const scene::Fog>;
+using SkySpherePtr = std::shared_ptr<const scene::SkySphere>;
 
 struct ArrayValue;
 struct FileHandle;
@@ -68,7 +71,7 @@ struct IdentifierAlias {
 
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
-                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias>;
+                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other

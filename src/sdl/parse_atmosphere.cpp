@@ -1,0 +1,257 @@
+// Atmosphere statements: background, fog, sky_sphere and rainbow. Values
+// are checked and converted the way POV-Ray 3.7's parser does (its
+// messages, its defaults, its angle conversions), so scene::Atmosphere
+// holds exactly what POV-Ray renders from.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in its vector checks
+
+// Keywords that start a colour where a fog expects one.
+constexpr Keyword kColorKeywords[] = {
+    Keyword::kw_color, Keyword::kw_colour, Keyword::kw_rgb,      Keyword::kw_rgbf,
+    Keyword::kw_rgbt,  Keyword::kw_rgbft,  Keyword::kw_srgb,     Keyword::kw_srgbf,
+    Keyword::kw_srgbt, Keyword::kw_srgbft, Keyword::kw_red,      Keyword::kw_green,
+    Keyword::kw_blue,  Keyword::kw_filter, Keyword::kw_transmit,
+};
+
+bool isColorKeyword(Keyword k) {
+    for (const Keyword c : kColorKeywords)
+        if (c == k) return true;
+    return false;
+}
+
+// Fog items that need POV-Ray's noise (turbulence of the fog density).
+constexpr Keyword kFogTurbulenceKeywords[] = {
+    Keyword::kw_turbulence,
+    Keyword::kw_octaves,
+    Keyword::kw_omega,
+    Keyword::kw_lambda,
+};
+
+bool isFogTurbulenceKeyword(Keyword k) {
+    for (const Keyword c : kFogTurbulenceKeywords)
+        if (c == k) return true;
+    return false;
+}
+
+}  // namespace
+
+void Interpreter::parseBackground() {
+    next();
+    expect(Sym::LBrace, "'{' after 'background'");
+    scene_.background = parseColor();
+    expect(Sym::RBrace, "'}' closing 'background'");
+}
+
+scene::Fog Interpreter::parseFog() {
+    next();  // fog
+    expect(Sym::LBrace, "'{' after 'fog'");
+    scene::Fog fog;
+    // fog { Identifier ... } starts from a declared fog.
+    if (const Token first = peek(); first.isIdentifier()) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<FogPtr>(*v)) {
+            next();
+            fog = *std::get<FogPtr>(*v);
+        }
+    }
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        // A colour: a colour keyword or an identifier holding one; a bare
+        // float is the distance (povray warns).
+        if (isColorKeyword(t.kw)) {
+            fog.color = parseColor();
+            continue;
+        }
+        if (t.isIdentifier()) {
+            const Value* v = lookup(t.text);
+            if (v && std::holds_alternative<VectorValue>(*v)) {
+                fog.color = parseColor();
+                continue;
+            }
+        }
+        const bool floatStart =
+            t.kind == TokenKind::Number || t.is(Sym::LParen) || t.is(Sym::Minus) ||
+            t.is(Sym::Plus) ||
+            (t.isIdentifier() && lookup(t.text) && std::holds_alternative<double>(*lookup(t.text)));
+        if (floatStart) {
+            warn(t, "Should use distance keyword.");
+            fog.distance = parseFloat();
+            continue;
+        }
+        if (isFogTurbulenceKeyword(t.kw)) unsupported(t, "fog turbulence");
+        // The fog's transformations turn its up vector; a translation
+        // cannot move a direction (povray warns and ignores it).
+        if (t.is(Keyword::kw_translate)) {
+            next();
+            parseVec3();
+            warn(t, "A fog's up vector can't be translated.");
+            continue;
+        }
+        Transform step;
+        if (parseTransformation(step)) {
+            fog.up = step.direction(fog.up);
+            continue;
+        }
+        next();
+        switch (t.kw) {
+            case Keyword::kw_distance:
+                fog.distance = parseFloat();
+                break;
+            case Keyword::kw_fog_type: {
+                fog.typeNumber = static_cast<int>(parseFloat());
+                if (fog.typeNumber < 1 || fog.typeNumber > 2) warn(t, "Unknown fog type.");
+                fog.kind =
+                    fog.typeNumber == 2 ? scene::Fog::Kind::Ground : scene::Fog::Kind::Constant;
+                break;
+            }
+            case Keyword::kw_fog_alt:
+                fog.altitude = parseFloat();
+                break;
+            case Keyword::kw_fog_offset:
+                fog.offset = parseFloat();
+                break;
+            case Keyword::kw_turb_depth:
+                fog.turbulenceDepth = parseFloat();
+                break;
+            case Keyword::kw_up:
+                fog.up = parseVec3();
+                break;
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in fog", t.text));
+                fail(t, fmt::format("expected a fog item or '}}', found {}", describeToken(t)));
+        }
+    }
+    // povray normalises without a check: a zero up vector gives NaNs there.
+    fog.up = fog.up * (1.0 / length(fog.up));
+    return fog;
+}
+
+scene::SkySphere Interpreter::parseSkySphere() {
+    const Token kw = next();  // sky_sphere
+    expect(Sym::LBrace, "'{' after 'sky_sphere'");
+    scene::SkySphere sky;
+    // sky_sphere { Identifier ... } adds to a declared sky sphere.
+    if (const Token first = peek(); first.isIdentifier()) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<SkySpherePtr>(*v)) {
+            next();
+            sky = *std::get<SkySpherePtr>(*v);
+        }
+    }
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            sky.transform = sky.transform.then(step);
+            continue;
+        }
+        if (t.is(Keyword::kw_pigment)) {
+            sky.pigments.push_back(parsePigment());
+            continue;
+        }
+        next();
+        if (t.is(Keyword::kw_emission)) {
+            sky.emission = parseColor().rgb;
+            continue;
+        }
+        if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+            unsupported(t, fmt::format("'{}' in sky_sphere", t.text));
+        fail(t, fmt::format("expected a sky_sphere item or '}}', found {}", describeToken(t)));
+    }
+    if (sky.pigments.empty()) fail(kw, "Empty sky_sphere statement.");
+    return sky;
+}
+
+// A rainbow cannot be declared yet (the expression parser reports it as
+// not supported): povray 3.7 converts a declared rainbow's angles to
+// radians a second time when it is used, and crashes freeing it at exit.
+void Interpreter::parseRainbow() {
+    const Token kw = next();  // rainbow
+    expect(Sym::LBrace, "'{' after 'rainbow'");
+    scene::Rainbow r;
+    double angle = 0, width = 0;
+    bool falloffGiven = false, arcGiven = false;
+    // falloff_angle and arc_angle are full angles in degrees (0..360);
+    // povray keeps half of each, in radians.
+    auto halfAngle = [&](const Token& at, const char* what) {
+        const double a = parseFloat();
+        if (a < 0.0 || a > 360.0)
+            fail(at, fmt::format("Illegal {} angle in rainbow (Use value from 0 to 360 degrees).",
+                                 what));
+        return a * std::numbers::pi / 360.0;
+    };
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        if (t.is(Keyword::kw_color_map) || t.is(Keyword::kw_colour_map)) {
+            r.colorMap = parseColorMap();
+            continue;
+        }
+        next();
+        switch (t.kw) {
+            case Keyword::kw_angle:
+                angle = parseFloat();
+                break;
+            case Keyword::kw_width:
+                width = parseFloat();
+                break;
+            case Keyword::kw_direction:
+                r.antisolar = parseVec3();
+                break;
+            case Keyword::kw_up:
+                r.up = parseVec3();
+                break;
+            case Keyword::kw_distance:
+                r.distance = parseFloat();
+                break;
+            case Keyword::kw_jitter:
+                r.jitter = parseFloat();
+                break;
+            case Keyword::kw_falloff_angle:
+                r.falloffAngle = halfAngle(t, "falloff");
+                falloffGiven = true;
+                break;
+            case Keyword::kw_arc_angle:
+                r.arcAngle = halfAngle(t, "arc");
+                arcGiven = true;
+                break;
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in rainbow", t.text));
+                fail(t, fmt::format("expected a rainbow item or '}}', found {}", describeToken(t)));
+        }
+    }
+    // An arc without a falloff fades nowhere: the falloff starts at its end.
+    if (arcGiven && !falloffGiven) r.falloffAngle = r.arcAngle;
+    if (r.arcAngle < r.falloffAngle)
+        fail(kw, "Arc angle is smaller than falloff angle in rainbow.");
+    r.falloffWidth = r.arcAngle - r.falloffAngle;
+    if (std::fabs(dot(r.antisolar, r.antisolar)) < kEpsilon)
+        fail(kw, "Rainbow's direction vector is zero.");
+    if (std::fabs(dot(r.up, r.up)) < kEpsilon) fail(kw, "Rainbow's up vector is zero.");
+    r.antisolar = normalize(r.antisolar);
+    r.up = normalize(r.up);
+    if (std::fabs(1.0 - std::fabs(dot(r.up, r.antisolar))) < kEpsilon)
+        fail(kw, "Rainbow's up and direction vector are co-linear.");
+    // Make up perpendicular to the antisolar direction.
+    r.right = cross(r.up, r.antisolar);
+    r.up = normalize(cross(r.antisolar, r.right));
+    r.right = normalize(r.right);
+    // `angle` is the middle of the band; keep its start.
+    r.bandStart = (angle - 0.5 * width) * std::numbers::pi / 180.0;
+    r.width = width * std::numbers::pi / 180.0;
+    scene_.atmosphere.rainbows.push_back(std::move(r));
+}
+
+}  // namespace frameray::sdl
