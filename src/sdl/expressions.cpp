@@ -304,7 +304,9 @@ Value Interpreter::parseVectorLiteral() {
         const double c = toFloat(parseTernary(true), at);
         if (n >= 5) fail(at, "a vector has at most 5 components");
         out.v[n++] = c;
-    } while (accept(Sym::Comma));
+        // povray accepts a comma before the closing '>' (<0.2,0.1,0.5,> in
+        // its example float4.pov).
+    } while (accept(Sym::Comma) && !peek().is(Sym::Greater));
     expect(Sym::Greater, "'>' closing the vector");
     if (n < 2) fail(open, "a vector needs at least 2 components");
     out.size = static_cast<uint8_t>(n);

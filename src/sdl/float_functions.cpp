@@ -22,7 +22,9 @@ constexpr std::pair<Keyword, UnaryFloatFunction> kUnary[] = {
     {Keyword::kw_degrees, [](double a) { return a * 180.0 / std::numbers::pi; }},
     {Keyword::kw_exp, [](double a) { return std::exp(a); }},
     {Keyword::kw_floor, [](double a) { return std::floor(a); }},
-    {Keyword::kw_int, [](double a) { return std::trunc(a); }},
+    // int() and div() convert through an integer in povray, so they never
+    // give -0 (str(int(-0.5),0,2) is "0.00"); adding +0 turns -0 into +0.
+    {Keyword::kw_int, [](double a) { return std::trunc(a) + 0.0; }},
     {Keyword::kw_ln, [](double a) { return std::log(a); }},
     {Keyword::kw_log, [](double a) { return std::log10(a); }},
     {Keyword::kw_radians, [](double a) { return a * std::numbers::pi / 180.0; }},
@@ -38,7 +40,7 @@ constexpr std::pair<Keyword, BinaryFloatFunction> kBinary[] = {
     {Keyword::kw_atan2, [](double a, double b) { return std::atan2(a, b); }},
     {Keyword::kw_pow, [](double a, double b) { return std::pow(a, b); }},
     {Keyword::kw_mod, [](double a, double b) { return std::fmod(a, b); }},
-    {Keyword::kw_div, [](double a, double b) { return std::trunc(a / b); }},
+    {Keyword::kw_div, [](double a, double b) { return std::trunc(a / b) + 0.0; }},
 };
 
 }  // namespace

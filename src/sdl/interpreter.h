@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/ttf_font.h"
 #include "sdl/diagnostics.h"
 #include "sdl/frame_context.h"
 #include "sdl/token_cache.h"
@@ -218,6 +219,11 @@ private:
     void finalizeCamera(scene::Camera& camera, const Vec3* lookAt, double angle) const;
     void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;
 
+    // --- text objects (parse_text.cpp) ---
+    void parseTextObject(scene::Object& obj);  // after 'text {'
+    std::shared_ptr<scene::TtfFont> openFont(const std::string& name, const Token& at);
+    std::u32string decodeTextString(const std::string& bytes, const Token& at);
+
     FrameContext frame_;
     TokenCache& cache_;
     MessageSink& messages_;
@@ -241,6 +247,10 @@ private:
     std::unordered_map<std::string, Deprecation, NameHash, std::equal_to<>> deprecated_;
     std::vector<FilePtr> openFiles_;  // closed at the end of the parse
     std::string inputFileName_;       // the scene file as named to the interpreter
+    // Text objects: the global_settings charset in force, and the fonts
+    // read so far, by the name the scene gave (this frame's only).
+    scene::TextCharset textCharset_ = scene::TextCharset::Ascii;
+    std::map<std::string, std::shared_ptr<scene::TtfFont>> fonts_;
 };
 
 }  // namespace frameray::sdl

@@ -1,5 +1,6 @@
 // Scene statements: objects and their modifiers, camera, lights, textures,
 // global settings. Builds scene:: values from the token stream.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -37,7 +38,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_isosurface, false},    {Keyword::kw_parametric, false},
     {Keyword::kw_mesh, false},          {Keyword::kw_mesh2, false},
     {Keyword::kw_height_field, false},  {Keyword::kw_bicubic_patch, false},
-    {Keyword::kw_text, false},          {Keyword::kw_julia_fractal, false},
+    {Keyword::kw_text, true},          {Keyword::kw_julia_fractal, false},
     {Keyword::kw_polygon, false},       {Keyword::kw_ovus, false},
 };
 
@@ -114,6 +115,7 @@ ObjectPtr Interpreter::parseObject() {
         case Keyword::kw_difference:
             parseCsgChildren(kind, *obj);
             break;
+        case Keyword::kw_text: parseTextObject(*obj); break;
         default: obj->shape = parseShape(kind); break;
     }
 
@@ -898,7 +900,19 @@ void Interpreter::parseGlobalSettings() {
             case Keyword::kw_adc_bailout: g.adcBailout = parseFloat(); break;
             case Keyword::kw_ambient_light: g.ambientLight = parseColor().rgb; break;
             case Keyword::kw_number_of_waves: case Keyword::kw_noise_generator: parseFloat(); break;
-            case Keyword::kw_charset: next(); break;
+            case Keyword::kw_charset: {
+                static constexpr std::pair<Keyword, scene::TextCharset> kCharsets[] = {
+                    {Keyword::kw_ascii, scene::TextCharset::Ascii},
+                    {Keyword::kw_utf8, scene::TextCharset::Utf8},
+                    {Keyword::kw_sys, scene::TextCharset::System}};
+                const Token c = next();
+                const auto* found = std::find_if(std::begin(kCharsets), std::end(kCharsets),
+                                                 [&](const auto& entry) { return c.is(entry.first); });
+                if (found == std::end(kCharsets))
+                    fail(c, fmt::format("expected a charset type (ascii, utf8 or sys), found {}", describeToken(c)));
+                textCharset_ = found->second;
+                break;
+            }
             case Keyword::kw_hf_gray_16: if (peek().kind == TokenKind::Number) parseFloat(); break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
