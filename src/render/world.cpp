@@ -17,6 +17,7 @@ struct TraceContext {
     double tMin;
     double tMax;
     const scene::Object* hitObject;
+    scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
 };
 
 float roundUp(double v) {
@@ -56,9 +57,8 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
-    // Only camera rays use intersect() so far.
     scene::SurfaceHit h;
-    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Camera, h)) return;
+    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, ctx->kind, h)) return;
     ctx->tMax = h.t;
     ctx->hitObject = h.primitive;
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
@@ -103,7 +103,7 @@ World::World(const scene::Scene& scene) : scene_(scene) {
     bvh_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
     for (const auto& obj : scene.objects) {
-        if (obj->noImage && obj->noShadow) continue;  // invisible to every ray kind we trace
+        if (obj->noImage && obj->noShadow && obj->noReflection) continue;  // invisible to every ray kind
         const scene::Bounds bounds = obj->surfaceBounds();
         if (bounds.isEmpty()) continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
         if (!bounds.isFinite()) {
@@ -133,9 +133,10 @@ World::~World() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit) const {
+bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit, scene::RayKind kind) const {
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
+    ctx.kind = kind;
     ctx.ray = &ray;
     ctx.tMin = tMin;
     ctx.tMax = tMax;
@@ -148,7 +149,7 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit)
     }
     for (const scene::Object* obj : unbounded_) {
         scene::SurfaceHit h;
-        if (obj->firstHit(ray, tMin, ctx.tMax, scene::RayKind::Camera, h)) {
+        if (obj->firstHit(ray, tMin, ctx.tMax, kind, h)) {
             ctx.tMax = h.t;
             ctx.hitObject = h.primitive;
         }
