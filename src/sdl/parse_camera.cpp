@@ -54,6 +54,20 @@ scene::Camera Interpreter::parseCamera() {
         if (!cp)
             fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
         cam = **cp;
+        // povray 3.7 accepts only transformations after a camera identifier.
+        scene::CameraEdits edits;
+        for (;;) {
+            if (accept(Sym::RBrace)) break;
+            Transform step;
+            if (!parseTransformation(step)) {
+                const Token t = peek();
+                fail(t, fmt::format("only transformations may follow a camera identifier, found {}",
+                                    describeToken(t)));
+            }
+            edits.transform = edits.transform.then(step);
+        }
+        scene::finalizeCamera(cam, edits);
+        return cam;
     }
     const Token typeToken = peek();
     if (isUnsupportedCameraWord(typeToken)) unsupported(typeToken, std::string(typeToken.text));
