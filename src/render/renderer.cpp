@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "render/camera_rays.h"
+#include "render/focal_blur.h"
 
 namespace frameray::render {
 
@@ -24,6 +25,8 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
 
     const Tracer tracer(world, settings.quality >= 9);
     const CameraRays camera(world.scene().camera, settings.width, settings.height);
+    std::optional<FocalBlurSampler> focalBlur;
+    if (camera.camera().blur.enabled()) focalBlur.emplace(camera);
     tbb::combinable<RayCounts> rayCounts;
     tbb::combinable<AntialiasCounts> aaCounts;
 
@@ -33,6 +36,12 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
             AntialiasCounts& aa = aaCounts.local();
             const SampleFunction sample = [&](double x, double y) {
                 // (x, y) = (i, j) is the centre of pixel column i, row j.
+                if (focalBlur) {
+                    // Several rays per sample, each at a random spot of the pixel.
+                    return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
+                        return tracer.traceCamera(r, rays);
+                    });
+                }
                 const std::optional<scene::Ray> ray = camera.generate(x + 0.5, y + 0.5);
                 // Where the projection traces nothing povray writes transparent black.
                 if (!ray) return PixelSample{RGB{}, 1.0};
