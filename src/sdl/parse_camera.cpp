@@ -87,7 +87,9 @@ scene::Camera Interpreter::parseCamera() {
     }
 
     scene::CameraEdits edits;
+    Token closing = peek();
     for (;;) {
+        closing = peek();
         if (accept(Sym::RBrace)) break;
         const Token t = peek();
         Transform step;
@@ -164,6 +166,8 @@ scene::Camera Interpreter::parseCamera() {
                 fail(t, fmt::format("expected a camera item or '}}', found {}", describeToken(t)));
         }
     }
+    if (edits.lookAt && length(cam.lookAt - cam.location) < 1e-10)
+        fail(closing, "camera location and look_at point must be different");
     scene::finalizeCamera(cam, edits);
     return cam;
 }

@@ -135,6 +135,7 @@ TEST(CameraParse, TypesAnglesAndErrors) {
     const auto o = parse("camera { orthographic location <0,0,-5> look_at 0 angle 90 }").camera;
     EXPECT_NEAR(length(o.right), 10, 1e-9);
     EXPECT_THROW(parse("camera { cylinder 5 }"), sdl::SdlError);
+    EXPECT_THROW(parse("camera { location z look_at z }"), sdl::SdlError);
     EXPECT_THROW(parse("camera { location 0 fisheye }"), sdl::SdlError);
     EXPECT_THROW(parse("#declare C = camera { }\ncamera { C location 0 }"), sdl::SdlError);
     EXPECT_THROW(parse("camera { mesh_camera { 1 0 } }"), sdl::SdlError);
