@@ -1,5 +1,6 @@
 #include "render/camera_rays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -9,16 +10,16 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDegrees = kPi / 180.0;
 
-// Omnimax: no formula is documented; these constants are fitted to povray
-// 3.7's rays (see tests/unit/camera_rays_test.cpp).
-// The dome's centre sits kOmnimaxOffset (in units of the up vector's
-// half-height) below the image centre; rays stop at kOmnimaxRadius from
-// it; the angle off the view axis is a cubic in the normalised radius
-// (max error 0.01 radians against povray).
+// Omnimax: no formula is documented; fitted to povray 3.7's rays. The
+// dome's centre sits kOmnimaxOffset (in units of the up vector's
+// half-height) below the image centre and its rim is 1 + kOmnimaxOffset
+// from it; the angle off the view axis is an odd quintic in the normalised
+// radius (least-squares fit, max error 0.0006 radians; it reaches 90
+// degrees at the rim).
 constexpr double kOmnimaxOffset = 0.2834;
-constexpr double kOmnimaxRadius = 1.2834;
 double omnimaxTheta(double rad) {
-    return rad * (1.52841 + rad * (-0.56189 + rad * 0.59724));
+    const double r2 = rad * rad;
+    return rad * (1.411269 + r2 * (-0.09439 + r2 * 0.25674));
 }
 }  // namespace
 
@@ -68,20 +69,23 @@ std::optional<scene::Ray> CameraRays::generate(double x, double y) const {
                                               u * std::sin(ay)};
         }
         case Projection::Omnimax: {
-            // Fitted to povray 3.7's output: a 180-degree dome view whose
-            // centre sits below the image centre.
+            // Fitted to povray 3.7's output: a 180-degree dome. On a wide
+            // image (right longer than up) its centre sits below the image
+            // centre; on a square or tall one it is centred (measured).
+            const double offset = rightLength_ > upLength_ ? kOmnimaxOffset : 0.0;
             const double px = 2 * cx * rightLength_;
-            const double py = (2 * cy + kOmnimaxOffset) * upLength_;
-            const double rad = std::hypot(px, py) / kOmnimaxRadius;
-            // Measured: nothing is traced outside the image's inscribed
-            // circle nor beyond 90 degrees off the view axis.
-            if (std::hypot(2 * cx, 2 * cy) > 1.0) return std::nullopt;
+            const double py = (2 * cy + offset) * upLength_;
+            const double rad =
+                std::hypot(px, py) / ((1 + offset) * std::min(rightLength_, upLength_));
+            if (rad > 1.0) return std::nullopt;
             const double theta = omnimaxTheta(rad);
-            if (theta > 0.5 * kPi) return std::nullopt;
             const double phi = std::atan2(py, px);
             const double st = std::sin(theta);
-            return scene::Ray{c.location, d * std::cos(theta) + r * (st * std::cos(phi)) +
-                                              u * (st * std::sin(phi))};
+            const double dirD = std::cos(theta), dirU = st * std::sin(phi);
+            // Measured: nothing below the plane that bisects direction and
+            // -up (the dome's floor, tilted 45 degrees).
+            if (dirD + dirU < 0) return std::nullopt;
+            return scene::Ray{c.location, d * dirD + r * (st * std::cos(phi)) + u * dirU};
         }
         case Projection::Panoramic: {
             // 180 degrees across, every row a cylinder section; right and

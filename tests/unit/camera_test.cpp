@@ -185,3 +185,11 @@ TEST(FocalBlur, GridInsideDiscAndDeterministicSamples) {
     EXPECT_EQ(a.rgb.r, b.rgb.r);
     EXPECT_GT(traced, 0);
 }
+
+TEST(CameraRays, OmnimaxMatchesPovrayProbe) {
+    // 16x12, default vectors: pixel (7, 6) and a rim pixel povray skips.
+    const CameraRays rays(makeCamera(Projection::Omnimax), 16, 12);
+    const Vec3 d = unitDirection(rays, 8.5, 6.5);
+    EXPECT_NEAR(std::acos(d.z), 13.631 * kPi / 180, 1e-3);
+    EXPECT_FALSE(rays.generate(0.5, 0.5));
+}
