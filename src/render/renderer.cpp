@@ -6,14 +6,10 @@
 
 #include <algorithm>
 
-namespace frameray::render {
+#include "render/camera_rays.h"
+#include "render/focal_blur.h"
 
-scene::Ray primaryRay(const scene::Camera& camera, double x, double y, int width, int height) {
-    // Screen coordinates in [-0.5, 0.5], y up.
-    const double sx = x / width - 0.5;
-    const double sy = 0.5 - y / height;
-    return {camera.location, camera.direction + camera.right * sx + camera.up * sy};
-}
+namespace frameray::render {
 
 FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameStats& stats) {
     FrameImage image;
@@ -21,40 +17,54 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     image.height = settings.height;
     image.rgb.assign(static_cast<size_t>(settings.width) * settings.height * 3, 0.0f);
     PixelBlock window = settings.window;
-    if (window.x1 <= window.x0 || window.y1 <= window.y0) window = {0, 0, settings.width, settings.height};
+    if (window.x1 <= window.x0 || window.y1 <= window.y0)
+        window = {0, 0, settings.width, settings.height};
     const int blockSize = std::max(settings.blockSize, 4);
     const int blocksX = (window.x1 - window.x0 + blockSize - 1) / blockSize;
     const int blocksY = (window.y1 - window.y0 + blockSize - 1) / blockSize;
 
     const Tracer tracer(world, settings.quality);
-    const scene::Camera& camera = world.scene().camera;
+    const CameraRays camera(world.scene().camera, settings.width, settings.height);
+    std::optional<FocalBlurSampler> focalBlur;
+    if (camera.camera().blur.enabled()) focalBlur.emplace(camera);
     tbb::combinable<RayCounts> rayCounts;
     tbb::combinable<AntialiasCounts> aaCounts;
 
-    tbb::parallel_for(tbb::blocked_range<int>(0, blocksX * blocksY), [&](const tbb::blocked_range<int>& range) {
-        RayCounts& rays = rayCounts.local();
-        AntialiasCounts& aa = aaCounts.local();
-        const SampleFunction sample = [&](double x, double y) {
-            // (x, y) = (i, j) is the centre of pixel column i, row j.
-            const scene::Ray ray = primaryRay(camera, x + 0.5, y + 0.5, settings.width, settings.height);
-            return PixelSample{tracer.traceCamera(ray, rays), 0.0};
-        };
-        for (int index = range.begin(); index < range.end(); ++index) {
-            const int bx = window.x0 + (index % blocksX) * blockSize;
-            const int by = window.y0 + (index / blocksX) * blockSize;
-            const PixelBlock block{bx, by, std::min(bx + blockSize, window.x1), std::min(by + blockSize, window.y1)};
-            const std::vector<PixelSample> pixels = sampleBlock(block, settings.antialias, sample, aa);
-            size_t i = 0;
-            for (int y = block.y0; y < block.y1; ++y)
-                for (int x = block.x0; x < block.x1; ++x, ++i) {
-                    const RGB& c = pixels[i].rgb;
-                    float* out = &image.rgb[(static_cast<size_t>(y) * settings.width + x) * 3];
-                    out[0] = static_cast<float>(std::clamp(c.r, 0.0, 1.0));
-                    out[1] = static_cast<float>(std::clamp(c.g, 0.0, 1.0));
-                    out[2] = static_cast<float>(std::clamp(c.b, 0.0, 1.0));
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, blocksX * blocksY), [&](const tbb::blocked_range<int>& range) {
+            RayCounts& rays = rayCounts.local();
+            AntialiasCounts& aa = aaCounts.local();
+            const SampleFunction sample = [&](double x, double y) {
+                // (x, y) = (i, j) is the centre of pixel column i, row j.
+                if (focalBlur) {
+                    // Several rays per sample, each at a random spot of the pixel.
+                    return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
+                        return tracer.traceCamera(r, rays);
+                    });
                 }
-        }
-    });
+                const std::optional<scene::Ray> ray = camera.generate(x + 0.5, y + 0.5);
+                // Where the projection traces nothing povray writes transparent black.
+                if (!ray) return PixelSample{RGB{}, 1.0};
+                return PixelSample{tracer.traceCamera(*ray, rays), 0.0};
+            };
+            for (int index = range.begin(); index < range.end(); ++index) {
+                const int bx = window.x0 + (index % blocksX) * blockSize;
+                const int by = window.y0 + (index / blocksX) * blockSize;
+                const PixelBlock block{bx, by, std::min(bx + blockSize, window.x1),
+                                       std::min(by + blockSize, window.y1)};
+                const std::vector<PixelSample> pixels =
+                    sampleBlock(block, settings.antialias, sample, aa);
+                size_t i = 0;
+                for (int y = block.y0; y < block.y1; ++y)
+                    for (int x = block.x0; x < block.x1; ++x, ++i) {
+                        const RGB& c = pixels[i].rgb;
+                        float* out = &image.rgb[(static_cast<size_t>(y) * settings.width + x) * 3];
+                        out[0] = static_cast<float>(std::clamp(c.r, 0.0, 1.0));
+                        out[1] = static_cast<float>(std::clamp(c.g, 0.0, 1.0));
+                        out[2] = static_cast<float>(std::clamp(c.b, 0.0, 1.0));
+                    }
+            }
+        });
     rayCounts.combine_each([&](const RayCounts& c) { stats.rays += c; });
     aaCounts.combine_each([&](const AntialiasCounts& c) {
         stats.antialias.supersampledPixels += c.supersampledPixels;

@@ -38,7 +38,4 @@ struct FrameStats {
 
 FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameStats& stats);
 
-// The camera ray through the centre of pixel (x, y).
-scene::Ray primaryRay(const scene::Camera& camera, double x, double y, int width, int height);
-
 }  // namespace frameray::render

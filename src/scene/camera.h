@@ -1,22 +1,72 @@
-// The camera (seed 003 §5.5): parsed settings, and the derived frame of
-// vectors primary rays are built from.
+// The camera (seed 003 §5.5, POV-Ray 3.7 camera types): parsed settings,
+// and how angle, look_at and transformations turn them into the final
+// frame of vectors that primary rays are built from (render/camera_rays.h).
 #pragma once
+
+#include <optional>
 
 #include "util/matrix.h"
 #include "util/vec3.h"
 
 namespace frameray::scene {
 
-enum class Projection { Perspective, Orthographic };
+enum class Projection {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    Cylinder1,  // vertical cylinder, fixed viewpoint
+    Cylinder2,  // horizontal cylinder, fixed viewpoint
+    Cylinder3,  // vertical cylinder, viewpoint moving along the axis
+    Cylinder4,  // horizontal cylinder, viewpoint moving along the axis
+    Spherical,
+};
+
+// focal_blur settings. Blur is on when aperture > 0 and blurSamples > 0.
+struct FocalBlur {
+    double aperture = 0;
+    int minSamples = 0;   // `blur_samples MIN, MAX`: at least this many
+    int blurSamples = 0;  // at most this many rays per sample
+    Vec3 focalPoint{0, 0, 0};
+    double confidence = 0.9;
+    double variance = 1.0 / 128;
+
+    bool enabled() const { return aperture > 0 && blurSamples > 0; }
+};
 
 struct Camera {
     Projection projection = Projection::Perspective;
-    // POV-Ray's defaults; look_at, angle and sky are applied by finalize().
+    // POV-Ray's defaults; finalizeCamera() applies angle, look_at and the
+    // transformations once the block is read.
     Vec3 location{0, 0, 0};
     Vec3 direction{0, 0, 1};
     Vec3 up{0, 1, 0};
     Vec3 right{1.33, 0, 0};
     Vec3 sky{0, 1, 0};
+    Vec3 lookAt{0, 0, 1};  // kept: an orthographic `angle` measures from here
+    // Field of view in degrees for the angular projections (fisheye,
+    // ultra_wide_angle, cylinders; spherical's horizontal angle).
+    double angle = 90;
+    double verticalAngle = 0;  // spherical only; 0 means half of `angle`
+    FocalBlur blur;
 };
+
+// What a camera { } block set, beyond the plain vectors stored directly.
+struct CameraEdits {
+    std::optional<double> angle;  // `angle` given in this block
+    bool lookAt = false;          // `look_at` given in this block
+    Transform transform;          // every transformation, in order
+};
+
+// The default field angle of each projection when none is given.
+double defaultAngle(Projection projection);
+
+// Applies what POV-Ray 3.7 applies after reading the block, in its order
+// whatever the order in the file: the angle (perspective: direction
+// length; orthographic: right and up lengths), then look_at (keeping the
+// handedness of up/direction/right), then the transformations.
+void finalizeCamera(Camera& camera, const CameraEdits& edits);
 
 }  // namespace frameray::scene

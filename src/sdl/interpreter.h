@@ -198,7 +198,7 @@ private:
                                                   const std::vector<scene::ObjectRef>& alternativeList);
     bool parseTransformation(Transform& transform);
     Transform parseTransformBlock();
-    scene::Camera parseCamera();
+    scene::Camera parseCamera();  // parse_camera.cpp
     scene::Light parseLightSource();
     TexturePtr parseTexture(const scene::Texture* base);
     PigmentPtr parsePigment();
@@ -224,7 +224,6 @@ private:
     scene::Fog parseFog();              // fog { }, also as a declared value
     scene::SkySphere parseSkySphere();  // sky_sphere { }, also as a declared value
     void parseRainbow();
-    void finalizeCamera(scene::Camera& camera, const Vec3* lookAt, double angle) const;
     void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;
 
     // --- text objects (parse_text.cpp) ---

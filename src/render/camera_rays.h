@@ -1,0 +1,36 @@
+// Primary ray generation for every POV-Ray 3.7 projection. Built once per
+// frame from the finished camera (scene/camera.h): the vectors each
+// projection needs (normalised or not, as povray uses them) are prepared
+// here so that generating a ray is a few multiplications.
+#pragma once
+
+#include <optional>
+
+#include "scene/camera.h"
+#include "scene/ray.h"
+
+namespace frameray::render {
+
+class CameraRays {
+  public:
+    CameraRays(const scene::Camera& camera, int width, int height);
+
+    // The ray through image-plane position (x, y), in pixels from the
+    // image's top-left corner (pixel (i, j) spans [i, i+1) x [j, j+1)).
+    // Empty where the projection traces nothing (outside a fisheye's
+    // circle, at a panoramic's poles).
+    std::optional<scene::Ray> generate(double x, double y) const;
+
+    const scene::Camera& camera() const { return camera_; }
+
+  private:
+    scene::Camera camera_;
+    double width_, height_;
+    // Unit direction, right and up; and |right| / |up|, the image aspect
+    // the angular projections correct for.
+    Vec3 unitDirection_, unitRight_, unitUp_;
+    double rightLength_ = 1, upLength_ = 1, aspect_ = 1;
+    double angleRadians_ = 0, verticalAngleRadians_ = 0;
+};
+
+}  // namespace frameray::render

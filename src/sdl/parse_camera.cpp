@@ -1,0 +1,175 @@
+// camera { } blocks (POV-Ray 3.7 syntax): an optional camera identifier to
+// start from, an optional projection keyword (only first, as povray
+// requires), then vectors, angle, look_at, focal blur settings and
+// transformations in any order. What povray applies after the block
+// (angle, look_at, transformations) is scene::finalizeCamera().
+#include <fmt/format.h>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+// The projection a keyword names, if it is one (cylinder needs its number).
+std::optional<scene::Projection> projectionKeyword(Keyword kw) {
+    using scene::Projection;
+    switch (kw) {
+        case Keyword::kw_perspective:
+            return Projection::Perspective;
+        case Keyword::kw_orthographic:
+            return Projection::Orthographic;
+        case Keyword::kw_fisheye:
+            return Projection::Fisheye;
+        case Keyword::kw_ultra_wide_angle:
+            return Projection::UltraWideAngle;
+        case Keyword::kw_omnimax:
+            return Projection::Omnimax;
+        case Keyword::kw_panoramic:
+            return Projection::Panoramic;
+        case Keyword::kw_cylinder:
+            return Projection::Cylinder1;
+        case Keyword::kw_spherical:
+            return Projection::Spherical;
+        default:
+            return std::nullopt;
+    }
+}
+
+bool isUnsupportedCameraWord(const Token& t) {
+    return t.text == "mesh_camera" || t.text == "bokeh";
+}
+
+}  // namespace
+
+scene::Camera Interpreter::parseCamera() {
+    next();  // camera
+    expect(Sym::LBrace, "'{' after 'camera'");
+    scene::Camera cam;
+    const Token first = peek();
+    if (first.isIdentifier() && !isUnsupportedCameraWord(first)) {
+        next();
+        const Value v = identifierValue(first);
+        const auto* cp = std::get_if<CameraPtr>(&v);
+        if (!cp)
+            fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
+        cam = **cp;
+        // povray 3.7 accepts only transformations after a camera identifier.
+        scene::CameraEdits edits;
+        for (;;) {
+            if (accept(Sym::RBrace)) break;
+            Transform step;
+            if (!parseTransformation(step)) {
+                const Token t = peek();
+                fail(t, fmt::format("only transformations may follow a camera identifier, found {}",
+                                    describeToken(t)));
+            }
+            edits.transform = edits.transform.then(step);
+        }
+        scene::finalizeCamera(cam, edits);
+        return cam;
+    }
+    const Token typeToken = peek();
+    if (isUnsupportedCameraWord(typeToken)) unsupported(typeToken, std::string(typeToken.text));
+    if (const auto projection = projectionKeyword(typeToken.kw)) {
+        next();
+        cam.projection = *projection;
+        if (*projection == scene::Projection::Cylinder1) {
+            const double kind = parseFloat();
+            const int n = static_cast<int>(kind);
+            if (n < 1 || n > 4 || n != kind)
+                fail(typeToken, "cylinder camera type must be 1, 2, 3 or 4");
+            cam.projection = static_cast<scene::Projection>(
+                static_cast<int>(scene::Projection::Cylinder1) + n - 1);
+        }
+        cam.angle = scene::defaultAngle(cam.projection);
+        cam.verticalAngle = 0;
+    }
+
+    scene::CameraEdits edits;
+    Token closing = peek();
+    for (;;) {
+        closing = peek();
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            edits.transform = edits.transform.then(step);
+            continue;
+        }
+        if (isUnsupportedCameraWord(t)) unsupported(t, fmt::format("{} in camera", t.text));
+        next();
+        if (projectionKeyword(t.kw)) fail(t, "the camera type must come first in the camera block");
+        switch (t.kw) {
+            case Keyword::kw_location:
+                cam.location = parseVec3();
+                break;
+            case Keyword::kw_direction:
+                cam.direction = parseVec3();
+                break;
+            case Keyword::kw_right:
+                cam.right = parseVec3();
+                break;
+            case Keyword::kw_up:
+                cam.up = parseVec3();
+                break;
+            case Keyword::kw_sky:
+                cam.sky = parseVec3();
+                break;
+            case Keyword::kw_look_at:
+                cam.lookAt = parseVec3();
+                edits.lookAt = true;
+                break;
+            case Keyword::kw_angle: {
+                const double angle = parseFloat();
+                if (angle <= 0) fail(t, "camera angle must be positive");
+                if (cam.projection == scene::Projection::Perspective && angle >= 180)
+                    fail(t, "a perspective camera's angle must be smaller than 180 degrees");
+                edits.angle = angle;
+                cam.angle = angle;
+                cam.verticalAngle = 0;
+                // spherical: `angle H, V`.
+                if (accept(Sym::Comma)) {
+                    const double vertical = parseFloat();
+                    if (vertical <= 0) fail(t, "camera angle must be positive");
+                    cam.verticalAngle = vertical;
+                }
+                break;
+            }
+            case Keyword::kw_aperture:
+                cam.blur.aperture = parseFloat();
+                break;
+            case Keyword::kw_blur_samples: {
+                // `blur_samples [MIN,] MAX`.
+                int value = static_cast<int>(parseFloat());
+                cam.blur.minSamples = 0;
+                if (accept(Sym::Comma)) {
+                    cam.blur.minSamples = value;
+                    value = static_cast<int>(parseFloat());
+                }
+                if (value < 0 || cam.blur.minSamples > value) fail(t, "invalid blur_samples");
+                cam.blur.blurSamples = value;
+                break;
+            }
+            case Keyword::kw_focal_point:
+                cam.blur.focalPoint = parseVec3();
+                break;
+            case Keyword::kw_confidence:
+                cam.blur.confidence = parseFloat();
+                break;
+            case Keyword::kw_variance:
+                cam.blur.variance = parseFloat();
+                break;
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in camera", t.text));
+                fail(t, fmt::format("expected a camera item or '}}', found {}", describeToken(t)));
+        }
+    }
+    if (edits.lookAt && length(cam.lookAt - cam.location) < 1e-10)
+        fail(closing, "camera location and look_at point must be different");
+    scene::finalizeCamera(cam, edits);
+    return cam;
+}
+
+}  // namespace frameray::sdl
