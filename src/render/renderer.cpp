@@ -26,7 +26,7 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     const int blocksX = (window.x1 - window.x0 + blockSize - 1) / blockSize;
     const int blocksY = (window.y1 - window.y0 + blockSize - 1) / blockSize;
 
-    const Tracer tracer(world, settings.quality >= 9);
+    const Tracer tracer(world, settings.quality);
     const scene::Camera& camera = world.scene().camera;
     tbb::combinable<RayCounts> rayCounts;
     tbb::combinable<AntialiasCounts> aaCounts;

@@ -1,5 +1,7 @@
 #include "render/tracer.h"
 
+#include "render/lighting.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -57,10 +59,9 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
     const double eps = selfHitEpsilon(p, ray);
     for (const scene::Light& light : scene_.lights) {
-        Vec3 toLight = light.position - p;
-        const double dist = length(toLight);
-        if (dist == 0) continue;
-        toLight = toLight / dist;
+        LightPath path;
+        if (!pathToLight(light, p, path)) continue;
+        const Vec3 toLight = path.toLight;
         // A light behind the surface only reaches double_illuminate
         // objects: their far side is lit as if it faced the light.
         Vec3 ln = n;
@@ -70,11 +71,8 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
             cosIncidence = -cosIncidence;
         }
         if (cosIncidence <= 0) continue;
-        if (!light.shadowless) {
-            ++counts.shadow;
-            if (world_.occluded({p, toLight}, eps, dist)) continue;
-        }
-        const RGB lightColor = light.color;
+        const RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
+        if (lightColor.isBlack()) continue;
         if (fin.diffuse > 0) {
             const double intensity =
                 fin.diffuse * (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));

@@ -1,8 +1,10 @@
 // POV-Ray's classic shading model for one ray: ambient, diffuse with
-// brilliance, phong and specular highlights, hard shadows from point lights.
+// brilliance, phong and specular highlights, under the lights of
+// render/lighting.h.
 #pragma once
 
 #include "render/atmosphere.h"
+#include "render/lighting.h"
 #include "render/world.h"
 #include "util/color.h"
 
@@ -22,9 +24,13 @@ struct RayCounts {
 
 class Tracer {
 public:
-    // `volumetric`: rainbows and fogs are traced (POV-Ray: quality 9 and up).
-    explicit Tracer(const World& world, bool volumetric = true)
-        : world_(world), scene_(world.scene()), atmosphere_(world.scene(), volumetric) {}
+    // `quality` is +Q: shadows from 4, area lights from 5, rainbows and
+    // fogs from 9 (POV-Ray).
+    explicit Tracer(const World& world, int quality = 9)
+        : world_(world),
+          scene_(world.scene()),
+          atmosphere_(world.scene(), quality >= 9),
+          lighting_(LightingQuality::forQuality(quality)) {}
 
     // Colour seen along a camera ray (working colour space, unclipped).
     RGB traceCamera(const scene::Ray& ray, RayCounts& counts) const;
@@ -35,6 +41,7 @@ private:
     const World& world_;
     const scene::Scene& scene_;
     AtmosphereView atmosphere_;
+    LightingQuality lighting_;
 };
 
 }  // namespace frameray::render

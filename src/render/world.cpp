@@ -1,5 +1,6 @@
 #include "render/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -17,6 +18,7 @@ struct TraceContext {
     double tMin;
     double tMax;
     const scene::Object* hitObject;
+    scene::RayKind kind;
 };
 
 float roundUp(double v) {
@@ -56,9 +58,8 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
-    // Only camera rays use intersect() so far.
     scene::SurfaceHit h;
-    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Camera, h)) return;
+    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, ctx->kind, h)) return;
     ctx->tMax = h.t;
     ctx->hitObject = h.primitive;
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
@@ -133,13 +134,14 @@ World::~World() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit) const {
+bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit, scene::RayKind kind) const {
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
     ctx.tMin = tMin;
     ctx.tMax = tMax;
     ctx.hitObject = nullptr;
+    ctx.kind = kind;
     if (hasBounded_) {
         RTCRayHit rh{};
         rh.ray = toEmbreeRay(ray, tMax);
@@ -148,7 +150,7 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit)
     }
     for (const scene::Object* obj : unbounded_) {
         scene::SurfaceHit h;
-        if (obj->firstHit(ray, tMin, ctx.tMax, scene::RayKind::Camera, h)) {
+        if (obj->firstHit(ray, tMin, ctx.tMax, kind, h)) {
             ctx.tMax = h.t;
             ctx.hitObject = h.primitive;
         }
@@ -171,9 +173,32 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
     ctx.tMin = tMin;
     ctx.tMax = tMax;
     ctx.hitObject = nullptr;
+    ctx.kind = scene::RayKind::Shadow;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     return ctx.hitObject != nullptr;
+}
+
+RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit) const {
+    // Most shadow rays are either clear or blocked by something opaque:
+    // the any-hit test settles the clear ones at once.
+    if (!occluded(ray, tMin, tMax)) return RGB(1.0);
+    RGB passed(1.0);
+    double from = tMin;
+    Hit hit;
+    while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
+        const scene::Object& obj = *hit.object;
+        if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
+        const scene::Texture& tex = *obj.texture;
+        const Vec3 p = ray.at(hit.t);
+        const Color c = tex.pigment->at(tex.transform.inversePoint(p));
+        if (c.filter == 0 && c.transmit == 0) return RGB(0.0);
+        passed *= c.rgb * c.filter + RGB(c.transmit);
+        if (passed.isBlack()) return passed;
+        const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+        from = hit.t + std::max(selfHit, scale * 1e-9);
+    }
+    return passed;
 }
 
 }  // namespace frameray::render

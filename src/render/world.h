@@ -27,10 +27,19 @@ public:
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
-    // Closest hit with t in (tMin, tMax).
-    bool intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit) const;
+    // Closest hit with t in (tMin, tMax) among the surfaces `kind` rays see.
+    bool intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
+                   scene::RayKind kind = scene::RayKind::Camera) const;
     // Whether anything that casts shadows lies in (tMin, tMax).
     bool occluded(const scene::Ray& ray, double tMin, double tMax) const;
+
+    // The part of a light's colour that passes along (tMin, tMax) of a
+    // shadow ray, as povray 3.7 computes it: every shadow-casting surface
+    // crossed multiplies it by filter * pigment + transmit (the pigment at
+    // the crossing), so an opaque surface stops it. `selfHit` is the
+    // margin past one crossing where the search for the next starts.
+    // Returns black as soon as nothing passes.
+    RGB shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit) const;
 
     const scene::Scene& scene() const { return scene_; }
 
