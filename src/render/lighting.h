@@ -49,7 +49,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
 // rays: `sample(i, j)` gives the light arriving from grid point (i, j)
 // (each point is asked once); returns the weighted mean POV-Ray forms.
 // Corners of a block are sampled first; the block is split into quarters
-// (at the integer midpoints) while it spans more than one cell and either
+// (halves that share the middle point of an even span, disjoint halves of
+// an odd one) while it spans more than one cell and either
 // the split level is below `adaptive` or two neighbouring corners differ
 // by more than 0.1 in summed RGB; the quarters are averaged with equal
 // weights, whatever their sizes. Exposed for tests.

@@ -1,9 +1,9 @@
 #include "render/tracer.h"
 
-#include "render/lighting.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "render/lighting.h"
 
 namespace frameray::render {
 
@@ -25,8 +25,8 @@ const scene::Texture& defaultTexture() {
 // (tests/stability/scale_all_primitives.pov checks 1e-4 to 1e5).
 double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
     const Vec3& o = ray.origin;
-    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z), std::fabs(o.x), std::fabs(o.y),
-                               std::fabs(o.z)});
+    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z), std::fabs(o.x),
+                               std::fabs(o.y), std::fabs(o.z)});
     // The floor only keeps the epsilon positive (a scene at the origin).
     return std::max(m * 1e-9, 1e-300);
 }
@@ -75,17 +75,20 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) cons
         if (lightColor.isBlack()) continue;
         if (fin.diffuse > 0) {
             const double intensity =
-                fin.diffuse * (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
+                fin.diffuse *
+                (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
             color += lightColor * pigment * intensity;
         }
-        if (fin.phong > 0) {
+        // povray 3.7: shadowless lights give no highlights.
+        const bool highlights = !light.shadowless;
+        if (fin.phong > 0 && highlights) {
             const double c = dot(reflected, toLight);
             if (c > 0) {
                 const RGB tint = fin.metallic ? pigment : RGB(1.0);
                 color += lightColor * tint * (fin.phong * std::pow(c, fin.phongSize));
             }
         }
-        if (fin.specular > 0) {
+        if (fin.specular > 0 && highlights) {
             const Vec3 halfway = normalize(toLight - viewDir);
             const double c = dot(halfway, ln);
             if (c > 0) {
