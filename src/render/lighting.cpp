@@ -36,6 +36,7 @@ struct GridSampler {
     const scene::Light& light;
     const Vec3& p;
     double selfHit;
+    Vec3 centre;  // the light's centre as seen from p
     Vec3 axis1, axis2;
     uint64_t seed;
     uint64_t& shadowRays;
@@ -48,7 +49,7 @@ struct GridSampler {
             u += unitHash(h) - 0.5;
             v += unitHash(mix(h)) - 0.5;
         }
-        const Vec3 target = light.position + light.area.gridOffset(u, v, axis1, axis2);
+        const Vec3 target = centre + light.area.gridOffset(u, v, axis1, axis2);
         Vec3 dir = target - p;
         const double dist = length(dir);
         if (dist == 0) return light.color;
@@ -132,9 +133,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     const RGB color = light.color * att;
     if (light.shadowless || !quality.shadows) return color;
 
-    const bool sampleArea = light.isArea && quality.areaLights && !light.parallel &&
-                            light.kind != scene::LightKind::Cylinder &&
-                            (light.area.size1 > 1 || light.area.size2 > 1);
+    const bool sampleArea =
+        light.isArea && quality.areaLights && (light.area.size1 > 1 || light.area.size2 > 1);
     if (!sampleArea) {
         ++shadowRays;
         return color * world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit);
@@ -145,11 +145,12 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     if (area.orient) {
         // Turn the grid to face p, keeping the axes' lengths: axis 1 across
         // the light ray and a fixed world axis (z, or x when the ray runs
-        // nearly along z), axis 2 across both.
+        // nearly along z), axis 2 across both. The handedness was measured:
+        // a pinhole under the light shows povray's sample spots exactly.
         const Vec3& ray = path.toLight;
         const Vec3 helper =
             std::fabs(std::fabs(ray.z) - 1.0) < 0.01 ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
-        const Vec3 a1 = normalize(cross(helper, ray));
+        const Vec3 a1 = normalize(cross(ray, helper));
         const Vec3 a2 = normalize(cross(ray, a1));
         axis1 = a1 * length(area.axis1);
         axis2 = a2 * length(area.axis2);
@@ -157,7 +158,12 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     const uint64_t seed =
         mix(std::bit_cast<uint64_t>(p.x) ^
             mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
-    const GridSampler sampler{world, light, p, selfHit, axis1, axis2, seed, shadowRays};
+    // Parallel and cylinder lights sit, for p, where the ray back along
+    // their axis meets the light's plane (close to povray, not exact:
+    // about 0.988 of the pixels of a parallel area light scene match).
+    const Vec3 centre =
+        std::isinf(path.distance) ? light.position : p + path.toLight * path.distance;
+    const GridSampler sampler{world, light, p, selfHit, centre, axis1, axis2, seed, shadowRays};
     // The grid samples carry the light's colour; attenuation (computed at
     // the centre) scales the mean.
     return subdivideAreaGrid(area.size1, area.size2, area.adaptive, sampler) * att;
