@@ -121,7 +121,12 @@ bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path) {
 RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
                   const LightPath& path, double selfHit, const LightingQuality& quality,
                   uint64_t& shadowRays) {
-    const double att = light.attenuation(p, path.distance);
+    // Parallel and cylinder lights fade with the distance from the plane
+    // through the light across its axis, on either side of it (measured).
+    const bool planar = light.parallel || light.kind == scene::LightKind::Cylinder;
+    const double fadeDistance =
+        planar ? std::fabs(dot(light.position - p, light.axis())) : path.distance;
+    const double att = light.attenuation(p, fadeDistance);
     if (att <= 0) return RGB(0.0);
     if (light.projectedThrough) {
         // Only light that crosses the object on its way to p.

@@ -51,7 +51,11 @@ double Light::attenuation(const Vec3& p, double distance) const {
             // the cubic edge from the falloff cone (0) to the radius cone.
             const Vec3 out = p - position;
             const double len = length(out);
-            const double c = len > 0 ? dot(out / len, axis()) : 1.0;
+            // A parallel spotlight's rays all run along the axis: no cone,
+            // but nothing behind the light's plane is lit (measured).
+            const double c = parallel  ? (dot(out, axis()) > 0 ? 1.0 : 0.0)
+                             : len > 0 ? dot(out / len, axis())
+                                       : 1.0;
             if (c <= 0) return 0.0;
             if (tightness != 0) a *= std::pow(c, tightness);
             const double toRad = std::numbers::pi / 180.0;
