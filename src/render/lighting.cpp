@@ -163,11 +163,12 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     const uint64_t seed =
         mix(std::bit_cast<uint64_t>(p.x) ^
             mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
-    // Parallel and cylinder lights sit, for p, where the ray back along
-    // their axis meets the light's plane (close to povray, not exact:
-    // about 0.988 of the pixels of a parallel area light scene match).
+    // A parallel or cylinder light's grid sits, for p, back along the axis
+    // at the distance from the light's location to point_at (measured with
+    // a pinhole under a tilted parallel area light: the sample spots match
+    // exactly; the light's own plane would tilt them).
     const Vec3 centre =
-        std::isinf(path.distance) ? light.position : p + path.toLight * path.distance;
+        planar ? p + path.toLight * length(light.pointAt - light.position) : light.position;
     const GridSampler sampler{world, light, p, selfHit, centre, axis1, axis2, seed, shadowRays};
     // The grid samples carry the light's colour; attenuation (computed at
     // the centre) scales the mean.
