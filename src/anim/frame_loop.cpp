@@ -194,8 +194,9 @@ std::string jsonString(const std::string& text) {
 }
 
 std::string jsonRays(const render::RayCounts& r) {
-    return fmt::format("{{\"camera\": {}, \"shadow\": {}, \"reflection\": 0, \"refraction\": 0}}", r.camera,
-                       r.shadow);
+    return fmt::format(
+        "{{\"camera\": {}, \"shadow\": {}, \"reflection\": {}, \"refraction\": {}, \"transmission\": {}}}",
+        r.camera, r.shadow, r.reflection, r.refraction, r.transmission);
 }
 
 // The frame scheduler (DESIGN.md, "Data flow"): a oneTBB pipeline with a

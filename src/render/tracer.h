@@ -1,7 +1,11 @@
-// POV-Ray's classic shading model for one ray: ambient, diffuse with
-// brilliance, phong and specular highlights, under the lights of
-// render/lighting.h.
+// POV-Ray's classic recursive ray tracer for one ray: ambient, diffuse with
+// brilliance, phong and specular highlights under the lights of
+// render/lighting.h (shadows, area lights), reflection and transmission
+// (with refraction) up to max_trace_level, cut off by adc_bailout.
 #pragma once
+
+#include <array>
+#include <cstdint>
 
 #include "render/atmosphere.h"
 #include "render/lighting.h"
@@ -14,34 +18,71 @@ namespace frameray::render {
 struct RayCounts {
     uint64_t camera = 0;
     uint64_t shadow = 0;
+    uint64_t reflection = 0;    // mirrored rays, including total internal reflection
+    uint64_t refraction = 0;    // transmitted rays bent at a change of ior
+    uint64_t transmission = 0;  // transmitted rays that go straight on (same ior both sides)
 
     RayCounts& operator+=(const RayCounts& o) {
         camera += o.camera;
         shadow += o.shadow;
+        reflection += o.reflection;
+        refraction += o.refraction;
+        transmission += o.transmission;
         return *this;
     }
 };
 
+// The regions (objects sharing one interior) a ray travels inside,
+// innermost last. povray keeps such a list per ray to know the index of
+// refraction on each side of the surfaces it meets.
+class InteriorStack {
+  public:
+    struct Region {
+        const void* key = nullptr;  // identity: the Interior, or the primitive without one
+        const scene::Interior* interior = nullptr;  // null: ior 1, no fading
+    };
+    static constexpr int kCapacity = 16;  // deeper nesting is treated as air
+
+    bool empty() const { return size_ == 0; }
+    bool contains(const void* key) const;
+    // The ior of the innermost region, 1 outside everything.
+    double ior() const;
+    const Region* innermost() const { return size_ ? &regions_[size_ - 1] : nullptr; }
+    void push(const Region& r);
+    void remove(const void* key);
+
+  private:
+    std::array<Region, kCapacity> regions_{};
+    int size_ = 0;
+};
+
 class Tracer {
-public:
-    // `quality` is +Q: shadows from 4, area lights from 5, rainbows and
-    // fogs from 9 (POV-Ray).
-    explicit Tracer(const World& world, int quality = 9)
-        : world_(world),
-          scene_(world.scene()),
-          atmosphere_(world.scene(), quality >= 9),
-          lighting_(LightingQuality::forQuality(quality)) {}
+  public:
+    // `quality` is the +Q level: shadows from 4, area lights from 5,
+    // reflection and transmission from 8, rainbows and fogs from 9
+    // (povray 3.7).
+    explicit Tracer(const World& world, int quality = 9);
 
     // Colour seen along a camera ray (working colour space, unclipped).
     RGB traceCamera(const scene::Ray& ray, RayCounts& counts) const;
 
-private:
-    RGB shade(const scene::Ray& ray, const Hit& hit, RayCounts& counts) const;
+  private:
+    struct State {
+        int level = 1;        // 1 for camera rays
+        double weight = 1.0;  // how much this ray can still add to the pixel (adc_bailout)
+        scene::RayKind kind = scene::RayKind::Camera;
+        InteriorStack inside;
+    };
+
+    RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
+    RGB shade(const scene::Ray& ray, const Hit& hit, const State& state, RayCounts& counts) const;
 
     const World& world_;
     const scene::Scene& scene_;
     AtmosphereView atmosphere_;
     LightingQuality lighting_;
+    bool secondaryRays_;
+    InteriorStack cameraInside_;  // regions containing the camera
 };
 
 }  // namespace frameray::render

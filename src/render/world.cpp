@@ -18,7 +18,7 @@ struct TraceContext {
     double tMin;
     double tMax;
     const scene::Object* hitObject;
-    scene::RayKind kind;
+    scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
 };
 
 float roundUp(double v) {
@@ -104,7 +104,7 @@ World::World(const scene::Scene& scene) : scene_(scene) {
     bvh_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
     for (const auto& obj : scene.objects) {
-        if (obj->noImage && obj->noShadow) continue;  // invisible to every ray kind we trace
+        if (obj->noImage && obj->noShadow && obj->noReflection) continue;  // invisible to every ray kind
         const scene::Bounds bounds = obj->surfaceBounds();
         if (bounds.isEmpty()) continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
         if (!bounds.isFinite()) {

@@ -27,7 +27,8 @@ public:
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
-    // Closest hit with t in (tMin, tMax) among the surfaces `kind` rays see.
+    // Closest hit with t in (tMin, tMax) among the surfaces `kind` rays
+    // see (camera rays skip no_image, reflected rays no_reflection).
     bool intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
                    scene::RayKind kind = scene::RayKind::Camera) const;
     // Whether anything that casts shadows lies in (tMin, tMax).

@@ -147,12 +147,14 @@ namespace {
 
 ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& texture, const Object& flags) {
     const bool needsTexture = !obj->texture && texture;
+    const bool needsInterior = !obj->interior && flags.interior;
     const bool needsFlags = (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
                             (flags.noReflection && !obj->noReflection) ||
                             (flags.doubleIlluminate && !obj->doubleIlluminate);
-    if (!obj->isCsg() && !needsTexture && !needsFlags) return obj;
+    if (!obj->isCsg() && !needsTexture && !needsInterior && !needsFlags) return obj;
     auto copy = std::make_shared<Object>(*obj);
     if (needsTexture) copy->texture = texture;
+    if (needsInterior) copy->interior = flags.interior;
     copy->noShadow |= flags.noShadow;
     copy->noImage |= flags.noImage;
     copy->noReflection |= flags.noReflection;

@@ -29,7 +29,7 @@ Bounds surfaceBounds(const Object& node);
 Bounds insideBounds(const Object& node);
 
 // A top-level object ready to render: each primitive without a texture
-// gets its nearest ancestor's, and the flags set on a CSG node
+// (or interior) gets its nearest ancestor's, and the flags set on a CSG node
 // (no_shadow, no_image, no_reflection, double_illuminate) hold for every
 // primitive below it. Done when the object is placed in the scene, not
 // when a CSG is declared: `object { U pigment { ... } }` recolours the

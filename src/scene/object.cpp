@@ -43,6 +43,7 @@ private:
 bool visibleTo(const Object& primitive, RayKind kind) {
     switch (kind) {
         case RayKind::Camera: return !primitive.noImage;
+        case RayKind::Reflection: return !primitive.noReflection;
         case RayKind::Shadow: return !primitive.noShadow;
         case RayKind::Any: return true;
     }

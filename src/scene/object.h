@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scene/shapes.h"
+#include "scene/interior.h"
 #include "scene/texture.h"
 
 namespace frameray::scene {
@@ -25,8 +26,9 @@ enum class CsgOp { Union, Merge, Intersection, Difference };
 
 // Which object flags hide a surface from a kind of ray.
 enum class RayKind {
-    Camera,  // skips no_image surfaces
-    Shadow,  // skips no_shadow surfaces
+    Camera,      // skips no_image surfaces (also rays refracted from camera rays)
+    Reflection,  // skips no_reflection surfaces
+    Shadow,      // skips no_shadow surfaces
     Any,     // sees everything (bounding tests)
 };
 
@@ -47,6 +49,9 @@ struct Object {
     // Null: the nearest ancestor's texture, finally the default texture
     // (resolved once the object is placed in the scene, see csg.h).
     std::shared_ptr<const Texture> texture;
+    // Null: the nearest ancestor's interior, finally none (air, ior 1).
+    // Primitives sharing one Interior are one region for refraction.
+    std::shared_ptr<const Interior> interior;
     bool inverse = false;
     // Only the parts of the surface inside every clipping object remain.
     std::vector<ObjectRef> clippedBy;

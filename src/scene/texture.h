@@ -60,17 +60,49 @@ private:
     Transform transform_;
 };
 
+// How much of the mirrored ray a surface adds (the 3.7 reflection block;
+// `reflection C` is min = max = C). The reflectance at an angle of
+// incidence with cosine c is min + (max - min) * (1 - c)^falloff, or
+// min + (max - min) * Fresnel(c, ior) with fresnel; metallic tints it
+// toward the pigment except at grazing angles; the reflected colour is
+// raised to 1 / exponent before it is scaled.
+struct Reflection {
+    RGB min{0.0};
+    RGB max{0.0};
+    bool fresnel = false;
+    double falloff = 1.0;
+    double exponent = 1.0;
+    double metallic = 0.0;
+
+    bool any() const { return max.r > 0 || max.g > 0 || max.b > 0 || min.r > 0 || min.g > 0 || min.b > 0; }
+};
+
+// Thin-film iridescence (irid { amount thickness turbulence }).
+struct Iridescence {
+    double amount = 0.0;
+    double thickness = 0.0;
+    double turbulence = 0.0;
+};
+
 // POV-Ray 3.7 finish defaults.
 struct Finish {
     RGB ambient{0.1};
     RGB emission{0.0};
     double diffuse = 0.6;
+    double diffuseBack = 0.0;  // the second value of `diffuse a, b`: light through the surface
     double brilliance = 1.0;
+    double crand = 0.0;
     double phong = 0.0;
     double phongSize = 40.0;
     double specular = 0.0;
     double roughness = 0.05;
-    bool metallic = false;
+    double metallic = 0.0;  // highlight tint toward the pigment (0 = white highlights)
+    Reflection reflection;
+    bool conserveEnergy = false;
+    Iridescence irid;
+    // The 2.0 forms `refraction` and `ior` in a finish: ior moves to the
+    // object's interior when it has none of its own.
+    double legacyIor = 0.0;  // 0 = not given
 };
 
 struct Texture {

@@ -36,6 +36,7 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const IdentifierAlias&) const { return "identifier"; }
         const char* operator()(const FogPtr&) const { return "fog"; }
         const char* operator()(const SkySpherePtr&) const { return "sky_sphere"; }
+        const char* operator()(const InteriorPtr&) const { return "interior"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -392,6 +393,7 @@ Value Interpreter::parseRValue() {
     switch (start.kw) {
         case Keyword::kw_pigment: return parsePigment();
         case Keyword::kw_finish: return parseFinish(nullptr);
+        case Keyword::kw_interior: return parseInterior(nullptr);
         case Keyword::kw_texture: return parseTexture(nullptr);
         case Keyword::kw_camera: return std::make_shared<const scene::Camera>(parseCamera());
         case Keyword::kw_transform: return std::make_shared<const Transform>(parseTransformBlock());

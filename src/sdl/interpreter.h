@@ -210,8 +210,16 @@ private:
     PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
     scene::ColorMap parseColorMap();
     std::vector<scene::Pigment::MapEntry> parsePigmentMap();
+    // --- finish and interior (parse_finish.cpp) ---
     FinishPtr parseFinish(const scene::Finish* base);
     void parseFinishItems(scene::Finish& finish);
+    void parseReflectionBlock(scene::Finish& finish);
+    void parseIridescence(scene::Finish& finish);
+    InteriorPtr parseInterior(const scene::Interior* base);
+    // Whether the next token can start a float expression (for items whose
+    // value is optional, such as `metallic` or `fresnel`).
+    bool floatFollows();
+    double parseOptionalFloat(double absent);
     void parseGlobalSettings();
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();

@@ -135,6 +135,12 @@ ObjectPtr Interpreter::parseObject() {
         }
     }
     if (texture) obj->texture = std::make_shared<const scene::Texture>(*texture);
+    // The 2.0 form `finish { ior N }` fills an object that has no interior.
+    if (obj->texture && obj->texture->finish.legacyIor > 0 && !obj->interior) {
+        scene::Interior interior;
+        interior.ior = obj->texture->finish.legacyIor;
+        obj->interior = std::make_shared<const scene::Interior>(interior);
+    }
     return obj;
 }
 
@@ -301,6 +307,7 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             tx = *parseTexture(&tx);
             return true;
         }
+        case Keyword::kw_interior: obj.interior = parseInterior(obj.interior.get()); return true;
         case Keyword::kw_inverse: next(); obj.inverse = !obj.inverse; return true;
         case Keyword::kw_clipped_by:
             next();
@@ -655,49 +662,6 @@ std::vector<scene::Pigment::MapEntry> Interpreter::parsePigmentMap() {
         if (entries[i].value < entries[i - 1].value)
             fail(kw, "pigment_map entries must be in increasing order");
     return entries;
-}
-
-void Interpreter::parseFinishItems(scene::Finish& f) {
-    for (;;) {
-        if (accept(Sym::RBrace)) return;
-        const Token t = next();
-        switch (t.kw) {
-            case Keyword::kw_ambient: f.ambient = parseColor().rgb; break;
-            case Keyword::kw_emission: f.emission = parseColor().rgb; break;
-            case Keyword::kw_diffuse: f.diffuse = parseFloat(); break;
-            case Keyword::kw_brilliance: f.brilliance = parseFloat(); break;
-            case Keyword::kw_phong: f.phong = parseFloat(); break;
-            case Keyword::kw_phong_size: f.phongSize = parseFloat(); break;
-            case Keyword::kw_specular: f.specular = parseFloat(); break;
-            case Keyword::kw_roughness: f.roughness = parseFloat(); break;
-            case Keyword::kw_metallic: {
-                f.metallic = true;
-                const Token n = peek();
-                if (n.kind == TokenKind::Number || n.is(Sym::LParen)) f.metallic = parseFloat() != 0;
-                break;
-            }
-            default:
-                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in finish", t.text));
-                fail(t, fmt::format("expected a finish item or '}}', found {}", describeToken(t)));
-        }
-    }
-}
-
-FinishPtr Interpreter::parseFinish(const scene::Finish* base) {
-    next();  // finish
-    expect(Sym::LBrace, "'{' after 'finish'");
-    scene::Finish f = base ? *base : scene::Finish{};
-    const Token t = peek();
-    if (t.isIdentifier()) {
-        next();
-        const Value v = identifierValue(t);
-        const auto* fp = std::get_if<FinishPtr>(&v);
-        if (!fp) fail(t, fmt::format("'{}' is a {}, not a finish", t.text, valueKindName(v)));
-        f = **fp;
-    }
-    parseFinishItems(f);
-    return std::make_shared<const scene::Finish>(f);
 }
 
 TexturePtr Interpreter::parseTexture(const scene::Texture* base) {

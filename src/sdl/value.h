@@ -51,6 +51,7 @@ using MacroPtr = std::shared_ptr<const Macro>;
 using TransformPtr = std::shared_ptr<const Transform>;
 using FogPtr = std::shared_ptr<const scene::Fog>;
 using SkySpherePtr = std::shared_ptr<const scene::SkySphere>;
+using InteriorPtr = std::shared_ptr<const scene::Interior>;
 
 struct ArrayValue;
 struct FileHandle;
@@ -71,7 +72,8 @@ struct IdentifierAlias {
 
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
-                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr>;
+                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr,
+                           InteriorPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other

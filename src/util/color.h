@@ -16,11 +16,14 @@ struct RGB {
 
     constexpr RGB& operator+=(const RGB& o) { r += o.r; g += o.g; b += o.b; return *this; }
     constexpr RGB& operator*=(const RGB& o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
+    constexpr RGB& operator-=(const RGB& o) { r -= o.r; g -= o.g; b -= o.b; return *this; }
     constexpr RGB& operator*=(double s) { r *= s; g *= s; b *= s; return *this; }
     constexpr bool isBlack() const { return r == 0 && g == 0 && b == 0; }
+    constexpr double maxComponent() const { return std::max({r, g, b}); }
 };
 
 constexpr RGB operator+(RGB a, const RGB& b) { return a += b; }
+constexpr RGB operator-(RGB a, const RGB& b) { return a -= b; }
 constexpr RGB operator*(RGB a, const RGB& b) { return a *= b; }
 constexpr RGB operator*(RGB a, double s) { return a *= s; }
 constexpr RGB operator*(double s, RGB a) { return a *= s; }

@@ -279,7 +279,7 @@ TEST(CsgSdl, PovrayErrorsAndWarnings) {
     EXPECT_NE(parseError("union { sphere { 0, 1 } translate x sphere { 0, 1 } }").find("No matching }"),
               std::string::npos);
     EXPECT_NE(parseError("torus { 1, 0.5 }").find("not supported yet: torus"), std::string::npos);
-    EXPECT_NE(parseError("sphere { 0, 1 interior { ior 1.5 } }").find("not supported yet"), std::string::npos);
+    EXPECT_NE(parseError("sphere { 0, 1 interior { media { } } }").find("not supported yet: media"), std::string::npos);
     Parsed one("union { sphere { 0, 1 } }  triangle { 0, x, 2*x }  difference { sphere { 0, 1 } triangle { 0, x, y } }");
     EXPECT_NE(one.sink.warnings.find("Patch objects not allowed in intersection."), std::string::npos);
     EXPECT_NE(one.sink.warnings.find("Should have at least 2 objects in csg."), std::string::npos);
