@@ -380,7 +380,7 @@ const OptionSpec kOptions[] = {
      [](RenderOptions& o, const OptionInput& in) { o.quality = std::clamp(toInt(in.value), 0, 11); },
      FR_WRITE(num(o.quality)),
      [](const RenderOptions& o) -> const char* {
-         return o.quality < 4 ? "Quality below 4 (+Q0..+Q3 drop shadows and shading)" : nullptr;
+         return o.quality < 2 ? "Quality below 2 (+Q0, +Q1 show quick colours only)" : nullptr;
      }},
     FR_STREAM(TextStream::Render, "Render", "R", "render progress"),
     {"Render_Block_Size", "BS", OptionType::Int, "32",

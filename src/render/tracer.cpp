@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/lighting.h"
 #include "render/optics.h"
 
 namespace frameray::render {
@@ -68,7 +69,7 @@ Tracer::Tracer(const World& world, int quality)
     : world_(world),
       scene_(world.scene()),
       atmosphere_(world.scene(), quality >= 9),
-      shadows_(quality >= 4),
+      lighting_(LightingQuality::forQuality(quality)),
       secondaryRays_(quality >= 8) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
@@ -130,10 +131,9 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
     const double eps = selfHitEpsilon(p, ray);
     for (const scene::Light& light : scene_.lights) {
-        Vec3 toLight = light.position - p;
-        const double dist = length(toLight);
-        if (dist == 0) continue;
-        toLight = toLight / dist;
+        LightPath path;
+        if (!pathToLight(light, p, path)) continue;
+        const Vec3 toLight = path.toLight;
         // A light behind the surface only reaches double_illuminate
         // objects: their far side is lit as if it faced the light.
         Vec3 ln = n;
@@ -143,18 +143,16 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
             cosIncidence = -cosIncidence;
         }
         if (cosIncidence <= 0) continue;
-        if (!light.shadowless && shadows_) {
-            ++counts.shadow;
-            if (world_.occluded({p, toLight}, eps, dist)) continue;
-        }
-        const RGB lightColor = light.color;
+        const RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
+        if (lightColor.isBlack()) continue;
         if (fin.diffuse > 0) {
             const double intensity =
                 fin.diffuse *
                 (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
             color += lightColor * lit * intensity;
         }
-        if (fin.phong > 0 || fin.specular > 0) {
+        // povray 3.7: shadowless lights give no highlights.
+        if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless) {
             // Metallic highlights take the pigment's colour, except where
             // the light grazes the surface.
             const RGB tint = metallicTint(fin.metallic, cosIncidence, pigment);

@@ -1,13 +1,14 @@
 // POV-Ray's classic recursive ray tracer for one ray: ambient, diffuse with
-// brilliance, phong and specular highlights, hard shadows from point
-// lights, reflection and transmission (with refraction) up to
-// max_trace_level, cut off by adc_bailout.
+// brilliance, phong and specular highlights under the lights of
+// render/lighting.h (shadows, area lights), reflection and transmission
+// (with refraction) up to max_trace_level, cut off by adc_bailout.
 #pragma once
 
 #include <array>
 #include <cstdint>
 
 #include "render/atmosphere.h"
+#include "render/lighting.h"
 #include "render/world.h"
 #include "util/color.h"
 
@@ -57,8 +58,9 @@ class InteriorStack {
 
 class Tracer {
   public:
-    // `quality` is the +Q level: shadows from 4, reflection and
-    // transmission from 8, rainbows and fogs from 9 (povray 3.7).
+    // `quality` is the +Q level: shadows from 4, area lights from 5,
+    // reflection and transmission from 8, rainbows and fogs from 9
+    // (povray 3.7).
     explicit Tracer(const World& world, int quality = 9);
 
     // Colour seen along a camera ray (working colour space, unclipped).
@@ -78,7 +80,7 @@ class Tracer {
     const World& world_;
     const scene::Scene& scene_;
     AtmosphereView atmosphere_;
-    bool shadows_;
+    LightingQuality lighting_;
     bool secondaryRays_;
     InteriorStack cameraInside_;  // regions containing the camera
 };

@@ -1,5 +1,6 @@
 #include "render/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -136,11 +137,11 @@ World::~World() {
 bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit, scene::RayKind kind) const {
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
-    ctx.kind = kind;
     ctx.ray = &ray;
     ctx.tMin = tMin;
     ctx.tMax = tMax;
     ctx.hitObject = nullptr;
+    ctx.kind = kind;
     if (hasBounded_) {
         RTCRayHit rh{};
         rh.ray = toEmbreeRay(ray, tMax);
@@ -172,9 +173,32 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
     ctx.tMin = tMin;
     ctx.tMax = tMax;
     ctx.hitObject = nullptr;
+    ctx.kind = scene::RayKind::Shadow;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     return ctx.hitObject != nullptr;
+}
+
+RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit) const {
+    // Most shadow rays are either clear or blocked by something opaque:
+    // the any-hit test settles the clear ones at once.
+    if (!occluded(ray, tMin, tMax)) return RGB(1.0);
+    RGB passed(1.0);
+    double from = tMin;
+    Hit hit;
+    while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
+        const scene::Object& obj = *hit.object;
+        if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
+        const scene::Texture& tex = *obj.texture;
+        const Vec3 p = ray.at(hit.t);
+        const Color c = tex.pigment->at(tex.transform.inversePoint(p));
+        if (c.filter == 0 && c.transmit == 0) return RGB(0.0);
+        passed *= c.rgb * c.filter + RGB(c.transmit);
+        if (passed.isBlack()) return passed;
+        const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+        from = hit.t + std::max(selfHit, scale * 1e-9);
+    }
+    return passed;
 }
 
 }  // namespace frameray::render

@@ -34,6 +34,14 @@ public:
     // Whether anything that casts shadows lies in (tMin, tMax).
     bool occluded(const scene::Ray& ray, double tMin, double tMax) const;
 
+    // The part of a light's colour that passes along (tMin, tMax) of a
+    // shadow ray, as povray 3.7 computes it: every shadow-casting surface
+    // crossed multiplies it by filter * pigment + transmit (the pigment at
+    // the crossing), so an opaque surface stops it. `selfHit` is the
+    // margin past one crossing where the search for the next starts.
+    // Returns black as soon as nothing passes.
+    RGB shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit) const;
+
     const scene::Scene& scene() const { return scene_; }
 
     // The BVH's primitives (the bounded top-level objects) and their world

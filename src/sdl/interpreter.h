@@ -6,7 +6,8 @@
 // The implementation is split by concern:
 //   interpreter.cpp    token stream, directives, scopes, include files
 //   expressions.cpp    float/vector/colour/string expressions, built-ins
-//   scene_parser.cpp   objects, camera, lights, textures, global settings
+//   scene_parser.cpp   objects, camera, textures, global settings
+//   parse_light.cpp    light sources
 #pragma once
 
 #include <filesystem>
@@ -198,8 +199,9 @@ private:
                                                   const std::vector<scene::ObjectRef>& alternativeList);
     bool parseTransformation(Transform& transform);
     Transform parseTransformBlock();
-    scene::Camera parseCamera();  // parse_camera.cpp
-    scene::Light parseLightSource();
+    scene::Camera parseCamera();      // parse_camera.cpp
+    scene::Light parseLightSource();  // parse_light.cpp
+    void placeLight(scene::Light light);
     TexturePtr parseTexture(const scene::Texture* base);
     PigmentPtr parsePigment();
     // Pattern keywords and their modifiers inside pigment { }; false when

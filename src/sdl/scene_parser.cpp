@@ -40,6 +40,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_height_field, false},  {Keyword::kw_bicubic_patch, false},
     {Keyword::kw_text, true},          {Keyword::kw_julia_fractal, false},
     {Keyword::kw_polygon, false},       {Keyword::kw_ovus, false},
+    {Keyword::kw_light_group, false},
 };
 
 const ObjectKeyword* findObjectKeyword(Keyword kw) {
@@ -64,7 +65,7 @@ bool Interpreter::parseStatement() {
     }
     switch (t.kw) {
         case Keyword::kw_camera: scene_.camera = parseCamera(); return true;
-        case Keyword::kw_light_source: scene_.lights.push_back(parseLightSource()); return true;
+        case Keyword::kw_light_source: placeLight(parseLightSource()); return true;
         case Keyword::kw_global_settings: parseGlobalSettings(); return true;
         case Keyword::kw_background: parseBackground(); return true;
         case Keyword::kw_fog: scene_.atmosphere.fogs.push_back(parseFog()); return true;
@@ -696,82 +697,7 @@ TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
     return std::make_shared<const scene::Texture>(tex);
 }
 
-// --- camera, lights, settings -------------------------------------------------
-
-scene::Light Interpreter::parseLightSource() {
-    next();  // light_source
-    expect(Sym::LBrace, "'{' after 'light_source'");
-    scene::Light light;
-    light.position = parseVec3();
-    accept(Sym::Comma);
-    light.color = parseColor().rgb;
-    // looks_like { OBJECT }: a visible stand-in for the light. As povray 3.7
-    // does (checked against it): the object is moved to where the light is
-    // when looks_like is read, the light's later transforms move both, and
-    // it casts no shadow from any light (its own light sits inside it).
-    std::shared_ptr<scene::Object> looksLike;
-    for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = peek();
-        Transform step;
-        if (parseTransformation(step)) {
-            light.position = step.point(light.position);
-            if (looksLike) looksLike->transformBy(step);
-            continue;
-        }
-        next();
-        switch (t.kw) {
-            case Keyword::kw_shadowless: light.shadowless = true; break;
-            case Keyword::kw_looks_like: {
-                expect(Sym::LBrace, "'{' after 'looks_like'");
-                const Token at = peek();
-                if (isObjectStart(at)) {
-                    looksLike = std::make_shared<scene::Object>(*parseObject());
-                    looksLike->transformBy(Transform::translate(light.position));
-                    expect(Sym::RBrace, "'}' closing 'looks_like'");
-                } else if (at.isIdentifier()) {
-                    // looks_like { Bulb scale 0.8 }: povray moves the
-                    // object to the light first and applies the modifiers
-                    // after that (the scale above also scales the position;
-                    // checked against povray 3.7), unlike looks_like {
-                    // object { Bulb scale 0.8 } }.
-                    next();
-                    const Value v = identifierValue(at);
-                    const auto* src = std::get_if<ObjectPtr>(&v);
-                    if (!src) fail(at, fmt::format("'{}' is a {}, not an object", at.text, valueKindName(v)));
-                    looksLike = std::make_shared<scene::Object>(**src);
-                    looksLike->transformBy(Transform::translate(light.position));
-                    std::optional<scene::Texture> texture;
-                    if (looksLike->texture) texture = *looksLike->texture;
-                    looksLike->texture.reset();
-                    while (!accept(Sym::RBrace)) {
-                        if (!parseObjectModifier(*looksLike, texture)) {
-                            const Token bad = peek();
-                            fail(bad, fmt::format("expected an object modifier or '}}' in looks_like, found {}",
-                                                  describeToken(bad)));
-                        }
-                    }
-                    if (texture) looksLike->texture = std::make_shared<const scene::Texture>(*texture);
-                } else {
-                    fail(at, fmt::format("expected an object in looks_like, found {}", describeToken(at)));
-                }
-                looksLike->noShadow = true;
-                break;
-            }
-            case Keyword::kw_point_at: case Keyword::kw_spotlight: case Keyword::kw_cylinder:
-            case Keyword::kw_parallel: case Keyword::kw_area_light: case Keyword::kw_fade_distance:
-            case Keyword::kw_fade_power: case Keyword::kw_projected_through:
-            default:
-                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in light_source", t.text));
-                fail(t, fmt::format("expected a light_source item or '}}', found {}", describeToken(t)));
-        }
-    }
-    // Placed in the scene like any object (which settles what its CSG
-    // children inherit, the no_shadow flag included).
-    if (looksLike) scene_.objects.push_back(scene::csg::resolveInheritance(looksLike));
-    return light;
-}
+// --- settings (camera: parse_camera.cpp, lights: parse_light.cpp) ------------
 
 void Interpreter::parseGlobalSettings() {
     next();

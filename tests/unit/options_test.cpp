@@ -435,7 +435,8 @@ TEST(Options, UnsupportedValuesAreNamed) {
     EXPECT_EQ(firstUnsupported(parse({})), "");
     EXPECT_EQ(firstUnsupported(parse({"+A0.2", "+UF", "+UO", "-UA", "+Q4", "+J", "+AM2", "+R3", "+BS16"})), "");
     EXPECT_EQ(firstUnsupported(parse({"+UA"})), "Output_Alpha (alpha channel output)");
-    EXPECT_NE(firstUnsupported(parse({"+Q3"})).find("Quality"), std::string::npos);
+    EXPECT_EQ(firstUnsupported(parse({"+Q2"})), "");
+    EXPECT_NE(firstUnsupported(parse({"+Q1"})).find("Quality"), std::string::npos);
     EXPECT_NE(firstUnsupported(parse({"+HIx.inc"})).find("Include_Header"), std::string::npos);
     EXPECT_NE(firstUnsupported(parse({"+O-"})).find("standard output"), std::string::npos);
 }

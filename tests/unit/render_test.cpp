@@ -59,7 +59,9 @@ TEST(Renderer, DeterministicAcrossRuns) {
     tex->pigment = std::make_shared<scene::Pigment>(Color(RGB(1, 0.5, 0.25)));
     obj->texture = tex;
     s.objects = {obj};
-    s.lights.push_back({{5, 5, -5}, RGB(1), false});
+    scene::Light light;
+    light.position = {5, 5, -5};
+    s.lights.push_back(light);
     render::World w(s);
     render::FrameStats a, b;
     render::FrameSettings size;

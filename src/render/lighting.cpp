@@ -1,0 +1,178 @@
+#include "render/lighting.h"
+
+#include <bit>
+#include <cmath>
+#include <vector>
+
+#include "scene/object.h"
+
+namespace frameray::render {
+
+namespace {
+
+// Summed absolute RGB difference: POV-Ray's test of whether two corners of
+// an area-light block see the light alike.
+double colourDistance(const RGB& a, const RGB& b) {
+    return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
+}
+
+// A hash of a surface point and a grid point, for jitter that is the same
+// whatever the thread count or tile order (povray's own jitter is random
+// from render to render, so no sequence can match it anyway).
+uint64_t mix(uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdULL;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ULL;
+    h ^= h >> 33;
+    return h;
+}
+double unitHash(uint64_t h) {
+    return static_cast<double>(h >> 11) * 0x1.0p-53;
+}
+
+struct GridSampler {
+    const World& world;
+    const scene::Light& light;
+    const Vec3& p;
+    double selfHit;
+    Vec3 centre;  // the light's centre as seen from p
+    Vec3 axis1, axis2;
+    uint64_t seed;
+    uint64_t& shadowRays;
+
+    RGB operator()(int i, int j) const {
+        double u = i, v = j;
+        if (light.area.jitter) {
+            const uint64_t h = mix(seed ^ mix(static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ULL +
+                                              static_cast<uint64_t>(j)));
+            u += unitHash(h) - 0.5;
+            v += unitHash(mix(h)) - 0.5;
+        }
+        const Vec3 target = centre + light.area.gridOffset(u, v, axis1, axis2);
+        Vec3 dir = target - p;
+        const double dist = length(dir);
+        if (dist == 0) return light.color;
+        dir = dir / dist;
+        ++shadowRays;
+        return light.color * world.shadowFilter({p, dir}, selfHit, dist, selfHit);
+    }
+};
+
+}  // namespace
+
+RGB subdivideAreaGrid(int size1, int size2, int adaptive,
+                      const std::function<RGB(int, int)>& sample) {
+    const size_t count = static_cast<size_t>(size1) * static_cast<size_t>(size2);
+    // Each grid point is traced at most once; blocks share their corners.
+    thread_local std::vector<RGB> cache;
+    thread_local std::vector<unsigned char> known;
+    cache.resize(count);
+    known.assign(count, 0);
+    auto at = [&](int i, int j) -> const RGB& {
+        const size_t k =
+            static_cast<size_t>(j) * static_cast<size_t>(size1) + static_cast<size_t>(i);
+        if (!known[k]) {
+            cache[k] = sample(i, j);
+            known[k] = 1;
+        }
+        return cache[k];
+    };
+    // Recursion depth is the log2 of the grid size: small.
+    auto block = [&](auto&& self, int u1, int v1, int u2, int v2, int level) -> RGB {
+        const RGB c00 = at(u1, v1), c10 = at(u2, v1), c01 = at(u1, v2), c11 = at(u2, v2);
+        const bool splittable = u2 - u1 > 1 || v2 - v1 > 1;
+        if (splittable &&
+            (level < adaptive || colourDistance(c00, c10) > 0.1 || colourDistance(c10, c11) > 0.1 ||
+             colourDistance(c11, c01) > 0.1 || colourDistance(c01, c00) > 0.1)) {
+            // Halves share the middle point when the span is even;
+            // an odd span splits into two disjoint halves (measured:
+            // povray weights a 4-point row uniformly, a 5-point row 1:2:2:2:1).
+            const int um = (u1 + u2) / 2, vm = (v1 + v2) / 2;
+            const int uh = (u2 - u1) % 2 ? um + 1 : um, vh = (v2 - v1) % 2 ? vm + 1 : vm;
+            RGB sum = self(self, u1, v1, um, vm, level + 1);
+            sum += self(self, uh, v1, u2, vm, level + 1);
+            sum += self(self, u1, vh, um, v2, level + 1);
+            sum += self(self, uh, vh, u2, v2, level + 1);
+            return sum * 0.25;
+        }
+        return (c00 + c10 + c01 + c11) * 0.25;
+    };
+    return block(block, 0, 0, size1 - 1, size2 - 1, 0);
+}
+
+bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path) {
+    if (light.parallel || light.kind == scene::LightKind::Cylinder) {
+        // Light travels along the axis; the way back to it is the reverse
+        // axis, up to the plane through the light across the axis.
+        path.toLight = -light.axis();
+        path.distance = dot(light.position - p, path.toLight);
+        if (light.kind == scene::LightKind::Cylinder && path.distance <= 0) return false;
+        if (path.distance <= 0) path.distance = scene::kInfinity;
+        return true;
+    }
+    const Vec3 d = light.position - p;
+    path.distance = length(d);
+    if (path.distance == 0) return false;
+    path.toLight = d / path.distance;
+    return true;
+}
+
+RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
+                  const LightPath& path, double selfHit, const LightingQuality& quality,
+                  uint64_t& shadowRays) {
+    // Parallel and cylinder lights fade with the distance from the plane
+    // through the light across its axis, on either side of it (measured).
+    const bool planar = light.parallel || light.kind == scene::LightKind::Cylinder;
+    const double fadeDistance =
+        planar ? std::fabs(dot(light.position - p, light.axis())) : path.distance;
+    const double att = light.attenuation(p, fadeDistance);
+    if (att <= 0) return RGB(0.0);
+    if (light.projectedThrough) {
+        // Only light that crosses the object on its way to p.
+        scene::SurfaceHit h;
+        if (!light.projectedThrough->firstHit({p, path.toLight}, selfHit, path.distance,
+                                              scene::RayKind::Any, h))
+            return RGB(0.0);
+    }
+    const RGB color = light.color * att;
+    if (light.shadowless || !quality.shadows) return color;
+
+    const bool sampleArea =
+        light.isArea && quality.areaLights && (light.area.size1 > 1 || light.area.size2 > 1);
+    if (!sampleArea) {
+        ++shadowRays;
+        return color * world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit);
+    }
+
+    const scene::AreaLight& area = light.area;
+    Vec3 axis1 = area.axis1, axis2 = area.axis2;
+    if (area.orient) {
+        // Turn the grid to face p, keeping the axes' lengths: axis 1 across
+        // the light ray and a fixed world axis (z, or x when the ray runs
+        // nearly along z), axis 2 across both. The handedness was measured:
+        // a pinhole under the light shows povray's sample spots exactly.
+        const Vec3& ray = path.toLight;
+        const Vec3 helper =
+            std::fabs(std::fabs(ray.z) - 1.0) < 0.01 ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
+        const Vec3 a1 = normalize(cross(ray, helper));
+        const Vec3 a2 = normalize(cross(ray, a1));
+        axis1 = a1 * length(area.axis1);
+        axis2 = a2 * length(area.axis2);
+    }
+    const uint64_t seed =
+        mix(std::bit_cast<uint64_t>(p.x) ^
+            mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
+    // A parallel or cylinder light's grid sits, for p, back along the axis
+    // at the distance from the light's location to point_at (measured with
+    // a pinhole under a tilted parallel area light: the sample spots match
+    // exactly; the light's own plane would tilt them).
+    const Vec3 centre =
+        planar ? p + path.toLight * length(light.pointAt - light.position) : light.position;
+    const GridSampler sampler{world, light, p, selfHit, centre, axis1, axis2, seed, shadowRays};
+    // The grid samples carry the light's colour; attenuation (computed at
+    // the centre) scales the mean.
+    return subdivideAreaGrid(area.size1, area.size2, area.adaptive, sampler) * att;
+}
+
+}  // namespace frameray::render

@@ -1,0 +1,10 @@
+// Conformance: adaptive area lights (corners first, quarters while the
+// corners differ): a 9x9 light at adaptive 1 and a 6x4 light at adaptive 0.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 5, -7> look_at <0, 0.5, 0> angle 55 }
+light_source { <-2, 6, -2> color rgb <1, 0.9, 0.8> area_light <3, 0, 0>, <0, 0, 3>, 9, 9 adaptive 1 }
+light_source { <3, 5, 1> color rgb <0.3, 0.4, 0.7> area_light <0, 0, 3>, <2, 0, 0>, 6, 4 adaptive 0 }
+plane { y, 0 pigment { rgb 0.9 } finish { ambient 0.05 diffuse 0.8 } }
+sphere { <-0.5, 1, 0>, 1 pigment { rgb 1 } }
+box { <1, 0, -1>, <1.6, 1.8, 0.4> pigment { rgb <1, 0.9, 0.7> } }
