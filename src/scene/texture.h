@@ -47,7 +47,13 @@ public:
     void setPigmentMap(std::vector<MapEntry> map);
     // Pigment-local transformation ("this, then t"); composes before the
     // texture's transform.
-    void transform(const Transform& t) { transform_ = transform_.then(t); hasTransform_ = true; }
+    // The pattern keeps the same transformation in its own chain, where
+    // warps may interleave with it.
+    void transform(const Transform& t) {
+        transform_ = transform_.then(t);
+        hasTransform_ = true;
+        pattern_.addTransform(t);
+    }
 
 private:
     Kind kind_ = Kind::Solid;

@@ -207,6 +207,10 @@ private:
     bool parsePigmentPatternItem(scene::Pigment& pigment);
     PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
     scene::ColorMap parseColorMap();
+    // --- patterns (pattern_parser.cpp) ---
+    scene::NoiseGenerator parseNoiseGenerator(const Token& at);
+    bool parseTurbulenceItem(scene::Turbulence& turb);  // turbulence, octaves, omega, lambda
+    scene::Warp parseWarp();                             // after the warp keyword
     std::vector<scene::Pigment::MapEntry> parsePigmentMap();
     FinishPtr parseFinish(const scene::Finish* base);
     void parseFinishItems(scene::Finish& finish);
