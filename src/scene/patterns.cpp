@@ -112,6 +112,17 @@ const WaveSources& waveSources() {
     return sources;
 }
 
+}  // namespace
+
+Vec3 waveSourceCenter(int i) {
+    return waveSources().center[static_cast<std::size_t>(i)];
+}
+double waveSourceFrequency(int i) {
+    return waveSources().frequency[static_cast<std::size_t>(i)];
+}
+
+namespace {
+
 double cycloidal(double v) {
     return std::sin(v * kTwoPi);
 }

@@ -16,25 +16,52 @@ namespace frameray::scene {
 
 enum class PatternKind {
     // colour-list patterns
-    Checker, Hexagon, Brick,
+    Checker,
+    Hexagon,
+    Brick,
     // colour-mapped patterns
-    Gradient, Onion, Radial, Spherical, Cylindrical, Planar, Boxed, Leopard, Quilted, Spiral1, Spiral2,
+    Gradient,
+    Onion,
+    Radial,
+    Spherical,
+    Cylindrical,
+    Planar,
+    Boxed,
+    Leopard,
+    Quilted,
+    Spiral1,
+    Spiral2,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
-    Bozo, Spotted, Bumps, Dents, Granite, Marble, Wood, Agate, Wrinkles, Ripples, Waves,
+    Bozo,
+    Spotted,
+    Bumps,
+    Dents,
+    Granite,
+    Marble,
+    Wood,
+    Agate,
+    Wrinkles,
+    Ripples,
+    Waves,
 };
+
+// The sources of ripples and waves (shared with their normals).
+inline constexpr int kWaveSourceCount = 10;
+Vec3 waveSourceCenter(int i);
+double waveSourceFrequency(int i);
 
 enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
 struct Pattern {
     PatternKind kind = PatternKind::Gradient;
-    Vec3 gradient{1, 0, 0};       // gradient direction, normalised
+    Vec3 gradient{1, 0, 0};  // gradient direction, normalised
     Vec3 brickSize{8, 3, 4.5};
     double mortar = 0.5;
     double control0 = 1, control1 = 1;  // quilted
-    int arms = 0;                 // spiral1 / spiral2
+    int arms = 0;                       // spiral1 / spiral2
     WaveType waveType = WaveType::Ramp;
-    double exponent = 1;          // poly_wave
+    double exponent = 1;  // poly_wave
     // povray keeps frequency and phase in single precision (visible in its
     // pattern values), so the parser rounds them to float.
     double frequency = 1, phase = 0;

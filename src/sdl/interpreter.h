@@ -208,6 +208,7 @@ private:
     PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
     scene::ColorMap parseColorMap();
     // --- patterns (pattern_parser.cpp) ---
+    std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
     scene::NoiseGenerator parseNoiseGenerator(const Token& at);
     bool parseTurbulenceItem(scene::Turbulence& turb);  // turbulence, octaves, omega, lambda
     scene::Warp parseWarp();                             // after the warp keyword

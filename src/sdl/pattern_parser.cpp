@@ -287,6 +287,59 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
     }
 }
 
+std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base) {
+    next();  // normal
+    expect(Sym::LBrace, "'{' after 'normal'");
+    scene::Normal normal = base ? *base : scene::Normal{};
+    // The pattern and its modifiers are parsed like a pigment's; the
+    // pigment is a scratch holder for the pattern and its chain.
+    scene::Pigment holder;
+    holder.setPattern(normal.pattern);
+    bool havePattern = base != nullptr;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token item = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            holder.transform(step);
+            continue;
+        }
+        if (patternKeyword(item.kw)) {
+            if (scene::Pattern::listSize(*patternKeyword(item.kw)) > 0)
+                unsupported(item, fmt::format("'{}' as a normal", item.text));
+            parsePigmentPatternItem(holder);
+            havePattern = true;
+            // An optional bump size follows the pattern.
+            const Token n = peek();
+            if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
+                (n.isIdentifier() && lookup(std::string(n.text)) &&
+                 std::holds_alternative<double>(*lookup(std::string(n.text)))))
+                normal.amount = parseFloat();
+            continue;
+        }
+        if (item.is(Keyword::kw_bump_size)) {
+            next();
+            normal.amount = parseFloat();
+            continue;
+        }
+        if (item.is(Keyword::kw_accuracy)) {
+            next();
+            normal.accuracy = parseFloat();
+            continue;
+        }
+        if (item.is(Keyword::kw_color_map) || item.is(Keyword::kw_colour_map) ||
+            item.is(Keyword::kw_pigment_map))
+            fail(item, fmt::format("'{}' is not allowed in a normal", item.text));
+        if (parsePigmentPatternItem(holder)) continue;
+        if (item.kind == TokenKind::Word && item.kw != Keyword::None)
+            unsupported(item, fmt::format("'{}' in normal", item.text));
+        fail(item, fmt::format("expected a normal item or '}}', found {}", describeToken(item)));
+    }
+    normal.pattern = holder.pattern();
+    if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
+    return std::make_shared<const scene::Normal>(normal);
+}
+
 scene::NoiseGenerator Interpreter::parseNoiseGenerator(const Token& at) {
     const double g = parseFloat();
     if (g == 1) return scene::NoiseGenerator::Original;

@@ -290,6 +290,11 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
     };
     switch (tok.kw) {
         case Keyword::kw_pigment: editTexture().pigment = parsePigment(); return true;
+        case Keyword::kw_normal: {
+            scene::Texture& tx = editTexture();
+            tx.normal = parseNormal(tx.normal.get());
+            return true;
+        }
         case Keyword::kw_finish: {
             scene::Texture& tx = editTexture();
             tx.finish = *parseFinish(&tx.finish);
@@ -461,6 +466,8 @@ TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
         }
         if (item.is(Keyword::kw_pigment)) {
             tex.pigment = parsePigment();
+        } else if (item.is(Keyword::kw_normal)) {
+            tex.normal = parseNormal(tex.normal.get());
         } else if (item.is(Keyword::kw_finish)) {
             tex.finish = *parseFinish(&tex.finish);
         } else if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
