@@ -23,6 +23,13 @@ Vec3 Warp::apply(const Vec3& p) const {
             }
             return q + offset * block;
         }
+        case Kind::BlackHole: {
+            const Vec3 d = p - center;
+            const double r = length(d);
+            if (r >= radius) return p;
+            const double k = strength * std::pow(1.0 - r / radius, falloff);
+            return inverse ? p - d * k : p + d * k;
+        }
     }
     return p;
 }

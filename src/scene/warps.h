@@ -12,7 +12,7 @@
 namespace frameray::scene {
 
 struct Warp {
-    enum class Kind { Transform, Turbulence, Repeat };
+    enum class Kind { Transform, Turbulence, Repeat, BlackHole };
     Kind kind = Kind::Transform;
 
     // Transform: the pattern's transformation; points go through its inverse.
@@ -25,6 +25,12 @@ struct Warp {
     double width = 1;
     Vec3 offset{0, 0, 0};
     bool flip[3] = {false, false, false};
+    // BlackHole: within `radius` of `center` points move away from it by
+    // (p - center) * strength * (1 - r / radius)^falloff, towards it when
+    // inverse (measured from povray's pattern functions).
+    Vec3 center{0, 0, 0};
+    double radius = 1, strength = 1, falloff = 2;
+    bool inverse = false;
 
     static Warp makeTransform(const Transform& t) {
         Warp w;

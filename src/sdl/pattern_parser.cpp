@@ -411,6 +411,28 @@ scene::Warp Interpreter::parseWarp() {
                 break;
             }
         }
+    } else if (kind.is(Keyword::kw_black_hole)) {
+        w.kind = scene::Warp::Kind::BlackHole;
+        w.center = parseVec3();
+        accept(Sym::Comma);
+        w.radius = parseFloat();
+        for (;;) {
+            const Token t = peek();
+            if (t.is(Keyword::kw_strength)) {
+                next();
+                w.strength = parseFloat();
+            } else if (t.is(Keyword::kw_falloff)) {
+                next();
+                w.falloff = parseFloat();
+            } else if (t.is(Keyword::kw_inverse)) {
+                next();
+                w.inverse = true;
+            } else if (t.is(Keyword::kw_repeat) || t.is(Keyword::kw_turbulence)) {
+                unsupported(t, fmt::format("'{}' in warp {{ black_hole }}", t.text));
+            } else {
+                break;
+            }
+        }
     } else if (kind.kind == TokenKind::Word && kind.kw != Keyword::None) {
         unsupported(kind, fmt::format("warp {{ {} }}", kind.text));
     } else {

@@ -122,3 +122,23 @@ TEST(NoisePatterns, BlockPatternsUsePovraysTolerance) {
     EXPECT_EQ(checker.index({0.5, -2e-10, 0.5}), 1);
     EXPECT_EQ(checker.index({0.5, -0.0005, 0.5}), 1);
 }
+
+TEST(Warps, BlackHoleMatchesPovray) {
+    // gradient x warp { black_hole 0, 2 [strength 0.5 falloff 3 [inverse]] }
+    auto gradientWith = [](const Warp& w, const Vec3& p) {
+        Pattern pat;
+        pat.kind = PatternKind::Gradient;
+        pat.addWarp(w);
+        return pat.value(p);
+    };
+    Warp w;
+    w.kind = Warp::Kind::BlackHole;
+    w.radius = 2;
+    EXPECT_NEAR(gradientWith(w, {0.1, 0, 0}), 0.19025, 1e-12);
+    w.strength = 0.5;
+    w.falloff = 3;
+    EXPECT_NEAR(gradientWith(w, {0.1, 0, 0}), 0.14286875, 1e-12);
+    EXPECT_NEAR(gradientWith(w, {0.1, 0.3, 0}), 0.129835275195, 1e-11);
+    w.inverse = true;
+    EXPECT_NEAR(gradientWith(w, {0.1, 0, 0}), 0.05713125, 1e-12);
+}
