@@ -114,6 +114,7 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     Vec3 n = obj.normalAt(p);
     // Shade the side facing the viewer.
     if (dot(n, viewDir) > 0) n = -n;
+    if (obj.texture) n = obj.texture->perturbNormal(p, n);
 
     const scene::Texture& tex = obj.texture ? *obj.texture : defaultTexture();
     const scene::Finish& fin = tex.finish;

@@ -1,7 +1,9 @@
 #include "scene/patterns.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace frameray::scene {
@@ -10,8 +12,10 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Block patterns nudge the point so that faces lying exactly on a cell
-// boundary (a plane at y = 0) fall into one cell instead of speckling.
-constexpr double kBlockTolerance = 1e-3;
+// boundary (a plane at y = 0) fall into one cell instead of speckling;
+// povray's nudge is 1e-10 (measured: a point 5e-11 below a boundary counts
+// as on it, 2e-10 below does not).
+constexpr double kBlockTolerance = 1e-10;
 
 // Angle of (a, b) in [0, 1) turns, counter-clockwise from +a towards +b.
 double turns(double a, double b) {
@@ -21,7 +25,8 @@ double turns(double a, double b) {
 }
 
 int checkerIndex(const Vec3& p) {
-    const auto sum = static_cast<long long>(std::floor(p.x + kBlockTolerance) + std::floor(p.y + kBlockTolerance) +
+    const auto sum = static_cast<long long>(std::floor(p.x + kBlockTolerance) +
+                                            std::floor(p.y + kBlockTolerance) +
                                             std::floor(p.z + kBlockTolerance));
     return static_cast<int>(sum & 1);
 }
@@ -37,8 +42,10 @@ int hexagonIndex(const Vec3& p) {
     double rq = std::round(q), rr = std::round(r);
     const double rs = std::round(s);
     const double dq = std::abs(rq - q), dr = std::abs(rr - r), ds = std::abs(rs - s);
-    if (dq > dr && dq > ds) rq = -rr - rs;
-    else if (dr > ds) rr = -rq - rs;
+    if (dq > dr && dq > ds)
+        rq = -rr - rs;
+    else if (dr > ds)
+        rr = -rq - rs;
     const long long m = (2 * static_cast<long long>(rq) + static_cast<long long>(rr)) % 3;
     return static_cast<int>(m < 0 ? m + 3 : m);
 }
@@ -81,60 +88,240 @@ double spiral(const Vec3& p, int arms, bool second) {
     return v;
 }
 
+// The wave sources of ripples and waves: povray places number_of_waves
+// (10) sources at the normalised vector noise of (i, 0, 0) and gives each a
+// frequency from its SDL random generator (state' = state * 1812433253 +
+// 12345, started at -560851967; bits 16..30 scaled to [0.01, 1.01]).
+struct WaveSources {
+    static constexpr int kCount = 10;
+    std::array<Vec3, kCount> center;
+    std::array<double, kCount> frequency;
+};
+
+const WaveSources& waveSources() {
+    static const WaveSources sources = [] {
+        WaveSources w{};
+        std::uint32_t state = static_cast<std::uint32_t>(-560851967);
+        for (int i = 0; i < WaveSources::kCount; ++i) {
+            w.center[i] = normalize(vectorNoise(Vec3(i, 0, 0)));
+            state = state * 1812433253u + 12345u;
+            w.frequency[i] = static_cast<double>((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
+        }
+        return w;
+    }();
+    return sources;
+}
+
 }  // namespace
+
+Vec3 waveSourceCenter(int i) {
+    return waveSources().center[static_cast<std::size_t>(i)];
+}
+double waveSourceFrequency(int i) {
+    return waveSources().frequency[static_cast<std::size_t>(i)];
+}
+
+namespace {
+
+double cycloidal(double v) {
+    return std::sin(v * kTwoPi);
+}
+
+double ripples(const Vec3& p, double frequency, double phase) {
+    const WaveSources& w = waveSources();
+    double sum = 0;
+    for (int i = 0; i < WaveSources::kCount; ++i) {
+        double len = length(p - w.center[i]);
+        if (len == 0) len = 1;
+        sum += cycloidal(len * frequency + phase);
+    }
+    return 0.5 * (1.0 + sum / WaveSources::kCount);
+}
+
+double waves(const Vec3& p, double frequency, double phase) {
+    const WaveSources& w = waveSources();
+    double sum = 0;
+    for (int i = 0; i < WaveSources::kCount; ++i) {
+        double len = length(p - w.center[i]);
+        if (len == 0) len = 1;
+        sum += cycloidal(len * frequency * w.frequency[i] + phase) / w.frequency[i];
+    }
+    return 0.2 * (2.5 + sum / WaveSources::kCount);
+}
+
+double granite(const Vec3& p, NoiseGenerator gen) {
+    double sum = 0, freq = 1;
+    const Vec3 base = p * 4.0;
+    for (int i = 0; i < 6; ++i, freq *= 2.0) {
+        const double n = solidNoise(base * freq, gen);
+        const double t = gen == NoiseGenerator::Original ? std::abs(0.5 - n)
+                                                         : std::min(std::abs(1.0 - 2.0 * n), 0.5);
+        sum += t / freq;
+    }
+    return sum;
+}
+
+double wrinkles(const Vec3& p, NoiseGenerator gen) {
+    // Generators 2 and 3 stretch every octave to 2n - 0.5 clamped to [0, 1].
+    auto octave = [gen](const Vec3& q) {
+        const double n = solidNoise(q, gen);
+        return gen == NoiseGenerator::Original ? n : std::clamp(2.0 * n - 0.5, 0.0, 1.0);
+    };
+    double value = octave(p), lambda = 2.0, omega = 0.5;
+    for (int i = 1; i < 10; ++i, lambda *= 2.0, omega *= 0.5) value += omega * octave(p * lambda);
+    return value / 2.0;
+}
+
+double wood(const Vec3& p, const std::optional<Turbulence>& turb) {
+    double x = p.x, y = p.y;
+    if (turb) {
+        const Vec3 t = vectorTurbulence(p, *turb);
+        x += cycloidal((p.x + t.x) * turb->amount.x);
+        y += cycloidal((p.y + t.y) * turb->amount.y);
+    }
+    return std::sqrt(x * x + y * y);
+}
+
+double agate(const Vec3& p, const std::optional<Turbulence>& turb, double scale,
+             NoiseGenerator gen) {
+    // Agate always turbulates: without a turbulence of its own it uses
+    // povray's defaults (6 octaves, omega 0.5, lambda 2).
+    const double t = scale * turbulence(p, turb ? *turb : Turbulence{}, gen);
+    double v = 0.5 * (cycloidal(1.3 * t + 1.1 * p.z) + 1.0);
+    if (v < 0) return 0;
+    return std::pow(std::min(1.0, v), 0.77);
+}
+
+}  // namespace
+
+void Pattern::addTransform(const Transform& t) {
+    if (!chain.empty() && chain.back().kind == Warp::Kind::Transform)
+        chain.back().transform = chain.back().transform.then(t);
+    else
+        chain.push_back(Warp::makeTransform(t));
+}
+
+Vec3 Pattern::patternPoint(const Vec3& p) const {
+    Vec3 q = p;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) q = it->apply(q);
+    const bool usesTurbulence =
+        kind == PatternKind::Marble || kind == PatternKind::Wood || kind == PatternKind::Agate;
+    if (turbulence && !usesTurbulence)
+        q += mul(vectorTurbulence(q, *turbulence), turbulence->amount);
+    return q;
+}
 
 int Pattern::listSize(PatternKind kind) {
     switch (kind) {
-        case PatternKind::Checker: return 2;
-        case PatternKind::Hexagon: return 3;
-        case PatternKind::Brick: return 2;
-        default: return 0;
+        case PatternKind::Checker:
+            return 2;
+        case PatternKind::Hexagon:
+            return 3;
+        case PatternKind::Brick:
+            return 2;
+        default:
+            return 0;
     }
 }
 
-int Pattern::index(const Vec3& p) const {
+int Pattern::index(const Vec3& point) const {
+    const Vec3 p = patternPoint(point);
     switch (kind) {
-        case PatternKind::Checker: return checkerIndex(p);
-        case PatternKind::Hexagon: return hexagonIndex(p);
-        case PatternKind::Brick: return brickIndex(p, brickSize, mortar);
-        default: return 0;
+        case PatternKind::Checker:
+            return checkerIndex(p);
+        case PatternKind::Hexagon:
+            return hexagonIndex(p);
+        case PatternKind::Brick:
+            return brickIndex(p, brickSize, mortar);
+        default:
+            return 0;
     }
 }
 
 double Pattern::raw(const Vec3& p) const {
     switch (kind) {
-        case PatternKind::Gradient: return dot(p, gradient);
-        case PatternKind::Onion: return length(p);
-        case PatternKind::Radial: return turns(p.x, -p.z);
-        case PatternKind::Spherical: return std::max(0.0, 1.0 - length(p));
-        case PatternKind::Cylindrical: return std::max(0.0, 1.0 - std::hypot(p.x, p.z));
-        case PatternKind::Planar: return std::max(0.0, 1.0 - std::abs(p.y));
+        case PatternKind::Gradient: {
+            // povray wraps values above one into [0, 1) before frequency
+            // and phase, but leaves negative ones alone (measured).
+            const double g = dot(p, gradient);
+            return g > 1.0 ? std::fmod(g, 1.0) : g;
+        }
+        case PatternKind::Onion:
+            return length(p);
+        case PatternKind::Radial:
+            return turns(p.x, -p.z);
+        case PatternKind::Spherical:
+            return std::max(0.0, 1.0 - length(p));
+        case PatternKind::Cylindrical:
+            return std::max(0.0, 1.0 - std::hypot(p.x, p.z));
+        case PatternKind::Planar:
+            return std::max(0.0, 1.0 - std::abs(p.y));
         case PatternKind::Boxed:
             return std::max(0.0, 1.0 - std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
         case PatternKind::Leopard: {
             const double s = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
             return s * s;
         }
-        case PatternKind::Quilted: return quilted(p, control0, control1);
-        case PatternKind::Spiral1: return spiral(p, arms, false);
-        case PatternKind::Spiral2: return spiral(p, arms, true);
-        default: return 0;
+        case PatternKind::Quilted:
+            return quilted(p, control0, control1);
+        case PatternKind::Spiral1:
+            return spiral(p, arms, false);
+        case PatternKind::Spiral2:
+            return spiral(p, arms, true);
+        case PatternKind::Bozo:
+        case PatternKind::Spotted:
+        case PatternKind::Bumps:
+            return solidNoise(p, noiseGenerator);
+        case PatternKind::Dents: {
+            const double n = solidNoise(p, noiseGenerator);
+            return n * n * n;
+        }
+        case PatternKind::Granite:
+            return granite(p, noiseGenerator);
+        case PatternKind::Marble:
+            return p.x + (turbulence ? turbulence->amount.x *
+                                           scene::turbulence(p, *turbulence, noiseGenerator)
+                                     : 0.0);
+        case PatternKind::Wood:
+            return wood(p, turbulence);
+        case PatternKind::Agate:
+            return agate(p, turbulence, agateTurb, noiseGenerator);
+        case PatternKind::Wrinkles:
+            return wrinkles(p, noiseGenerator);
+        case PatternKind::Ripples:
+            return ripples(p, frequency, phase);
+        case PatternKind::Waves:
+            return waves(p, frequency, phase);
+        default:
+            return 0;
     }
 }
 
 double Pattern::value(const Vec3& p) const {
-    double v = raw(p) * frequency + phase;
+    return wave(raw(patternPoint(p)));
+}
+
+double Pattern::wave(double rawValue) const {
+    // ripples and waves use frequency and phase inside their sums as well
+    // (measured: povray applies them twice for these two).
+    double v = rawValue * frequency + phase;
     // POV-Ray wraps with a period a hair above one so that a value of
     // exactly 1 keeps the last colour of the map.
     v = std::fmod(v, 1.00001);
     if (v < 0) v -= std::floor(v);
-    switch (wave) {
-        case WaveType::Ramp: return v;
-        case WaveType::Triangle: return v < 0.5 ? 2.0 * v : 2.0 * (1.0 - v);
-        case WaveType::Sine: return 0.5 * (1.0 + std::sin(kTwoPi * v));
-        case WaveType::Scallop: return std::abs(std::sin(std::numbers::pi * v));
-        case WaveType::Cubic: return v * v * (3.0 - 2.0 * v);
-        case WaveType::Poly: return std::pow(v, exponent);
+    switch (waveType) {
+        case WaveType::Ramp:
+            return v;
+        case WaveType::Triangle:
+            return v < 0.5 ? 2.0 * v : 2.0 * (1.0 - v);
+        case WaveType::Sine:
+            return 0.5 * (1.0 + std::sin(kTwoPi * v));
+        case WaveType::Scallop:
+            return std::abs(std::sin(std::numbers::pi * v));
+        case WaveType::Cubic:
+            return v * v * (3.0 - 2.0 * v);
+        case WaveType::Poly:
+            return std::pow(v, exponent);
     }
     return v;
 }

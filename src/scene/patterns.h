@@ -1,43 +1,99 @@
-// Deterministic (noise-free) pigment patterns (seed 003 §5.4.1): colour-list
-// patterns pick an index, colour-mapped patterns give a value in [0, 1]
-// after the wave type, frequency and phase. Evaluation is const, thread-safe
-// and allocation-free.
+// Pigment patterns (seed 003 §5.4.1): colour-list patterns pick an index,
+// colour-mapped patterns give a value in [0, 1] after the wave type,
+// frequency and phase. Noise-based patterns follow povray 3.7 exactly
+// (noise.h). Each pattern carries its chain of transformations and warps
+// (warps.h). Evaluation is const, thread-safe and allocation-free.
 #pragma once
 
+#include <optional>
+#include <vector>
+
+#include "scene/noise.h"
+#include "scene/warps.h"
 #include "util/vec3.h"
 
 namespace frameray::scene {
 
 enum class PatternKind {
     // colour-list patterns
-    Checker, Hexagon, Brick,
+    Checker,
+    Hexagon,
+    Brick,
     // colour-mapped patterns
-    Gradient, Onion, Radial, Spherical, Cylindrical, Planar, Boxed, Leopard, Quilted, Spiral1, Spiral2,
+    Gradient,
+    Onion,
+    Radial,
+    Spherical,
+    Cylindrical,
+    Planar,
+    Boxed,
+    Leopard,
+    Quilted,
+    Spiral1,
+    Spiral2,
+    // noise-based colour-mapped patterns (spotted is bozo with another
+    // default colour map)
+    Bozo,
+    Spotted,
+    Bumps,
+    Dents,
+    Granite,
+    Marble,
+    Wood,
+    Agate,
+    Wrinkles,
+    Ripples,
+    Waves,
 };
+
+// The sources of ripples and waves (shared with their normals).
+inline constexpr int kWaveSourceCount = 10;
+Vec3 waveSourceCenter(int i);
+double waveSourceFrequency(int i);
 
 enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
 struct Pattern {
     PatternKind kind = PatternKind::Gradient;
-    Vec3 gradient{1, 0, 0};       // gradient direction, normalised
+    Vec3 gradient{1, 0, 0};  // gradient direction, normalised
     Vec3 brickSize{8, 3, 4.5};
     double mortar = 0.5;
     double control0 = 1, control1 = 1;  // quilted
-    int arms = 0;                 // spiral1 / spiral2
-    WaveType wave = WaveType::Ramp;
-    double exponent = 1;          // poly_wave
+    int arms = 0;                       // spiral1 / spiral2
+    WaveType waveType = WaveType::Ramp;
+    double exponent = 1;  // poly_wave
+    // povray keeps frequency and phase in single precision (visible in its
+    // pattern values), so the parser rounds them to float.
     double frequency = 1, phase = 0;
+    NoiseGenerator noiseGenerator = NoiseGenerator::RangeCorrected;
+    double agateTurb = 1.0;
+    // The pattern's own `turbulence`: applied after every warp and
+    // transformation, or used inside marble, wood and agate.
+    std::optional<Turbulence> turbulence;
+    // Transformations and warps in the order written.
+    std::vector<Warp> chain;
+
+    // Appends a transformation, merged with a directly preceding one.
+    void addTransform(const Transform& t);
+    void addWarp(const Warp& w) { chain.push_back(w); }
+    // Texture-space point to pattern space: the chain backwards, then the
+    // pattern's turbulence unless the pattern uses it itself.
+    Vec3 patternPoint(const Vec3& p) const;
 
     // Number of colours a colour-list pattern takes (0 for mapped patterns).
     static int listSize(PatternKind kind);
     bool isList() const { return listSize(kind) > 0; }
 
-    // Colour-list patterns: the index of the colour at p.
+    // Colour-list patterns: the index of the colour at texture point p.
     int index(const Vec3& p) const;
-    // Colour-mapped patterns: the pattern function before the wave.
-    double raw(const Vec3& p) const;
-    // raw() after frequency, phase and the wave type: the colour map index.
+    // Colour-mapped patterns: the pattern function at pattern-space point q
+    // (after patternPoint), before the wave.
+    double raw(const Vec3& q) const;
+    // The colour map index at texture point p: raw() after frequency, phase
+    // and the wave type.
     double value(const Vec3& p) const;
+    // Applies frequency, phase and the wave type to a raw value.
+    double wave(double raw) const;
 };
 
 }  // namespace frameray::scene

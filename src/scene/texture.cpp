@@ -2,10 +2,43 @@
 
 namespace frameray::scene {
 
+namespace {
+
+// povray's built-in colour maps for patterns given without one (measured
+// from its renders); every other pattern defaults to black to white.
+ColorMap defaultColorMap(PatternKind kind) {
+    auto rgb = [](double r, double g, double b) { return Color(RGB(r, g, b)); };
+    switch (kind) {
+        case PatternKind::Bozo:
+            return ColorMap({{0.4, rgb(1, 1, 1)},
+                             {0.4, rgb(0, 1, 0)},
+                             {0.6, rgb(0, 1, 0)},
+                             {0.6, rgb(0, 0, 1)},
+                             {0.8, rgb(0, 0, 1)},
+                             {0.8, rgb(1, 0, 0)}});
+        case PatternKind::Marble:
+            return ColorMap(
+                {{0.0, rgb(0.9, 0.8, 0.8)}, {0.9, rgb(0.9, 0.08, 0.08)}, {0.9, rgb(0, 0, 0)}});
+        case PatternKind::Wood:
+            return ColorMap({{0.6, rgb(0.666, 0.312, 0.2)}, {0.6, rgb(0.4, 0.1333, 0.066)}});
+        case PatternKind::Agate:
+            return ColorMap({{0.0, rgb(1, 1, 1)},
+                             {0.5, rgb(0.95, 0.75, 0.5)},
+                             {0.5, rgb(0.9, 0.7, 0.5)},
+                             {0.6, rgb(0.9, 0.7, 0.4)},
+                             {0.6, rgb(1.0, 0.7, 0.4)},
+                             {1.0, rgb(0.6, 0.3, 0.0)}});
+        default:
+            return ColorMap::grayscale();
+    }
+}
+
+}  // namespace
+
 void Pigment::setPattern(const Pattern& p) {
     pattern_ = p;
     kind_ = p.isList() ? Kind::List : Kind::ColorMapped;
-    if (kind_ == Kind::ColorMapped && colorMap_.empty()) colorMap_ = ColorMap::grayscale();
+    if (kind_ == Kind::ColorMapped && colorMap_.empty()) colorMap_ = defaultColorMap(p.kind);
 }
 
 void Pigment::setColorMap(ColorMap map) {
@@ -23,13 +56,14 @@ Color Pigment::at(const Vec3& point) const {
     const Vec3 p = hasTransform_ ? transform_.inversePoint(point) : point;
     switch (kind_) {
         case Kind::List: {
-            const auto i = static_cast<std::size_t>(pattern_.index(p));
+            const auto i = static_cast<std::size_t>(pattern_.index(point));
             return i < list_.size() && list_[i] ? list_[i]->at(p) : Color();
         }
-        case Kind::ColorMapped: return colorMap_.at(pattern_.value(p));
+        case Kind::ColorMapped:
+            return colorMap_.at(pattern_.value(point));
         case Kind::PigmentMapped: {
             if (pigmentMap_.empty()) return Color();
-            const double v = pattern_.value(p);
+            const double v = pattern_.value(point);
             if (v <= pigmentMap_.front().value) return pigmentMap_.front().pigment->at(p);
             std::size_t hi = 1;
             while (hi < pigmentMap_.size() && pigmentMap_[hi].value <= v) ++hi;
@@ -40,9 +74,11 @@ Color Pigment::at(const Vec3& point) const {
             if (span <= 0) return b.pigment->at(p);
             const double t = (v - a.value) / span, s = 1.0 - t;
             const Color ca = a.pigment->at(p), cb = b.pigment->at(p);
-            return Color(ca.rgb * s + cb.rgb * t, ca.filter * s + cb.filter * t, ca.transmit * s + cb.transmit * t);
+            return Color(ca.rgb * s + cb.rgb * t, ca.filter * s + cb.filter * t,
+                         ca.transmit * s + cb.transmit * t);
         }
-        case Kind::Solid: break;
+        case Kind::Solid:
+            break;
     }
     return color_;
 }

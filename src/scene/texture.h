@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "scene/color_map.h"
+#include "scene/normals.h"
 #include "scene/patterns.h"
-
 #include "util/color.h"
 #include "util/matrix.h"
 
@@ -19,7 +19,7 @@ namespace frameray::scene {
 // pigment-mapped pattern. Evaluation is const, thread-safe and does not
 // allocate.
 class Pigment {
-public:
+  public:
     enum class Kind { Solid, List, ColorMapped, PigmentMapped };
     struct MapEntry {
         double value;
@@ -37,7 +37,10 @@ public:
     bool isSolid() const { return kind_ == Kind::Solid; }
 
     // Builders used by the parser.
-    void setSolid(const Color& c) { kind_ = Kind::Solid; color_ = c; }
+    void setSolid(const Color& c) {
+        kind_ = Kind::Solid;
+        color_ = c;
+    }
     void setPattern(const Pattern& p);  // picks List or ColorMapped from the pattern
     Pattern& pattern() { return pattern_; }
     const Pattern& pattern() const { return pattern_; }
@@ -47,9 +50,15 @@ public:
     void setPigmentMap(std::vector<MapEntry> map);
     // Pigment-local transformation ("this, then t"); composes before the
     // texture's transform.
-    void transform(const Transform& t) { transform_ = transform_.then(t); hasTransform_ = true; }
+    // The pattern keeps the same transformation in its own chain, where
+    // warps may interleave with it.
+    void transform(const Transform& t) {
+        transform_ = transform_.then(t);
+        hasTransform_ = true;
+        pattern_.addTransform(t);
+    }
 
-private:
+  private:
     Kind kind_ = Kind::Solid;
     Color color_;  // POV-Ray's default pigment is black
     Pattern pattern_;
@@ -111,6 +120,16 @@ struct Texture {
     // Object-to-texture space; a transform applied after the texture moves
     // it with the object (seed 003 B.3).
     Transform transform;
+
+    // Normal perturbation (normals.h); none when null.
+    std::shared_ptr<const Normal> normal;
+    // The shading normal at world point p after the texture's normal, for a
+    // unit normal n facing the viewer.
+    Vec3 perturbNormal(const Vec3& p, const Vec3& n) const {
+        if (!normal) return n;
+        const Vec3 tn = normalize(transform.inverse().normal(n));
+        return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn)));
+    }
 };
 
 }  // namespace frameray::scene

@@ -209,6 +209,11 @@ private:
     bool parsePigmentPatternItem(scene::Pigment& pigment);
     PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
     scene::ColorMap parseColorMap();
+    // --- patterns (pattern_parser.cpp) ---
+    std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
+    scene::NoiseGenerator parseNoiseGenerator(const Token& at);
+    bool parseTurbulenceItem(scene::Turbulence& turb);  // turbulence, octaves, omega, lambda
+    scene::Warp parseWarp();                             // after the warp keyword
     std::vector<scene::Pigment::MapEntry> parsePigmentMap();
     // --- finish and interior (parse_finish.cpp) ---
     FinishPtr parseFinish(const scene::Finish* base);

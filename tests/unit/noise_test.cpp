@@ -1,0 +1,144 @@
+// Noise and noise-based patterns against values measured from povray 3.7
+// (#debug of f_noise3d, vturbulence and function { pattern { ... } } at
+// these points, printed with 17 digits).
+#include "scene/noise.h"
+
+#include <gtest/gtest.h>
+
+#include "scene/patterns.h"
+
+using namespace frameray;
+using namespace frameray::scene;
+
+namespace {
+
+struct Sample {
+    double x, y, z, value;
+};
+
+constexpr double kTolerance = 1e-12;
+
+}  // namespace
+
+TEST(Noise, RangeCorrectedGeneratorMatchesPovray) {
+    const Sample samples[] = {
+        {-36.563575588759875, 34.74337369372327, 26.377461897661405, 0.5201734733828024},
+        {-24.49309742605783, -0.4564912908059071, -5.050893521126184, 0.33369318507633683},
+        {15.15929727227629, 28.872335113551316, -40.61404132257651, 0.372474402259989},
+        {-47.16525234779937, 33.57651039198697, -6.723293209494663, 0.47355019655627845},
+        {26.2280082457942, -49.78939466488893, -5.461280594519856, 0.7566279370761886},
+        {0, 0, 0, 0.29832243930790991},
+        {0.3, 0.2, 0.1, 0.37343896248832870},
+    };
+    for (const Sample& s : samples)
+        EXPECT_NEAR(solidNoise({s.x, s.y, s.z}, NoiseGenerator::RangeCorrected), s.value,
+                    kTolerance)
+            << s.x << " " << s.y << " " << s.z;
+}
+
+TEST(Noise, OriginalGeneratorMatchesPovrayIncludingClipping) {
+    const Sample samples[] = {
+        {0.5, 0.0, 0.0, 0.26651424999999995},
+        {0.0, 0.5, 0.0, 0.0},  // clipped at 0
+        {0.0, 0.0, 0.5, 0.52916775},
+        {0.25, 0.0, 0.0, 0.23113545312499995},
+        {-19.873234048428767, -46.898824853025, 36.552723697894564, 0.0},
+        {-2.7250911334533185, 21.88239240658031, 37.881280025548165, 0.6982400807379048},
+        {21.412948361120257, 42.109866758387454, -10.503659599925605, 0.535445995431602},
+        {30.090877098522824, -5.5378943949239385, 43.55867217045211, 0.646153728768804},
+    };
+    for (const Sample& s : samples)
+        EXPECT_NEAR(solidNoise({s.x, s.y, s.z}, NoiseGenerator::Original), s.value, kTolerance)
+            << s.x << " " << s.y << " " << s.z;
+}
+
+TEST(Noise, VectorNoiseMatchesPovrayVturbulence) {
+    // vturbulence(2, 0.5, 1, P) is one octave: the vector noise itself.
+    const double samples[][6] = {
+        {0.3, 0.2, 0.1, -0.29007535236811371, -0.05351275171700226, -0.39439321300652036},
+        {45.60342718892494, 44.782748705934935, -44.34486322731913, 0.20857270301384565,
+         -0.4733230725884307, -0.218928757512868},
+        {-41.512800484107835, 33.54988781294496, 23.596998906852335, 0.00906660130905137,
+         0.34958990683642915, -0.04515662621469517},
+        {10.680173364083792, 8.120401711200309, -34.161712974519446, -0.7084152385748613,
+         -0.27717517250887946, -0.12407743478823266},
+    };
+    for (const auto& s : samples) {
+        const Vec3 v = vectorNoise({s[0], s[1], s[2]});
+        EXPECT_NEAR(v.x, s[3], kTolerance);
+        EXPECT_NEAR(v.y, s[4], kTolerance);
+        EXPECT_NEAR(v.z, s[5], kTolerance);
+    }
+}
+
+namespace {
+
+double patternValue(PatternKind kind, const Vec3& p, void (*setup)(Pattern&) = nullptr) {
+    Pattern pat;
+    pat.kind = kind;
+    if (kind == PatternKind::Marble || kind == PatternKind::Wood) pat.waveType = WaveType::Triangle;
+    if (setup) setup(pat);
+    return pat.value(p);
+}
+
+const Vec3 kP0{-2.6395191026256546, -3.968339657692842, -1.0394175738931901};
+const Vec3 kP1{-3.4502772919758975, -4.334849043204101, -0.9840898551492518};
+
+}  // namespace
+
+TEST(NoisePatterns, MatchPovrayPatternFunctions) {
+    EXPECT_NEAR(patternValue(PatternKind::Granite, kP0), 0.34185101330111767, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Granite, kP1), 0.28835114204855755, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Agate, kP0), 0.746463514303355, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Agate, kP1), 0.7956036904017512, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Wrinkles, kP0), 0.23298340394694425, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Wrinkles, kP1), 0.20167583714075987, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Ripples, kP0), 0.6272731478803285, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Ripples, kP1), 0.42477030681735395, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Waves, kP0), 0.5023872732668132, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Waves, kP1), 0.5825807751855292, kTolerance);
+}
+
+TEST(NoisePatterns, TurbulenceMatchesPovray) {
+    // marble turbulence 0.7 octaves 3 omega 0.6 lambda 2.5
+    auto marble = [](Pattern& p) { p.turbulence = Turbulence{Vec3(0.7), 3, 0.6f, 2.5f}; };
+    EXPECT_NEAR(patternValue(PatternKind::Marble, kP0, marble), 0.8337078873529187, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Marble, kP1, marble), 0.21575324798868678, kTolerance);
+    // wood turbulence <0.3, 0.2, 0.1>
+    auto wood = [](Pattern& p) { p.turbulence = Turbulence{Vec3(0.3, 0.2, 0.1), 6, 0.5f, 2.0f}; };
+    EXPECT_NEAR(patternValue(PatternKind::Wood, kP0, wood), 0.2023856858219819, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Wood, kP1, wood), 0.8527958276743233, kTolerance);
+    // bozo turbulence 0.5 (a displacement of the point)
+    auto bozo = [](Pattern& p) { p.turbulence = Turbulence{Vec3(0.5), 6, 0.5f, 2.0f}; };
+    EXPECT_NEAR(patternValue(PatternKind::Bozo, kP0, bozo), 0.39388569139331314, kTolerance);
+    EXPECT_NEAR(patternValue(PatternKind::Bozo, kP1, bozo), 0.2954656318841392, kTolerance);
+}
+
+TEST(NoisePatterns, BlockPatternsUsePovraysTolerance) {
+    Pattern checker;
+    checker.kind = PatternKind::Checker;
+    // measured: 5e-11 below a cell boundary counts as on it, 2e-10 does not
+    EXPECT_EQ(checker.index({0.5, -5e-11, 0.5}), 0);
+    EXPECT_EQ(checker.index({0.5, -2e-10, 0.5}), 1);
+    EXPECT_EQ(checker.index({0.5, -0.0005, 0.5}), 1);
+}
+
+TEST(Warps, BlackHoleMatchesPovray) {
+    // gradient x warp { black_hole 0, 2 [strength 0.5 falloff 3 [inverse]] }
+    auto gradientWith = [](const Warp& w, const Vec3& p) {
+        Pattern pat;
+        pat.kind = PatternKind::Gradient;
+        pat.addWarp(w);
+        return pat.value(p);
+    };
+    Warp w;
+    w.kind = Warp::Kind::BlackHole;
+    w.radius = 2;
+    EXPECT_NEAR(gradientWith(w, {0.1, 0, 0}), 0.19025, 1e-12);
+    w.strength = 0.5;
+    w.falloff = 3;
+    EXPECT_NEAR(gradientWith(w, {0.1, 0, 0}), 0.14286875, 1e-12);
+    EXPECT_NEAR(gradientWith(w, {0.1, 0.3, 0}), 0.129835275195, 1e-11);
+    w.inverse = true;
+    EXPECT_NEAR(gradientWith(w, {0.1, 0, 0}), 0.05713125, 1e-12);
+}
