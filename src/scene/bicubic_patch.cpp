@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 namespace frameray::scene {
 
@@ -75,6 +76,9 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
         tris.push_back(a);
         tris.push_back(b);
     };
+    // povray's u_steps splits along the rows of control points (the v
+    // direction here), v_steps along the columns (measured with trace()).
+    std::swap(uSteps, vSteps);
     uSteps = std::max(uSteps, 0);
     vSteps = std::max(vSteps, 0);
     if (flatness <= 0) {

@@ -24,7 +24,7 @@ Vec3 HeightField::vertexNormal(int i, int k) const {
     // (east, north, west, south; quadrants with a neighbour off the grid
     // left out) are summed and made unit length, then stored as 16-bit
     // integers (times 32767, truncated). Carried to object space, unscaled,
-    // so that blending them over a triangle blends as povray does.
+    // where normal() blends them.
     auto grid = [&](int a, int b) { return Vec3(a, sample(a, b) * 65536.0, b); };
     const Vec3 p = grid(i, k);
     const int di[4] = {1, 0, -1, 0}, dk[4] = {0, 1, 0, -1};
@@ -54,11 +54,10 @@ HeightField::HeightField(int width, int height, std::vector<uint16_t> heights, b
     vertices.reserve(static_cast<size_t>(width_) * static_cast<size_t>(height_));
     for (int k = 0; k < height_; ++k)
         for (int i = 0; i < width_; ++i) vertices.emplace_back(i * sx, sample(i, k), k * sz);
-    std::vector<Vec3> normals;
     if (smooth) {
-        normals.reserve(vertices.size());
+        smoothNormals_.reserve(vertices.size());
         for (int k = 0; k < height_; ++k)
-            for (int i = 0; i < width_; ++i) normals.push_back(vertexNormal(i, k));
+            for (int i = 0; i < width_; ++i) smoothNormals_.push_back(vertexNormal(i, k));
     }
     std::vector<MeshTriangle> tris;
     tris.reserve(2 * static_cast<size_t>(width_ - 1) * static_cast<size_t>(height_ - 1));
@@ -68,17 +67,11 @@ HeightField::HeightField(int width, int height, std::vector<uint16_t> heights, b
             MeshTriangle a, b;
             a.vertex = {index(i, k), index(i + 1, k), index(i, k + 1)};
             b.vertex = {index(i + 1, k), index(i + 1, k + 1), index(i, k + 1)};
-            if (smooth) {
-                for (size_t c = 0; c < 3; ++c) {
-                    a.normal[c] = static_cast<int32_t>(a.vertex[c]);
-                    b.normal[c] = static_cast<int32_t>(b.vertex[c]);
-                }
-            }
             tris.push_back(a);
             tris.push_back(b);
         }
-    mesh_ = std::make_shared<TriangleMesh>(std::move(vertices), std::move(normals), std::move(tris),
-                                           true);
+    mesh_ =
+        std::make_shared<TriangleMesh>(std::move(vertices), std::vector<Vec3>{}, std::move(tris));
     if (waterLevel > 0) mesh_->clipBelow(waterLevel);
     bounds_ = mesh_->bounds(TriangleMesh::kAllGroups);
     if (!bounds_.isEmpty())
@@ -96,6 +89,30 @@ double HeightField::heightAt(double x, double z) const {
                (sample(i, k + 1) - sample(i, k)) * v;
     return sample(i + 1, k + 1) + (sample(i, k + 1) - sample(i + 1, k + 1)) * (1 - u) +
            (sample(i + 1, k) - sample(i + 1, k + 1)) * (1 - v);
+}
+
+Vec3 HeightField::normal(const Vec3& p) const {
+    return worldNormal(p, Transform());
+}
+
+Vec3 HeightField::worldNormal(const Vec3& p, const Transform& toWorld) const {
+    if (smoothNormals_.empty())
+        return normalize(toWorld.normal(mesh_->normal(p, TriangleMesh::kAllGroups)));
+    // povray makes the four corner normals of the cell unit length after
+    // the object's transform and blends them bilinearly, whichever of the
+    // cell's triangles was hit (fitted to its trace(), scaled and not).
+    const double fx = std::clamp(p.x, 0.0, 1.0) * (width_ - 1),
+                 fz = std::clamp(p.z, 0.0, 1.0) * (height_ - 1);
+    const int i = std::clamp(static_cast<int>(std::floor(fx)), 0, width_ - 2);
+    const int k = std::clamp(static_cast<int>(std::floor(fz)), 0, height_ - 2);
+    const double u = fx - i, v = fz - k;
+    auto at = [&](int a, int b) {
+        return normalize(toWorld.normal(smoothNormals_[static_cast<size_t>(b * width_ + a)]));
+    };
+    const Vec3 n = at(i, k) * ((1 - u) * (1 - v)) + at(i + 1, k) * (u * (1 - v)) +
+                   at(i, k + 1) * ((1 - u) * v) + at(i + 1, k + 1) * (u * v);
+    return dot(n, n) > 0 ? normalize(n)
+                         : normalize(toWorld.normal(mesh_->normal(p, TriangleMesh::kAllGroups)));
 }
 
 bool HeightField::inside(const Vec3& p) const {

@@ -31,7 +31,8 @@ class HeightField final : public Shape {
     bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override {
         return mesh_->firstHit(ray, tMin, tMax, t, TriangleMesh::kAllGroups);
     }
-    Vec3 normal(const Vec3& p) const override { return mesh_->normal(p, TriangleMesh::kAllGroups); }
+    Vec3 normal(const Vec3& p) const override;
+    Vec3 worldNormal(const Vec3& p, const Transform& toWorld) const override;
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return bounds_; }
     const char* name() const override { return "height_field"; }
@@ -48,6 +49,8 @@ class HeightField final : public Shape {
 
     int width_, height_;
     std::vector<uint16_t> heights_;
+    std::vector<Vec3>
+        smoothNormals_;  // object space, per sample (k * width + i); empty unless smooth
     std::shared_ptr<TriangleMesh> mesh_;
     Bounds bounds_;
 };

@@ -179,7 +179,7 @@ bool Object::inside(const Vec3& p) const { return insideAs(*this, p, false); }
 bool Object::insideInverted(const Vec3& p) const { return insideAs(*this, p, true); }
 
 Vec3 Object::normalAt(const Vec3& p) const {
-    return normalize(transform.normal(shape->normal(transform.inversePoint(p))));
+    return shape->worldNormal(transform.inversePoint(p), transform);
 }
 
 // --- bounds -----------------------------------------------------------------

@@ -397,6 +397,12 @@ void Interpreter::parseHeightField(scene::Object& obj) {
 }
 
 std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
+    // The settings' numbers stop before a '<': "v_steps 3 <0, 0, 0>" is a
+    // step count and the first point, not a comparison (as in povray).
+    auto setting = [&]() {
+        const Token at = peek();
+        return toFloat(parseAdditive(true), at);
+    };
     int type = -1, uSteps = 0, vSteps = 0;
     double flatness = 0;
     const Token start = peek();
@@ -404,17 +410,17 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
         const Token t = peek();
         if (t.is(Keyword::kw_type)) {
             next();
-            type = static_cast<int>(parseFloat());
+            type = static_cast<int>(setting());
             if (type != 0 && type != 1) fail(t, "Patch type must be 0 or 1.");
         } else if (t.is(Keyword::kw_flatness)) {
             next();
-            flatness = parseFloat();
+            flatness = setting();
         } else if (t.is(Keyword::kw_u_steps)) {
             next();
-            uSteps = static_cast<int>(parseFloat());
+            uSteps = static_cast<int>(setting());
         } else if (t.is(Keyword::kw_v_steps)) {
             next();
-            vSteps = static_cast<int>(parseFloat());
+            vSteps = static_cast<int>(setting());
         } else {
             break;
         }
