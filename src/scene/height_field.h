@@ -9,13 +9,20 @@
 //   - water_level L ignores every hit below y = L.
 // The surface is the triangles only; a point is inside when it lies over
 // the square, above y = 0 and below the surface.
+//
+// No triangles are stored: a min/max quadtree over the grid's cells (like a
+// BVH whose boxes come from the heights) leads a ray to the cells it may
+// cross, whose two triangles are then built from the samples. A
+// 1024 x 1024 field costs a few megabytes, not a mesh of two million
+// triangles.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
-#include "scene/mesh.h"
+#include "scene/shapes.h"
 
 namespace frameray::scene {
 
@@ -25,12 +32,8 @@ class HeightField final : public Shape {
     HeightField(int width, int height, std::vector<uint16_t> heights, bool smooth,
                 double waterLevel);
 
-    void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override {
-        mesh_->allHits(ray, tMin, tMax, ts, TriangleMesh::kAllGroups);
-    }
-    bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override {
-        return mesh_->firstHit(ray, tMin, tMax, t, TriangleMesh::kAllGroups);
-    }
+    void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
+    bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
     Vec3 normal(const Vec3& p) const override;
     Vec3 worldNormal(const Vec3& p, const Transform& toWorld) const override;
     bool inside(const Vec3& p) const override;
@@ -46,12 +49,37 @@ class HeightField final : public Shape {
     // The smooth normal of grid sample (i, k), in object space, not unit
     // length.
     Vec3 vertexNormal(int i, int k) const;
+    // Height units (0..65535) of sample (i, k), unchecked.
+    uint16_t raw(int i, int k) const {
+        return heights_[static_cast<size_t>(height_ - 1 - k) * static_cast<size_t>(width_) +
+                        static_cast<size_t>(i)];
+    }
+    // Object-space corner of the grid (i, k).
+    Vec3 corner(int i, int k) const { return {i * sx_, raw(i, k) / 65536.0, k * sz_}; }
+    // The two triangles of cell (i, k) (0 or 1): which one p lies over.
+    static int triangleOf(double u, double v) { return u + v <= 1 ? 0 : 1; }
+    bool hitCell(int i, int k, const Ray& ray, double tMin, double tMax, double hits[2],
+                 int& count) const;
+    // Visits the cells whose quadtree boxes the ray passes through in
+    // (tMin, tMax()), nearer boxes first; visit returns false to stop.
+    template <typename Visit, typename Limit>
+    void traverse(const Ray& ray, double tMin, Limit tMax, Visit visit) const;
+    Vec3 flatNormal(const Vec3& p) const;
+
+    // Quadtree level l has cells of 2^l x 2^l grid cells, each with the
+    // lowest and highest height (in height units) beneath it.
+    struct Level {
+        int nx, nz;
+        std::vector<std::array<uint16_t, 2>> range;
+    };
 
     int width_, height_;
     std::vector<uint16_t> heights_;
     std::vector<Vec3>
-        smoothNormals_;  // object space, per sample (k * width + i); empty unless smooth
-    std::shared_ptr<TriangleMesh> mesh_;
+        smoothNormals_;          // object space, per sample (k * width + i); empty unless smooth
+    std::vector<Level> levels_;  // levels_[0]: the grid cells
+    double sx_, sz_;             // grid spacing in x and z
+    double waterLevel_;
     Bounds bounds_;
 };
 
