@@ -21,7 +21,51 @@ void bernstein(double t, double b[4], double d[4]) {
     d[3] = 3 * t * t;
 }
 
+// A cubic Bezier's blossom f(t1, t2, t3): f(a, a, a) is the point at a,
+// and the curve over [a, b] has control points f(a,a,a), f(a,a,b),
+// f(a,b,b), f(b,b,b).
+Vec3 blossom(const Vec3 p[4], double t1, double t2, double t3) {
+    Vec3 q[3], r[2];
+    for (int i = 0; i < 3; ++i) q[i] = p[i] * (1 - t1) + p[i + 1] * t1;
+    for (int i = 0; i < 2; ++i) r[i] = q[i] * (1 - t2) + q[i + 1] * t2;
+    return r[0] * (1 - t3) + r[1] * t3;
+}
+
+void restrictCurve(const Vec3 p[4], double a, double b, Vec3 out[4]) {
+    out[0] = blossom(p, a, a, a);
+    out[1] = blossom(p, a, a, b);
+    out[2] = blossom(p, a, b, b);
+    out[3] = blossom(p, b, b, b);
+}
+
 }  // namespace
+
+double BicubicPatch::subPatchFlatness(double u0, double u1, double v0, double v1) const {
+    // The sub-patch's own control net.
+    Vec3 rows[4][4], net[4][4];
+    for (int r = 0; r < 4; ++r) {
+        const Vec3 row[4] = {
+            points_[static_cast<size_t>(4 * r)], points_[static_cast<size_t>(4 * r + 1)],
+            points_[static_cast<size_t>(4 * r + 2)], points_[static_cast<size_t>(4 * r + 3)]};
+        restrictCurve(row, u0, u1, rows[r]);
+    }
+    for (int c = 0; c < 4; ++c) {
+        const Vec3 column[4] = {rows[0][c], rows[1][c], rows[2][c], rows[3][c]};
+        Vec3 out[4];
+        restrictCurve(column, v0, v1, out);
+        for (int r = 0; r < 4; ++r) net[r][c] = out[r];
+    }
+    auto planeDistance = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Vec3 n = cross(b - a, c - a);
+        const double len = length(n);
+        double worst = 0;
+        for (const auto& row : net)
+            for (const Vec3& q : row)
+                worst = std::max(worst, len > 0 ? std::fabs(dot(q - a, n)) / len : length(q - a));
+        return worst;
+    };
+    return planeDistance(net[0][0], net[0][3], net[3][0]);
+}
 
 Vec3 BicubicPatch::point(double u, double v) const {
     double bu[4], du[4], bv[4], dv[4];
@@ -92,29 +136,13 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
             for (int i = 0; i < nu; ++i)
                 addQuad(at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1));
     } else {
-        // Split while a sub-patch strays from the plane of its corners by
-        // more than `flatness` (measured on a 4 x 4 sample of it).
+        // Split while the sub-patch's control points stray from the plane
+        // of three of its corners by more than `flatness`.
         std::function<void(double, double, double, double, int, int)> split =
             [&](double u0, double u1, double v0, double v1, int du, int dv) {
                 const bool canU = du < uSteps, canV = dv < vSteps;
                 bool flat = true;
-                if (canU || canV) {
-                    const Vec3 c00 = point(u0, v0), c11 = point(u1, v1), c10 = point(u1, v0),
-                               c01 = point(u0, v1);
-                    Vec3 n = cross(c11 - c00, c01 - c10);
-                    const double len = length(n);
-                    double worst = 0;
-                    for (int j = 0; j < 4 && flat; ++j)
-                        for (int i = 0; i < 4; ++i) {
-                            const Vec3 p =
-                                point(u0 + (u1 - u0) * i / 3.0, v0 + (v1 - v0) * j / 3.0);
-                            const double d =
-                                len > 0 ? std::fabs(dot(p - (c00 + c11 + c10 + c01) / 4.0, n)) / len
-                                        : length(p - c00);
-                            worst = std::max(worst, d);
-                        }
-                    flat = worst <= flatness;
-                }
+                if (canU || canV) flat = subPatchFlatness(u0, u1, v0, v1) <= flatness;
                 if (flat || (!canU && !canV)) {
                     addQuad(addVertex(u0, v0), addVertex(u1, v0), addVertex(u0, v1),
                             addVertex(u1, v1));

@@ -176,3 +176,21 @@ TEST(BicubicPatch, CornersAndDiagonal) {
     ASSERT_TRUE(patch.firstHit({{0.25, 5, 0.75}, {0, -1, 0}}, 0, kInfinity, t));
     EXPECT_NEAR(5 - t, 1.0 / 16, 1e-12);
 }
+
+TEST(BicubicPatch, FlatnessStopsSplittingFlatParts) {
+    // The raised-corner patch with flatness 0.1 and 3 steps, as povray's
+    // trace() shows it: [0, 1/2]^2 stays one sub-patch (its centre lies on
+    // the diagonal, at 1/128), [1/2, 1]^2 is split.
+    std::array<Vec3, 16> p;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) p[static_cast<size_t>(4 * r + c)] = Vec3(c / 3.0, 0, r / 3.0);
+    p[15].y = 1;
+    BicubicPatch patch(p, 3, 3, 0.1);
+    double t;
+    ASSERT_TRUE(patch.firstHit({{0.25, 5, 0.25}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 1.0 / 128, 1e-12);
+    ASSERT_TRUE(patch.firstHit({{0.75, 5, 0.75}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 0.75 * 0.75 * 0.75 * 0.75 * 0.75 * 0.75, 1e-12);
+    ASSERT_TRUE(patch.firstHit({{0.625, 5, 0.625}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 0.096802, 1e-6);
+}
