@@ -269,7 +269,7 @@ Vec3 HeightField::worldNormal(const Vec3& p, const Transform& toWorld) const {
 }
 
 bool HeightField::inside(const Vec3& p) const {
-    if (p.x < 0 || p.x > 1 || p.z < 0 || p.z > 1 || p.y < 0) return false;
+    if (p.x < 0 || p.x > 1 || p.z < 0 || p.z > 1) return false;
     return p.y < heightAt(p.x, p.z);
 }
 

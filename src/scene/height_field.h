@@ -8,7 +8,8 @@
 //     (x + 1, z) to (x, z + 1) (measured with povray's trace());
 //   - water_level L ignores every hit below y = L.
 // The surface is the triangles only; a point is inside when it lies over
-// the square, above y = 0 and below the surface.
+// the square and below the surface (however far below: povray 3.7 puts no
+// floor under it, measured with CSG).
 //
 // No triangles are stored: a min/max quadtree over the grid's cells (like a
 // BVH whose boxes come from the heights) leads a ray to the cells it may
@@ -38,6 +39,7 @@ class HeightField final : public Shape {
     Vec3 worldNormal(const Vec3& p, const Transform& toWorld) const override;
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return bounds_; }
+    Bounds insideBounds() const override { return {{0, -kInfinity, 0}, {1, bounds_.hi.y, 1}}; }
     const char* name() const override { return "height_field"; }
 
     // The surface height over (x, z) in the unit square (tests, inside).

@@ -138,6 +138,8 @@ TEST(HeightField, HeightsAsPovrayGivesThem) {
     EXPECT_NEAR(5 - t, (51400.0 + 257.0) / 2 / 65536, 1e-12);
     EXPECT_TRUE(hf.inside({0.5, 0.1, 0.01}));
     EXPECT_FALSE(hf.inside({0.5, 0.9, 0.5}));
+    EXPECT_TRUE(hf.inside({0.5, -3, 0.5}));  // no floor, as in povray
+    EXPECT_FALSE(hf.inside({1.5, -3, 0.5}));
 }
 
 TEST(HeightField, CellsSplitAlongTheRisingDiagonal) {
