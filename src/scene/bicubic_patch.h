@@ -33,6 +33,11 @@ class BicubicPatch final : public Shape {
         return mesh_->firstHit(ray, tMin, tMax, t, TriangleMesh::kAllGroups);
     }
     Vec3 normal(const Vec3& p) const override { return mesh_->normal(p, TriangleMesh::kAllGroups); }
+    // povray moves the control points themselves, so a sub-patch's corner
+    // normals are blended in world space.
+    Vec3 worldNormal(const Vec3& p, const Transform& toWorld) const override {
+        return mesh_->normal(p, TriangleMesh::kAllGroups, &toWorld);
+    }
     bool inside(const Vec3&) const override { return false; }
     bool isPatch() const override { return true; }
     Bounds bounds() const override { return mesh_->bounds(TriangleMesh::kAllGroups); }

@@ -233,11 +233,12 @@ size_t TriangleMesh::crossingCount(const Ray& ray) const {
     return n;
 }
 
-Vec3 TriangleMesh::triangleNormal(uint32_t tri, const Vec3& p) const {
+Vec3 TriangleMesh::triangleNormal(uint32_t tri, const Vec3& p, const Transform* toWorld) const {
     const MeshTriangle& m = triangles_[tri];
     const Vec3 &a = vertices_[m.vertex[0]], &b = vertices_[m.vertex[1]],
                &c = vertices_[m.vertex[2]];
-    const Vec3 face = normalize(cross(b - a, c - a));
+    auto place = [&](const Vec3& n) { return toWorld ? normalize(toWorld->normal(n)) : n; };
+    const Vec3 face = place(normalize(cross(b - a, c - a)));
     if (m.normal[0] < 0) return face;
     // Barycentric weights of p (in the plane, least squares).
     const Vec3 e1 = b - a, e2 = c - a, w = p - a;
@@ -245,13 +246,13 @@ Vec3 TriangleMesh::triangleNormal(uint32_t tri, const Vec3& p) const {
     const double w1 = dot(w, e1), w2 = dot(w, e2);
     const double det = d11 * d22 - d12 * d12;
     const double wb = (d22 * w1 - d12 * w2) / det, wc = (d11 * w2 - d12 * w1) / det;
-    const Vec3 n = normals_[static_cast<size_t>(m.normal[0])] * (1 - wb - wc) +
-                   normals_[static_cast<size_t>(m.normal[1])] * wb +
-                   normals_[static_cast<size_t>(m.normal[2])] * wc;
+    const Vec3 n = place(normals_[static_cast<size_t>(m.normal[0])]) * (1 - wb - wc) +
+                   place(normals_[static_cast<size_t>(m.normal[1])]) * wb +
+                   place(normals_[static_cast<size_t>(m.normal[2])]) * wc;
     return dot(n, n) > 0 ? normalize(n) : face;
 }
 
-Vec3 TriangleMesh::normal(const Vec3& p, int group) const {
+Vec3 TriangleMesh::normal(const Vec3& p, int group, const Transform* toWorld) const {
     // The triangle nearest to p among those whose padded box holds it.
     // Distance: to the plane, plus how far p's projection lies outside the
     // triangle (in barycentric terms scaled by the edge), so that on a
@@ -308,8 +309,8 @@ Vec3 TriangleMesh::normal(const Vec3& p, int group) const {
             }
         }
     }
-    if (!found) return Vec3(0, 1, 0);
-    return triangleNormal(bestTri, p);
+    if (!found) return toWorld ? normalize(toWorld->normal(Vec3(0, 1, 0))) : Vec3(0, 1, 0);
+    return triangleNormal(bestTri, p, toWorld);
 }
 
 Bounds TriangleMesh::bounds(int group) const {

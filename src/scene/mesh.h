@@ -52,7 +52,12 @@ class TriangleMesh {
                  int group) const;
     // The shading normal at a point on the surface: that of the triangle the
     // point lies on (the nearest one), interpolated for smooth triangles.
-    Vec3 normal(const Vec3& p, int group) const;
+    Vec3 normal(const Vec3& p, int group) const { return normal(p, group, nullptr); }
+    // With `toWorld`, the corner normals of a smooth triangle are carried
+    // to world space and made unit length before they are blended (povray
+    // transforms a bicubic patch's points, so blends in world space); the
+    // result is then a unit world-space normal.
+    Vec3 normal(const Vec3& p, int group, const Transform* toWorld) const;
     Bounds bounds(int group) const;
     // Number of surface crossings along the ray beyond t = 0 (for the
     // inside test along inside_vector).
@@ -76,7 +81,7 @@ class TriangleMesh {
     template <typename Visit, typename Limit>
     void traverse(const Group& g, const Ray& ray, double tMin, Limit tMax, Visit visit) const;
     bool hitTriangle(uint32_t tri, const Ray& ray, double tMin, double tMax, double& t) const;
-    Vec3 triangleNormal(uint32_t tri, const Vec3& p) const;
+    Vec3 triangleNormal(uint32_t tri, const Vec3& p, const Transform* toWorld) const;
 
     std::vector<Vec3> vertices_;
     std::vector<Vec3> normals_;
