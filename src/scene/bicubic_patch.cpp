@@ -55,6 +55,8 @@ double BicubicPatch::subPatchFlatness(double u0, double u1, double v0, double v1
         restrictCurve(column, v0, v1, out);
         for (int r = 0; r < 4; ++r) net[r][c] = out[r];
     }
+    for (auto& row : net)
+        for (Vec3& q : row) q = placement_.point(q);
     auto planeDistance = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
         const Vec3 n = cross(b - a, c - a);
         const double len = length(n);
@@ -90,9 +92,18 @@ Vec3 BicubicPatch::surfaceNormal(double u, double v) const {
     return cross(pu, pv);
 }
 
+std::shared_ptr<const Shape> BicubicPatch::placedBy(const Transform& toWorld) const {
+    if (flatness_ <= 0) return nullptr;  // the same triangles wherever it is
+    return std::make_shared<BicubicPatch>(points_, uSteps_, vSteps_, flatness_, toWorld);
+}
+
 BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int vSteps,
-                           double flatness)
-    : points_(points) {
+                           double flatness, const Transform& placement)
+    : points_(points),
+      uSteps_(uSteps),
+      vSteps_(vSteps),
+      flatness_(flatness),
+      placement_(placement) {
     std::vector<Vec3> vertices, normals;
     std::vector<MeshTriangle> tris;
     // A corner's normal; where the derivatives vanish (a collapsed edge)

@@ -8,10 +8,10 @@
 // encloses nothing.
 //
 // With flatness > 0 a sub-patch stops splitting once its control net lies
-// within `flatness` of the plane through three of its corners; this agrees
-// with povray's trace() on the probes made so far, but renders with
-// flatness 0.1-0.5 still differ from povray's in places (about 2% of the
-// pixels), so its test may differ.
+// within `flatness` of the plane through three of its corners, measured
+// where the patch is placed (povray moves the control points with every
+// transform and subdivides again), so each transform builds the patch
+// anew (placedBy).
 #pragma once
 
 #include <array>
@@ -24,7 +24,10 @@ namespace frameray::scene {
 class BicubicPatch final : public Shape {
   public:
     // points[4 * row + column]: the row runs along v, the column along u.
-    BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int vSteps, double flatness);
+    // `placement` only decides where flatness measures distances.
+    BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int vSteps, double flatness,
+                 const Transform& placement = Transform());
+    std::shared_ptr<const Shape> placedBy(const Transform& toWorld) const override;
 
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override {
         mesh_->allHits(ray, tMin, tMax, ts, TriangleMesh::kAllGroups);
@@ -55,6 +58,9 @@ class BicubicPatch final : public Shape {
     double subPatchFlatness(double u0, double u1, double v0, double v1) const;
 
     std::array<Vec3, 16> points_;
+    int uSteps_, vSteps_;
+    double flatness_;
+    Transform placement_;
     std::shared_ptr<const TriangleMesh> mesh_;
 };
 

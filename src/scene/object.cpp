@@ -63,7 +63,10 @@ Bounds intersectAll(Bounds b, const std::vector<ObjectRef>& objects, Bounds (Obj
 }  // namespace
 
 void Object::transformBy(const Transform& t) {
-    if (shape) transform = transform.then(t);
+    if (shape) {
+        transform = transform.then(t);
+        if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
+    }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);

@@ -51,6 +51,11 @@ public:
     // operands' bounding boxes, which only shows with such shapes.
     virtual bool insideReachesPastBounds() const { return false; }
     virtual const char* name() const = 0;
+    // A shape whose geometry depends on where it is placed (a bicubic
+    // patch with flatness subdivides by world-space distances) returns
+    // its rebuilt self for the object-to-world transform `toWorld`; the
+    // rest return null.
+    virtual std::shared_ptr<const Shape> placedBy(const Transform& /*toWorld*/) const { return nullptr; }
 };
 
 class Sphere final : public Shape {

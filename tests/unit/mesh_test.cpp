@@ -196,3 +196,18 @@ TEST(BicubicPatch, FlatnessStopsSplittingFlatParts) {
     ASSERT_TRUE(patch.firstHit({{0.625, 5, 0.625}, {0, -1, 0}}, 0, kInfinity, t));
     EXPECT_NEAR(5 - t, 0.096802, 1e-6);
 }
+
+TEST(BicubicPatch, FlatnessMeasuresWhereThePatchIsPlaced) {
+    // povray measures flatness on the moved control points: scaled by 10,
+    // the raised-corner patch is split where it was flat enough.
+    std::array<Vec3, 16> p;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) p[static_cast<size_t>(4 * r + c)] = Vec3(c / 3.0, 0, r / 3.0);
+    p[15].y = 1;
+    const BicubicPatch patch(p, 3, 3, 0.1);
+    const auto placed =
+        std::dynamic_pointer_cast<const BicubicPatch>(patch.placedBy(Transform::scale(Vec3(10))));
+    ASSERT_TRUE(placed);
+    EXPECT_GT(placed->triangleCount(), patch.triangleCount());
+    EXPECT_EQ(BicubicPatch(p, 3, 3, 0).placedBy(Transform::scale(Vec3(10))), nullptr);
+}
