@@ -64,7 +64,10 @@ Bounds intersectAll(Bounds b, const std::vector<ObjectRef>& objects, Bounds (Obj
 }  // namespace
 
 void Object::transformBy(const Transform& t) {
-    if (shape) transform = transform.then(t);
+    if (shape) {
+        transform = transform.then(t);
+        if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
+    }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
@@ -180,7 +183,7 @@ bool Object::inside(const Vec3& p) const { return insideAs(*this, p, false); }
 bool Object::insideInverted(const Vec3& p) const { return insideAs(*this, p, true); }
 
 Vec3 Object::normalAt(const Vec3& p) const {
-    return normalize(transform.normal(shape->normal(transform.inversePoint(p))));
+    return shape->worldNormal(transform.inversePoint(p), transform);
 }
 
 // --- bounds -----------------------------------------------------------------

@@ -23,6 +23,12 @@ public:
     virtual bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const;
     // Outward unit normal at a point on the surface.
     virtual Vec3 normal(const Vec3& p) const = 0;
+    // The unit world-space normal at object-space point p of this shape
+    // placed by `toWorld`. Shapes that blend normals after the transform
+    // (povray's smooth height fields) override it.
+    virtual Vec3 worldNormal(const Vec3& p, const Transform& toWorld) const {
+        return normalize(toWorld.normal(normal(p)));
+    }
     // POV-Ray's inside test, used by CSG and clipped_by. How a point ON the
     // surface counts differs per shape, as in povray 3.7 (measured with
     // coincident CSG surfaces): boxes include their faces, planes a 1e-10
@@ -45,6 +51,11 @@ public:
     // operands' bounding boxes, which only shows with such shapes.
     virtual bool insideReachesPastBounds() const { return false; }
     virtual const char* name() const = 0;
+    // A shape whose geometry depends on where it is placed (a bicubic
+    // patch with flatness subdivides by world-space distances) returns
+    // its rebuilt self for the object-to-world transform `toWorld`; the
+    // rest return null.
+    virtual std::shared_ptr<const Shape> placedBy(const Transform& /*toWorld*/) const { return nullptr; }
 };
 
 class Sphere final : public Shape {

@@ -310,6 +310,10 @@ Value Interpreter::parseFunctionDeclaration() {
     } else {
         params = {"x", "y", "z"};
     }
+    return parseFunctionBody(std::move(params));
+}
+
+Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
     expect(Sym::LBrace, "'{' starting the function body");
     auto value = std::make_shared<FunctionValue>();
     const Token first = peek();

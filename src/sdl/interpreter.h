@@ -24,7 +24,13 @@
 #include "sdl/token_cache.h"
 #include "sdl/value.h"
 
+namespace frameray::scene {
+struct MeshTriangle;
+}
+
 namespace frameray::sdl {
+
+struct MeshParts;  // parse_mesh.cpp
 
 class Interpreter {
 public:
@@ -157,6 +163,8 @@ private:
     // --- splines and user functions (splines.cpp, functions.cpp) ---
     Value parseSpline();
     Value parseFunctionDeclaration();
+    // `{ body }` of a function with these parameters (also height_field's).
+    Value parseFunctionBody(std::vector<std::string> params);
     Value callSpline(const SplineValue& spline, const Token& at);
     Value callFunction(const FunctionValue& function, const Token& at);
 
@@ -237,6 +245,18 @@ private:
     void parseTextObject(scene::Object& obj);  // after 'text {'
     std::shared_ptr<scene::TtfFont> openFont(const std::string& name, const Token& at);
     std::u32string decodeTextString(const std::string& bytes, const Token& at);
+
+    // --- meshes, height fields, bicubic patches (parse_mesh.cpp) ---
+    void parseMesh(scene::Object& obj);   // after 'mesh {'
+    void parseMesh2(scene::Object& obj);  // after 'mesh2 {'
+    void parseHeightField(scene::Object& obj);                  // after 'height_field {'
+    std::shared_ptr<const scene::Shape> parseBicubicPatch();  // after 'bicubic_patch {'
+    void parseMeshTriangleItems(MeshParts& parts, scene::MeshTriangle& tri);
+    bool parseMeshSetting(MeshParts& parts);  // inside_vector, hierarchy
+    void buildMeshObject(scene::Object& obj, MeshParts& parts);
+    template <typename ReadItem>
+    size_t parseMesh2List(const Token& kw, ReadItem readItem);
+    bool parseOptionalBool();  // an optional boolean after a flag keyword; true when absent
 
     FrameContext frame_;
     TokenCache& cache_;

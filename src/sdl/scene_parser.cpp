@@ -36,8 +36,8 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_sor, false},           {Keyword::kw_prism, false},
     {Keyword::kw_superellipsoid, false}, {Keyword::kw_sphere_sweep, false},
     {Keyword::kw_isosurface, false},    {Keyword::kw_parametric, false},
-    {Keyword::kw_mesh, false},          {Keyword::kw_mesh2, false},
-    {Keyword::kw_height_field, false},  {Keyword::kw_bicubic_patch, false},
+    {Keyword::kw_mesh, true},           {Keyword::kw_mesh2, true},
+    {Keyword::kw_height_field, true},   {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},          {Keyword::kw_julia_fractal, false},
     {Keyword::kw_polygon, false},       {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, false},
@@ -117,6 +117,10 @@ ObjectPtr Interpreter::parseObject() {
             parseCsgChildren(kind, *obj);
             break;
         case Keyword::kw_text: parseTextObject(*obj); break;
+        case Keyword::kw_mesh: parseMesh(*obj); break;
+        case Keyword::kw_mesh2: parseMesh2(*obj); break;
+        case Keyword::kw_height_field: parseHeightField(*obj); break;
+        case Keyword::kw_bicubic_patch: obj->shape = parseBicubicPatch(); break;
         default: obj->shape = parseShape(kind); break;
     }
 
@@ -326,6 +330,7 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_no_shadow: next(); obj.noShadow = true; return true;
         case Keyword::kw_no_image: next(); obj.noImage = true; return true;
         case Keyword::kw_no_reflection: next(); obj.noReflection = true; return true;
+        case Keyword::kw_hierarchy: next(); parseOptionalBool(); return true;  // a BVH is always built
         case Keyword::kw_hollow:
             // Only changes media and fog inside the object; neither exists yet.
             next();

@@ -1,0 +1,441 @@
+// Triangle-based objects (seed 000 / 003 §5.2):
+//
+//     mesh { triangle { a, b, c [texture { T }] } smooth_triangle { ... } ...
+//            [inside_vector V] [hierarchy B] [object modifiers] }
+//     mesh2 { vertex_vectors { n, v... } [normal_vectors { n, v... }]
+//             [uv_vectors { n, uv... }] [texture_list { n, texture {...}... }]
+//             face_indices { n, <a,b,c> [, t]... } [normal_indices { n, ... }]
+//             [uv_indices { n, ... }] [inside_vector V] [object modifiers] }
+//     height_field { png "file" | function W, H { f(x, y, z) }
+//                    [smooth] [water_level L] [hierarchy B] [modifiers] }
+//     bicubic_patch { type 0|1 [flatness F] [u_steps U] [v_steps V] 16 points }
+//
+// A mesh whose triangles carry their own textures becomes a union of one
+// primitive per texture, all sharing the mesh's geometry (MeshShape over a
+// group); the triangles without a texture take the mesh object's.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "image/image_io.h"
+#include "scene/bicubic_patch.h"
+#include "scene/height_field.h"
+#include "scene/mesh.h"
+#include "sdl/function_value.h"
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+// What a mesh or mesh2 collects before it is built.
+struct MeshParts {
+    std::vector<Vec3> vertices;
+    std::vector<Vec3> normals;
+    std::vector<scene::MeshTriangle> triangles;
+    std::vector<std::shared_ptr<const scene::Texture>> textures;
+    bool hasInsideVector = false;
+    Vec3 insideVector;
+};
+
+void Interpreter::buildMeshObject(scene::Object& obj, MeshParts& parts) {
+    auto mesh = std::make_shared<const scene::TriangleMesh>(
+        std::move(parts.vertices), std::move(parts.normals), std::move(parts.triangles));
+    if (mesh->groupCount() <= 1) {
+        const int32_t tex = mesh->groupCount() == 1 ? mesh->groupTexture(0) : -1;
+        obj.shape = std::make_shared<scene::MeshShape>(mesh, scene::TriangleMesh::kAllGroups,
+                                                       parts.hasInsideVector, parts.insideVector);
+        if (tex >= 0) {
+            // Every triangle has the same texture: the mesh is one
+            // primitive inside a union, so the object's own texture (if
+            // any) still reaches no triangle.
+            auto child = std::make_shared<scene::Object>();
+            child->shape = obj.shape;
+            child->texture = parts.textures[static_cast<size_t>(tex)];
+            obj.shape.reset();
+            obj.op = scene::CsgOp::Union;
+            obj.children.push_back(child);
+        }
+        return;
+    }
+    obj.op = scene::CsgOp::Union;
+    for (size_t g = 0; g < mesh->groupCount(); ++g) {
+        auto child = std::make_shared<scene::Object>();
+        child->shape = std::make_shared<scene::MeshShape>(
+            mesh, static_cast<int>(g), parts.hasInsideVector, parts.insideVector);
+        const int32_t tex = mesh->groupTexture(g);
+        if (tex >= 0) child->texture = parts.textures[static_cast<size_t>(tex)];
+        obj.children.push_back(child);
+    }
+}
+
+bool Interpreter::parseMeshSetting(MeshParts& parts) {
+    const Token t = peek();
+    if (t.is(Keyword::kw_inside_vector)) {
+        next();
+        parts.insideVector = parseVec3();
+        parts.hasInsideVector = length(parts.insideVector) > 0;
+        return true;
+    }
+    if (t.is(Keyword::kw_hierarchy)) {
+        next();
+        parseOptionalBool();
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::parseOptionalBool() {
+    const Token n = peek();
+    if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Keyword::kw_on) ||
+        n.is(Keyword::kw_off) || n.is(Keyword::kw_true) || n.is(Keyword::kw_false) ||
+        n.isIdentifier())
+        return parseFloat() != 0;
+    return true;
+}
+
+// A triangle's texture inside mesh { }: texture { } (texture_list with
+// three textures, interpolated over the triangle, is not built).
+void Interpreter::parseMeshTriangleItems(MeshParts& parts, scene::MeshTriangle& tri) {
+    for (;;) {
+        if (accept(Sym::RBrace)) return;
+        const Token t = peek();
+        if (t.is(Keyword::kw_texture)) {
+            // povray takes only a declared texture here: texture { T }.
+            next();
+            expect(Sym::LBrace, "'{' after 'texture'");
+            const Token id = next();
+            const Value v = id.isIdentifier() ? identifierValue(id) : Value{};
+            const auto* tp = std::get_if<TexturePtr>(&v);
+            if (!tp)
+                fail(id, fmt::format("Expected 'texture identifier', {} found instead",
+                                     describeToken(id)));
+            expect(Sym::RBrace, "'}' after the texture identifier");
+            parts.textures.push_back(*tp);
+            tri.texture = static_cast<int32_t>(parts.textures.size() - 1);
+        } else if (t.is(Keyword::kw_uv_vectors)) {
+            // Only uv_mapping textures use them, which are not built.
+            next();
+            for (int i = 0; i < 3; ++i) {
+                if (i) accept(Sym::Comma);
+                parseVector();
+            }
+        } else if (t.is(Keyword::kw_texture_list)) {
+            unsupported(t, "texture_list in a mesh triangle (interpolated textures)");
+        } else {
+            fail(t, fmt::format("expected a texture or '}}' in a mesh triangle, found {}",
+                                describeToken(t)));
+        }
+    }
+}
+
+void Interpreter::parseMesh(scene::Object& obj) {
+    MeshParts parts;
+    for (;;) {
+        const Token t = peek();
+        if (t.is(Keyword::kw_triangle) || t.is(Keyword::kw_smooth_triangle)) {
+            next();
+            const bool smooth = t.is(Keyword::kw_smooth_triangle);
+            expect(Sym::LBrace, smooth ? "'{' after 'smooth_triangle'" : "'{' after 'triangle'");
+            scene::MeshTriangle tri;
+            for (int i = 0; i < 3; ++i) {
+                if (i) accept(Sym::Comma);
+                tri.vertex[static_cast<size_t>(i)] = static_cast<uint32_t>(parts.vertices.size());
+                parts.vertices.push_back(parseVec3());
+                if (smooth) {
+                    accept(Sym::Comma);
+                    tri.normal[static_cast<size_t>(i)] = static_cast<int32_t>(parts.normals.size());
+                    parts.normals.push_back(parseVec3());
+                }
+            }
+            parseMeshTriangleItems(parts, tri);
+            parts.triangles.push_back(tri);
+            continue;
+        }
+        if (parseMeshSetting(parts)) continue;
+        break;
+    }
+    if (parts.triangles.empty()) fail(peek(), "Mesh contains no triangles.");
+    buildMeshObject(obj, parts);
+}
+
+// `{ n, item, item, ... }` of a mesh2 list; `item` reads one entry.
+template <typename ReadItem>
+size_t Interpreter::parseMesh2List(const Token& kw, ReadItem readItem) {
+    next();
+    expect(Sym::LBrace, fmt::format("'{{' after '{}'", kw.text).c_str());
+    const double count = parseFloat();
+    if (count < 0 || count != std::floor(count))
+        fail(kw, fmt::format("bad number of items in {}", kw.text));
+    const auto n = static_cast<size_t>(count);
+    for (size_t i = 0; i < n; ++i) {
+        accept(Sym::Comma);
+        readItem(i);
+    }
+    accept(Sym::Comma);
+    expect(Sym::RBrace,
+           fmt::format("'}}' closing '{}' (more items than its count?)", kw.text).c_str());
+    return n;
+}
+
+void Interpreter::parseMesh2(scene::Object& obj) {
+    MeshParts parts;
+    std::vector<std::array<int64_t, 3>> faces, normalFaces;
+    std::vector<int64_t> faceTextures;
+    std::vector<Token> faceAt;
+    bool haveNormalIndices = false;
+    for (;;) {
+        const Token t = peek();
+        switch (t.kw) {
+            case Keyword::kw_vertex_vectors:
+                parseMesh2List(t, [&](size_t) { parts.vertices.push_back(parseVec3()); });
+                continue;
+            case Keyword::kw_normal_vectors:
+                parseMesh2List(t, [&](size_t) { parts.normals.push_back(parseVec3()); });
+                continue;
+            case Keyword::kw_uv_vectors:
+                parseMesh2List(t, [&](size_t) { parseVector(); });
+                continue;
+            case Keyword::kw_uv_indices:
+                parseMesh2List(t, [&](size_t) { parseVec3(); });
+                continue;
+            case Keyword::kw_texture_list:
+                parseMesh2List(t, [&](size_t) {
+                    const Token at = peek();
+                    if (!at.is(Keyword::kw_texture))
+                        fail(at, fmt::format("expected a texture in texture_list, found {}",
+                                             describeToken(at)));
+                    parts.textures.push_back(parseTexture(nullptr));
+                });
+                continue;
+            case Keyword::kw_face_indices:
+                parseMesh2List(t, [&](size_t) {
+                    faceAt.push_back(peek());
+                    const Vec3 f = parseVec3();
+                    faces.push_back({std::llround(f.x), std::llround(f.y), std::llround(f.z)});
+                    int64_t tex = -1;
+                    if (!parts.textures.empty()) {
+                        accept(Sym::Comma);
+                        tex = std::llround(parseFloat());
+                        // Three indices: a texture interpolated over the
+                        // triangle, unless they are all the same.
+                        const Token c = peek();
+                        if (c.is(Sym::Comma)) {
+                            next();
+                            const Token second = peek();
+                            if (!second.is(Sym::Less)) {
+                                const int64_t t2 = std::llround(parseFloat());
+                                accept(Sym::Comma);
+                                const int64_t t3 = std::llround(parseFloat());
+                                if (t2 != tex || t3 != tex)
+                                    unsupported(second, "mesh2 faces with three texture indices");
+                            }
+                        }
+                    }
+                    faceTextures.push_back(tex);
+                });
+                continue;
+            case Keyword::kw_normal_indices:
+                haveNormalIndices = true;
+                parseMesh2List(t, [&](size_t) {
+                    const Vec3 f = parseVec3();
+                    normalFaces.push_back(
+                        {std::llround(f.x), std::llround(f.y), std::llround(f.z)});
+                });
+                continue;
+            default:
+                break;
+        }
+        if (parseMeshSetting(parts)) continue;
+        break;
+    }
+    if (faces.empty()) fail(peek(), "Mesh contains no triangles.");
+    // Without normal_indices, normals are per vertex when there are as many.
+    const bool perVertexNormals = !haveNormalIndices && !parts.normals.empty();
+    if (perVertexNormals && parts.normals.size() != parts.vertices.size())
+        fail(faceAt.front(),
+             "Number of normals does not match the number of vertices (normal_indices needed).");
+    if (haveNormalIndices && normalFaces.size() != faces.size())
+        fail(faceAt.front(), "Number of normal indices does not match the number of faces.");
+    for (size_t i = 0; i < faces.size(); ++i) {
+        scene::MeshTriangle tri;
+        for (size_t k = 0; k < 3; ++k) {
+            if (faces[i][k] < 0 || faces[i][k] >= static_cast<int64_t>(parts.vertices.size()))
+                fail(faceAt[i], "Mesh face index out of range.");
+            tri.vertex[k] = static_cast<uint32_t>(faces[i][k]);
+            if (perVertexNormals) tri.normal[k] = static_cast<int32_t>(faces[i][k]);
+            if (haveNormalIndices) {
+                if (normalFaces[i][k] < 0 ||
+                    normalFaces[i][k] >= static_cast<int64_t>(parts.normals.size()))
+                    fail(faceAt[i], "Mesh normal index out of range.");
+                tri.normal[k] = static_cast<int32_t>(normalFaces[i][k]);
+            }
+        }
+        if (faceTextures[i] >= static_cast<int64_t>(parts.textures.size()))
+            fail(faceAt[i], "Texture index out of range in mesh2.");
+        tri.texture = static_cast<int32_t>(faceTextures[i]);
+        parts.triangles.push_back(tri);
+    }
+    buildMeshObject(obj, parts);
+}
+
+namespace {
+
+// povray 3.7's heights from an image's pixels (measured with trace()):
+// grey values as 16 bits (8-bit v as v * 257), colour pixels as red * 256 +
+// green for 8-bit images.
+std::vector<uint16_t> heightsFromImage(const image::EncodedImage& img) {
+    std::vector<uint16_t> out(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
+    const bool grey = img.channels < 3;
+    const bool deep = img.bitDepth > 8;
+    for (size_t p = 0; p < out.size(); ++p) {
+        const float* px = &img.values[p * static_cast<size_t>(img.channels)];
+        if (deep) {
+            out[p] = static_cast<uint16_t>(std::lround(std::clamp(px[0], 0.0f, 1.0f) * 65535.0f));
+        } else {
+            const long r = std::lround(std::clamp(px[0], 0.0f, 1.0f) * 255.0f);
+            const long g = grey ? r : std::lround(std::clamp(px[1], 0.0f, 1.0f) * 255.0f);
+            out[p] = static_cast<uint16_t>(r * 256 + g);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void Interpreter::parseHeightField(scene::Object& obj) {
+    const Token source = peek();
+    int width = 0, height = 0;
+    std::vector<uint16_t> heights;
+    if (source.is(Keyword::kw_function)) {
+        next();
+        const Token sizeAt = peek();
+        const double w = parseFloat();
+        accept(Sym::Comma);
+        const double h = parseFloat();
+        if (w < 2 || h < 2)
+            fail(sizeAt, "height_field function needs a resolution of at least 2 x 2");
+        width = static_cast<int>(w);
+        height = static_cast<int>(h);
+        const Value body = parseFunctionBody({"x", "y", "z"});
+        const auto& fn = *std::get<FunctionPtr>(body);
+        if (!fn.unsupported.empty()) unsupported(source, fn.unsupported);
+        heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
+        // Sample (i, j) sees x = i / (W - 1), y = j / (H - 1) (j = 0 is the
+        // row at z = 1, as an image's top row); the value is kept as povray
+        // keeps it: times 65535, truncated, wrapped to 16 bits.
+        for (int j = 0; j < height; ++j)
+            for (int i = 0; i < width; ++i) {
+                double args[3] = {static_cast<double>(i) / (width - 1),
+                                  static_cast<double>(j) / (height - 1), 0.0};
+                double value;
+                try {
+                    value = fn.compiled->eval(args);
+                } catch (const std::runtime_error& e) {
+                    fail(source, e.what());
+                }
+                const auto level = static_cast<long long>(value * 65535.0);
+                heights[static_cast<size_t>(j) * static_cast<size_t>(width) +
+                        static_cast<size_t>(i)] =
+                    static_cast<uint16_t>(static_cast<unsigned long long>(level) & 0xFFFFu);
+            }
+    } else {
+        switch (source.kw) {
+            case Keyword::kw_png:
+            case Keyword::kw_tga:
+            case Keyword::kw_pgm:
+            case Keyword::kw_ppm:
+            case Keyword::kw_jpeg:
+            case Keyword::kw_tiff:
+            case Keyword::kw_exr:
+            case Keyword::kw_hdr:
+            case Keyword::kw_sys:
+                next();
+                break;
+            case Keyword::kw_gif:
+            case Keyword::kw_iff:
+                unsupported(source, fmt::format("{} height fields (palette images)", source.text));
+            default:
+                fail(source,
+                     fmt::format("expected an image type or 'function' in height_field, found {}",
+                                 describeToken(source)));
+        }
+        const Token nameAt = peek();
+        const std::string name = parseString();
+        const std::filesystem::path path = findIncludeFile(name);
+        if (path.empty()) fail(nameAt, fmt::format("Cannot open file '{}'.", name));
+        image::EncodedImage img;
+        try {
+            img = image::read(path);
+        } catch (const std::runtime_error& e) {
+            fail(nameAt, e.what());
+        }
+        if (img.width < 2 || img.height < 2)
+            fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
+        width = img.width;
+        height = img.height;
+        heights = heightsFromImage(img);
+    }
+    bool smooth = false;
+    double waterLevel = 0;
+    for (;;) {
+        const Token t = peek();
+        if (t.is(Keyword::kw_smooth)) {
+            next();
+            smooth = parseOptionalBool();
+        } else if (t.is(Keyword::kw_water_level)) {
+            next();
+            waterLevel = parseFloat();
+        } else if (t.is(Keyword::kw_hierarchy)) {
+            next();
+            parseOptionalBool();
+        } else {
+            break;
+        }
+    }
+    obj.shape =
+        std::make_shared<scene::HeightField>(width, height, std::move(heights), smooth, waterLevel);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
+    // The settings' numbers stop before a '<': "v_steps 3 <0, 0, 0>" is a
+    // step count and the first point, not a comparison (as in povray).
+    auto setting = [&]() {
+        const Token at = peek();
+        return toFloat(parseAdditive(true), at);
+    };
+    int type = -1, uSteps = 0, vSteps = 0;
+    double flatness = 0;
+    const Token start = peek();
+    for (;;) {
+        const Token t = peek();
+        if (t.is(Keyword::kw_type)) {
+            next();
+            type = static_cast<int>(setting());
+            if (type != 0 && type != 1) fail(t, "Patch type must be 0 or 1.");
+        } else if (t.is(Keyword::kw_flatness)) {
+            next();
+            flatness = setting();
+        } else if (t.is(Keyword::kw_u_steps)) {
+            next();
+            uSteps = static_cast<int>(setting());
+        } else if (t.is(Keyword::kw_v_steps)) {
+            next();
+            vSteps = static_cast<int>(setting());
+        } else {
+            break;
+        }
+    }
+    if (type < 0) fail(start, "bicubic_patch needs 'type 0' or 'type 1'");
+    // povray keeps u_steps and v_steps within 0..16 ... a depth that is
+    // already 4 billion triangles; far less is sane.
+    uSteps = std::clamp(uSteps, 0, 10);
+    vSteps = std::clamp(vSteps, 0, 10);
+    std::array<Vec3, 16> points;
+    for (size_t i = 0; i < 16; ++i) {
+        if (i) accept(Sym::Comma);
+        points[i] = parseVec3();
+    }
+    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness);
+}
+
+}  // namespace frameray::sdl

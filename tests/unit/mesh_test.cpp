@@ -1,0 +1,213 @@
+// Triangle meshes, height fields and bicubic patches: ray hits, normals,
+// inside tests and the heights povray 3.7 gives (measured with trace()).
+#include "scene/mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "scene/bicubic_patch.h"
+#include "scene/height_field.h"
+
+using namespace frameray;
+using namespace frameray::scene;
+
+namespace {
+
+// A closed unit cube from -1 to 1 as 12 triangles.
+std::shared_ptr<const TriangleMesh> cubeMesh() {
+    std::vector<Vec3> v;
+    for (int i = 0; i < 8; ++i) v.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    const uint32_t faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 2, 6, 4},
+                                  {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}};
+    std::vector<MeshTriangle> tris;
+    for (const auto& f : faces) {
+        MeshTriangle a, b;
+        a.vertex = {f[0], f[1], f[2]};
+        b.vertex = {f[0], f[2], f[3]};
+        tris.push_back(a);
+        tris.push_back(b);
+    }
+    return std::make_shared<const TriangleMesh>(std::move(v), std::vector<Vec3>{}, std::move(tris));
+}
+
+}  // namespace
+
+TEST(Mesh, FirstAndAllHitsOfACube) {
+    MeshShape cube(cubeMesh(), TriangleMesh::kAllGroups, false, {});
+    double t;
+    ASSERT_TRUE(cube.firstHit({{0.2, 0.3, -5}, {0, 0, 1}}, 0, kInfinity, t));
+    EXPECT_DOUBLE_EQ(t, 4);
+    std::vector<double> ts;
+    cube.allHits({{0.2, 0.3, -5}, {0, 0, 2}}, 0, kInfinity, ts);
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_DOUBLE_EQ(ts[0], 2);
+    EXPECT_DOUBLE_EQ(ts[1], 3);
+    EXPECT_FALSE(cube.firstHit({{2, 0, -5}, {0, 0, 1}}, 0, kInfinity, t));
+    // tMax cuts hits off.
+    EXPECT_FALSE(cube.firstHit({{0.2, 0.3, -5}, {0, 0, 1}}, 0, 3.5, t));
+    const Vec3 n = cube.normal({0.2, 0.3, -1});
+    EXPECT_NEAR(std::fabs(n.z), 1, 1e-12);
+}
+
+TEST(Mesh, InsideNeedsAnInsideVector) {
+    MeshShape patch(cubeMesh(), TriangleMesh::kAllGroups, false, {});
+    EXPECT_TRUE(patch.isPatch());
+    EXPECT_FALSE(patch.inside({0, 0, 0}));
+    MeshShape solid(cubeMesh(), TriangleMesh::kAllGroups, true, {0.3, 0.7, 0.2});
+    EXPECT_FALSE(solid.isPatch());
+    EXPECT_TRUE(solid.inside({0.1, -0.2, 0.3}));
+    EXPECT_FALSE(solid.inside({1.5, 0, 0}));
+}
+
+TEST(Mesh, ManyTrianglesAgreeWithBruteForce) {
+    // A random triangle soup: the BVH must find what testing every
+    // triangle finds.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-10, 10);
+    std::vector<Vec3> v;
+    std::vector<MeshTriangle> tris;
+    for (uint32_t i = 0; i < 600; ++i) {
+        const Vec3 c(u(rng), u(rng), u(rng));
+        for (int k = 0; k < 3; ++k) v.push_back(c + Vec3(u(rng), u(rng), u(rng)) * 0.1);
+        MeshTriangle t;
+        t.vertex = {3 * i, 3 * i + 1, 3 * i + 2};
+        tris.push_back(t);
+    }
+    TriangleMesh mesh(v, {}, tris);
+    for (int r = 0; r < 300; ++r) {
+        const Ray ray{{u(rng), u(rng), -30}, normalize(Vec3(u(rng) * 0.05, u(rng) * 0.05, 1))};
+        double best = kInfinity;
+        for (const MeshTriangle& t : tris) {
+            TriangleMesh one({v[t.vertex[0]], v[t.vertex[1]], v[t.vertex[2]]}, {},
+                             {MeshTriangle{{0, 1, 2}}});
+            double h;
+            if (one.firstHit(ray, 0, best, h, TriangleMesh::kAllGroups)) best = h;
+        }
+        double t;
+        const bool hit = mesh.firstHit(ray, 0, kInfinity, t, TriangleMesh::kAllGroups);
+        EXPECT_EQ(hit, best < kInfinity);
+        if (hit) {
+            EXPECT_DOUBLE_EQ(t, best);
+        }
+    }
+}
+
+TEST(Mesh, TextureGroupsSplitTheTriangles) {
+    std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    MeshTriangle a, b;
+    a.vertex = {0, 1, 2};
+    a.texture = 1;
+    b.vertex = {1, 3, 2};
+    auto mesh = std::make_shared<const TriangleMesh>(v, std::vector<Vec3>{},
+                                                     std::vector<MeshTriangle>{a, b});
+    ASSERT_EQ(mesh->groupCount(), 2u);
+    EXPECT_EQ(mesh->groupTexture(0), -1);
+    EXPECT_EQ(mesh->groupTexture(1), 1);
+    double t;
+    const Ray lowerLeft{{0.2, 0.2, -1}, {0, 0, 1}};
+    EXPECT_TRUE(mesh->firstHit(lowerLeft, 0, kInfinity, t, 1));
+    EXPECT_FALSE(mesh->firstHit(lowerLeft, 0, kInfinity, t, 0));
+}
+
+TEST(Mesh, SmoothNormalsInterpolate) {
+    std::vector<Vec3> v{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    std::vector<Vec3> n{{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};
+    MeshTriangle t;
+    t.vertex = {0, 1, 2};
+    t.normal = {0, 1, 2};
+    TriangleMesh mesh(v, n, {t});
+    const Vec3 at0 = mesh.normal({0, 0, 0}, TriangleMesh::kAllGroups);
+    EXPECT_NEAR(at0.z, -1, 1e-12);
+    const Vec3 mid = mesh.normal({0.5, 0, 0}, TriangleMesh::kAllGroups);
+    const Vec3 expected = normalize(normalize(Vec3(0, 0, -1)) + normalize(Vec3(1, 0, -1)));
+    EXPECT_NEAR(mid.x, expected.x, 1e-12);
+    EXPECT_NEAR(mid.z, expected.z, 1e-12);
+}
+
+TEST(HeightField, HeightsAsPovrayGivesThem) {
+    // 3 x 2 grid, rows from the top: the bottom row lies at z = 0.
+    // Heights are 16-bit values over 65536 (povray: an 8-bit 200 is 51400).
+    std::vector<uint16_t> h{0, 257, 0, 0, 51400, 0};
+    HeightField hf(3, 2, h, false, 0);
+    EXPECT_DOUBLE_EQ(hf.sample(1, 0), 51400.0 / 65536);
+    EXPECT_DOUBLE_EQ(hf.sample(1, 1), 257.0 / 65536);
+    EXPECT_DOUBLE_EQ(hf.heightAt(0.5, 0), 51400.0 / 65536);
+    double t;
+    ASSERT_TRUE(hf.firstHit({{0.5, 5, 0.5}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, (51400.0 + 257.0) / 2 / 65536, 1e-12);
+    EXPECT_TRUE(hf.inside({0.5, 0.1, 0.01}));
+    EXPECT_FALSE(hf.inside({0.5, 0.9, 0.5}));
+    EXPECT_TRUE(hf.inside({0.5, -3, 0.5}));  // no floor, as in povray
+    EXPECT_FALSE(hf.inside({1.5, -3, 0.5}));
+}
+
+TEST(HeightField, CellsSplitAlongTheRisingDiagonal) {
+    // povray cuts a cell from (x + 1, z) to (x, z + 1): with only the
+    // corner at (0, 0) raised, the cell's centre stays at 0.
+    std::vector<uint16_t> h{0, 0, 65280, 0};  // top row, then bottom row
+    HeightField hf(2, 2, h, false, 0);
+    EXPECT_DOUBLE_EQ(hf.heightAt(0.5, 0.5), 0);
+    EXPECT_NEAR(hf.heightAt(0.25, 0.25), 0.5 * 65280 / 65536, 1e-12);
+    double t;
+    ASSERT_TRUE(hf.firstHit({{0.25, 5, 0.25}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 0.5 * 65280 / 65536, 1e-12);
+}
+
+TEST(HeightField, WaterLevelHidesWhatIsBelow) {
+    std::vector<uint16_t> h{0, 0, 65280, 0};
+    HeightField hf(2, 2, h, false, 0.3);
+    double t;
+    EXPECT_TRUE(hf.firstHit({{0.1, 5, 0.1}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_FALSE(hf.firstHit({{0.6, 5, 0.6}, {0, -1, 0}}, 0, kInfinity, t));
+}
+
+TEST(BicubicPatch, CornersAndDiagonal) {
+    // A flat patch with one raised corner (measured against povray:
+    // u_steps 1, v_steps 1 puts the centre at 1/64 and cuts each
+    // sub-patch along (u0, v0)-(u1, v1)).
+    std::array<Vec3, 16> p;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) p[static_cast<size_t>(4 * r + c)] = Vec3(c / 3.0, 0, r / 3.0);
+    p[15].y = 1;
+    BicubicPatch patch(p, 1, 1, 0);
+    EXPECT_EQ(patch.triangleCount(), 8u);
+    double t;
+    ASSERT_TRUE(patch.firstHit({{0.5, 5, 0.5}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 1.0 / 64, 1e-12);
+    ASSERT_TRUE(patch.firstHit({{0.25, 5, 0.75}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 1.0 / 16, 1e-12);
+}
+
+TEST(BicubicPatch, FlatnessStopsSplittingFlatParts) {
+    // The raised-corner patch with flatness 0.1 and 3 steps, as povray's
+    // trace() shows it: [0, 1/2]^2 stays one sub-patch (its centre lies on
+    // the diagonal, at 1/128), [1/2, 1]^2 is split.
+    std::array<Vec3, 16> p;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) p[static_cast<size_t>(4 * r + c)] = Vec3(c / 3.0, 0, r / 3.0);
+    p[15].y = 1;
+    BicubicPatch patch(p, 3, 3, 0.1);
+    double t;
+    ASSERT_TRUE(patch.firstHit({{0.25, 5, 0.25}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 1.0 / 128, 1e-12);
+    ASSERT_TRUE(patch.firstHit({{0.75, 5, 0.75}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 0.75 * 0.75 * 0.75 * 0.75 * 0.75 * 0.75, 1e-12);
+    ASSERT_TRUE(patch.firstHit({{0.625, 5, 0.625}, {0, -1, 0}}, 0, kInfinity, t));
+    EXPECT_NEAR(5 - t, 0.096802, 1e-6);
+}
+
+TEST(BicubicPatch, FlatnessMeasuresWhereThePatchIsPlaced) {
+    // povray measures flatness on the moved control points: scaled by 10,
+    // the raised-corner patch is split where it was flat enough.
+    std::array<Vec3, 16> p;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) p[static_cast<size_t>(4 * r + c)] = Vec3(c / 3.0, 0, r / 3.0);
+    p[15].y = 1;
+    const BicubicPatch patch(p, 3, 3, 0.1);
+    const auto placed =
+        std::dynamic_pointer_cast<const BicubicPatch>(patch.placedBy(Transform::scale(Vec3(10))));
+    ASSERT_TRUE(placed);
+    EXPECT_GT(placed->triangleCount(), patch.triangleCount());
+    EXPECT_EQ(BicubicPatch(p, 3, 3, 0).placedBy(Transform::scale(Vec3(10))), nullptr);
+}
