@@ -105,25 +105,32 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 f.emission = parseColor().rgb;
                 break;
             case Keyword::kw_diffuse:
-                accept(Keyword::kw_albedo);
+                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
                 f.diffuse = parseFloat();
-                if (accept(Sym::Comma)) f.diffuseBack = parseFloat();
+                if (accept(Sym::Comma)) {
+                    f.diffuseBack = parseFloat();
+                    // povray 3.7's experimental light through the back side.
+                    if (f.diffuseBack != 0) unsupported(t, "diffuse with a back-side value");
+                }
                 break;
             case Keyword::kw_brilliance:
                 f.brilliance = parseFloat();
                 break;
             case Keyword::kw_crand:
                 f.crand = parseFloat();
+                // povray's crand draws a new random number per pixel;
+                // not simulated yet.
+                if (f.crand != 0) unsupported(t, "crand");
                 break;
             case Keyword::kw_phong:
-                accept(Keyword::kw_albedo);
+                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
                 f.phong = parseFloat();
                 break;
             case Keyword::kw_phong_size:
                 f.phongSize = parseFloat();
                 break;
             case Keyword::kw_specular:
-                accept(Keyword::kw_albedo);
+                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
                 f.specular = parseFloat();
                 break;
             case Keyword::kw_roughness:
@@ -148,6 +155,7 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 break;
             case Keyword::kw_irid:
                 parseIridescence(f);
+                if (f.irid.amount != 0) unsupported(t, "irid");
                 break;
             case Keyword::kw_refraction:
                 // 2.0: refraction 1 turned bending on; 3.x bends whenever
@@ -203,6 +211,7 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_dispersion:
                 in.dispersion = parseFloat();
+                if (in.dispersion != 1.0) unsupported(t, "dispersion");
                 break;
             case Keyword::kw_dispersion_samples:
                 in.dispersionSamples = static_cast<int>(parseFloat());
@@ -219,6 +228,9 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_caustics:
                 in.caustics = parseFloat();
+                // povray's fake caustics brighten shadow rays through the
+                // object; not simulated yet.
+                if (in.caustics != 0) unsupported(t, "caustics");
                 break;
             case Keyword::kw_media:
                 unsupported(t, "media");

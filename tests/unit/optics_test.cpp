@@ -1,0 +1,159 @@
+// Surface optics (render/optics.h) and the finish/interior parser, against
+// values measured from povray 3.7 (16-bit renders of single surfaces).
+#include "render/optics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sdl/interpreter.h"
+
+using namespace frameray;
+using namespace frameray::render;
+
+TEST(Optics, FresnelHeadOnAndTotalReflection) {
+    EXPECT_NEAR(fresnelReflectance(1.0, 1.5), 0.04, 1e-12);
+    EXPECT_NEAR(fresnelReflectance(1.0, 1.0 / 1.5), 0.04, 1e-12);
+    // povray: from inside glass at 20 degrees, 0.04166 of the light mirrors.
+    EXPECT_NEAR(fresnelReflectance(std::cos(20 * std::numbers::pi / 180), 1.0 / 1.5), 0.04166,
+                2e-4);
+    // Beyond the critical angle (41.8 degrees) everything mirrors.
+    EXPECT_EQ(fresnelReflectance(std::cos(50 * std::numbers::pi / 180), 1.0 / 1.5), 1.0);
+    EXPECT_EQ(fresnelReflectance(1.0, 1.0), 0.0);
+}
+
+TEST(Optics, MetallicTintFollowsPovraysCurve) {
+    EXPECT_NEAR(metallicFresnel(1.0), 0.0, 1e-9);
+    // Measured from the tint of a metallic reflection at 60 and 30 degrees.
+    EXPECT_NEAR(metallicFresnel(0.5), 0.0593, 2e-4);
+    EXPECT_NEAR(metallicFresnel(std::cos(30 * std::numbers::pi / 180)), 0.0119, 5e-4);
+    const RGB tint = metallicTint(1.0, 1.0, RGB(0.8, 0.5, 0.3));
+    EXPECT_NEAR(tint.r, 0.8, 1e-9);
+    EXPECT_NEAR(tint.b, 0.3, 1e-9);
+    EXPECT_NEAR(metallicTint(0.0, 1.0, RGB(0.8, 0.5, 0.3)).g, 1.0, 1e-12);
+}
+
+TEST(Optics, ReflectanceFalloffAndFresnel) {
+    scene::Reflection r;
+    r.min = RGB(0.2);
+    r.max = RGB(0.8);
+    r.falloff = 2;
+    // povray at 60 degrees: 0.2 + 0.6 * (1 - 0.5)^2 = 0.35.
+    EXPECT_NEAR(reflectance(r, 0.5, 1.5, RGB(1.0)).g, 0.35, 1e-12);
+    r.fresnel = true;
+    EXPECT_NEAR(reflectance(r, 1.0, 1.5, RGB(1.0)).g, 0.2 + 0.6 * 0.04, 1e-12);
+}
+
+TEST(Optics, RefractionObeysSnellAndReportsTotalReflection) {
+    const double a = 30 * std::numbers::pi / 180;
+    const Vec3 d{std::sin(a), -std::cos(a), 0};
+    const Vec3 n{0, 1, 0};
+    const auto t = refractedDirection(d, n, 1.0 / 1.5);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_NEAR(t->x, std::sin(a) / 1.5, 1e-12);
+    EXPECT_LT(t->y, 0);
+    const double b = 60 * std::numbers::pi / 180;
+    EXPECT_FALSE(refractedDirection({std::sin(b), -std::cos(b), 0}, n, 1.5).has_value());
+}
+
+TEST(Optics, InteriorFadeLaws) {
+    scene::Interior in;
+    in.fadeDistance = 0.5;
+    in.fadePower = 2;
+    in.fadeColor = RGB(1, 0.5, 0);
+    // povray through 1 unit: green 0.5 + 0.5 * 1 / (1 + 2^2) = 0.6.
+    EXPECT_NEAR(interiorFade(in, 1.0).g, 0.6, 1e-12);
+    EXPECT_NEAR(interiorFade(in, 1.0).b, 0.2, 1e-12);
+    in.fadePower = 1001;  // exponential, per channel
+    EXPECT_NEAR(interiorFade(in, 1.0).g, std::exp(-1.0), 1e-12);
+    EXPECT_NEAR(interiorFade(in, 1.0).r, 1.0, 1e-12);
+    in.fadePower = 0;  // the default power still halves the light
+    EXPECT_NEAR(interiorFade(in, 1.0).b, 0.5, 1e-12);
+    in.fadeDistance = 0;
+    EXPECT_EQ(interiorFade(in, 10.0).b, 1.0);
+}
+
+TEST(Optics, ReflectionExponent) {
+    const RGB c = reflectionExponent(RGB(0.25, 0.16, 0.0), 2.0);
+    EXPECT_NEAR(c.r, 0.5, 1e-12);
+    EXPECT_NEAR(c.g, 0.4, 1e-12);
+    EXPECT_EQ(c.b, 0.0);
+}
+
+namespace {
+
+struct Quiet : sdl::MessageSink {
+    void message(sdl::Stream, const std::string&) override {}
+};
+
+struct Parsed {
+    sdl::FrameContext ctx;
+    sdl::TokenCache cache;
+    Quiet sink;
+    sdl::Interpreter interp{ctx, cache, sink};
+    scene::Scene scene;
+    explicit Parsed(const std::string& text) { scene = interp.parseText("t.pov", text); }
+};
+
+std::string parseError(const std::string& text) {
+    try {
+        Parsed p(text);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(FinishParser, ReflectionBlockAndInterior) {
+    Parsed p(R"(
+        #declare I = interior { ior 1.33 fade_distance 2 fade_power 1001 fade_color <0.2, 0.5, 1> }
+        sphere { 0, 1 finish { reflection { 0.8 fresnel metallic } conserve_energy } interior { I } }
+        sphere { 0, 1 finish { reflection { 0.1, 0.6 falloff 3 exponent 2 } metallic 0.5 } }
+        sphere { 0, 1 finish { ior 1.5 reflection rgb <1, 0, 0> reflection_exponent 0.5 } }
+    )");
+    ASSERT_EQ(p.scene.objects.size(), 3u);
+    const auto& a = *p.scene.objects[0];
+    EXPECT_TRUE(a.texture->finish.reflection.fresnel);
+    EXPECT_EQ(a.texture->finish.reflection.min.g, 0.0);  // one value with fresnel: the maximum
+    EXPECT_EQ(a.texture->finish.reflection.max.g, 0.8);
+    EXPECT_EQ(a.texture->finish.reflection.metallic, 1.0);
+    EXPECT_TRUE(a.texture->finish.conserveEnergy);
+    ASSERT_TRUE(a.interior);
+    EXPECT_EQ(a.interior->ior, 1.33);
+    EXPECT_EQ(a.interior->fadePower, 1001);
+    const auto& b = *p.scene.objects[1];
+    EXPECT_EQ(b.texture->finish.reflection.min.r, 0.1);
+    EXPECT_EQ(b.texture->finish.reflection.falloff, 3);
+    EXPECT_EQ(b.texture->finish.reflection.exponent, 2);
+    EXPECT_EQ(b.texture->finish.metallic, 0.5);
+    const auto& c = *p.scene.objects[2];
+    ASSERT_TRUE(c.interior);  // the 2.0 finish ior fills the interior
+    EXPECT_EQ(c.interior->ior, 1.5);
+    EXPECT_EQ(c.texture->finish.reflection.max.r, 1.0);
+    EXPECT_EQ(c.texture->finish.reflection.max.g, 0.0);
+    EXPECT_EQ(c.texture->finish.reflection.exponent, 0.5);
+}
+
+TEST(FinishParser, EffectsNotSimulatedStop) {
+    EXPECT_NE(parseError("sphere { 0, 1 finish { irid { 0.3 thickness 0.2 } } }")
+                  .find("not supported yet: irid"),
+              std::string::npos);
+    EXPECT_NE(parseError("sphere { 0, 1 finish { crand 0.1 } }").find("not supported yet: crand"),
+              std::string::npos);
+    EXPECT_NE(parseError("sphere { 0, 1 interior { dispersion 1.1 } }")
+                  .find("not supported yet: dispersion"),
+              std::string::npos);
+    EXPECT_NE(
+        parseError("sphere { 0, 1 interior { caustics 0.5 } }").find("not supported yet: caustics"),
+        std::string::npos);
+    EXPECT_NE(parseError("sphere { 0, 1 finish { diffuse albedo 0.6 } }")
+                  .find("not supported yet: albedo"),
+              std::string::npos);
+    EXPECT_EQ(
+        parseError(
+            "sphere { 0, 1 finish { crand 0 irid { 0 } } interior { dispersion 1 caustics 0 } }"),
+        "");
+}
