@@ -75,3 +75,58 @@ TEST(Renderer, DeterministicAcrossRuns) {
     EXPECT_GT(i1.rgb[(15 * 40 + 20) * 3], 0.1f);
     EXPECT_EQ(i1.rgb[0], 0.0f);
 }
+
+namespace {
+
+// A sphere in front of a plane, with the given sphere finish and colour;
+// rendered at 40x30, returning the ray counts.
+render::RayCounts raysFor(const scene::Finish& finish, const Color& color, int quality = 9) {
+    scene::Scene s;
+    auto sphere = std::make_shared<scene::Object>();
+    sphere->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 3}, 1);
+    auto tex = std::make_shared<scene::Texture>();
+    tex->pigment = std::make_shared<scene::Pigment>(color);
+    tex->finish = finish;
+    sphere->texture = tex;
+    auto interior = std::make_shared<scene::Interior>();
+    interior->ior = 1.5;
+    sphere->interior = interior;
+    s.objects = {sphere};
+    scene::Light light;
+    light.position = {5, 5, -5};
+    s.lights.push_back(light);
+    render::World w(s);
+    render::FrameStats stats;
+    render::FrameSettings settings;
+    settings.width = 40;
+    settings.height = 30;
+    settings.quality = quality;
+    render::renderFrame(w, settings, stats);
+    return stats.rays;
+}
+
+}  // namespace
+
+TEST(Renderer, TracesOnlyTheRayKindsTheSceneCallsFor) {
+    // Opaque, not reflective: camera and shadow rays only.
+    const render::RayCounts plain = raysFor(scene::Finish{}, Color(RGB(1)));
+    EXPECT_EQ(plain.camera, 1200u);
+    EXPECT_GT(plain.shadow, 0u);
+    EXPECT_EQ(plain.reflection + plain.refraction + plain.transmission, 0u);
+
+    scene::Finish mirror;
+    mirror.reflection.min = mirror.reflection.max = RGB(0.5);
+    const render::RayCounts reflective = raysFor(mirror, Color(RGB(1)));
+    EXPECT_GT(reflective.reflection, 0u);
+    EXPECT_EQ(reflective.refraction + reflective.transmission, 0u);
+
+    // Glass of ior 1.5: rays bend entering and leaving.
+    const render::RayCounts glass = raysFor(scene::Finish{}, Color(RGB(1), 0.0, 0.9));
+    EXPECT_GT(glass.refraction, 0u);
+    EXPECT_EQ(glass.reflection + glass.transmission, 0u);
+
+    // Below +Q8 povray traces no reflected or transmitted rays; below +Q4
+    // no shadows.
+    const render::RayCounts low = raysFor(mirror, Color(RGB(1), 0.0, 0.9), 3);
+    EXPECT_EQ(low.reflection + low.refraction + low.transmission + low.shadow, 0u);
+}
