@@ -7,35 +7,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "parse_support.h"
 #include "sdl/interpreter.h"
 
 using namespace frameray;
 
 namespace {
 
-struct Warnings : sdl::MessageSink {
-    std::string text;
-    void message(sdl::Stream s, const std::string& t) override {
-        if (s == sdl::Stream::Warning) text += t;
-    }
-};
-
-struct Parsed {
-    sdl::FrameContext ctx;
-    sdl::TokenCache cache;
-    Warnings sink;
-    sdl::Interpreter interp{ctx, cache, sink};
-    scene::Scene scene;
-    explicit Parsed(const std::string& text) { scene = interp.parseText("t.pov", text); }
-};
-
+using Parsed = test_support::ParsedScene;
 std::string parseError(const std::string& text) {
-    try {
-        Parsed p(text);
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
+    return test_support::parseErrorOf(text);
 }
 
 constexpr double kPi = std::numbers::pi;
@@ -68,7 +49,7 @@ TEST(AtmosphereParse, FogItemsAndDefaults) {
     // up is turned by the rotation and normalised at the end.
     EXPECT_NEAR(fogs[1].up.x, -1, 1e-12);
     EXPECT_NEAR(fogs[1].up.y, 0, 1e-12);
-    EXPECT_EQ(p.sink.text.find("fog"), std::string::npos) << p.sink.text;
+    EXPECT_EQ(p.sink.warnings.find("fog"), std::string::npos) << p.sink.warnings;
 }
 
 TEST(AtmosphereParse, FogWarningsAsPovray) {
@@ -76,9 +57,9 @@ TEST(AtmosphereParse, FogWarningsAsPovray) {
     const auto& fog = p.scene.atmosphere.fogs.at(0);
     EXPECT_DOUBLE_EQ(fog.distance, 7);
     EXPECT_EQ(fog.kind, scene::Fog::Kind::Constant);  // unknown types are constant fog
-    EXPECT_NE(p.sink.text.find("Should use distance keyword."), std::string::npos);
-    EXPECT_NE(p.sink.text.find("Unknown fog type."), std::string::npos);
-    EXPECT_NE(p.sink.text.find("A fog's up vector can't be translated."), std::string::npos);
+    EXPECT_NE(p.sink.warnings.find("Should use distance keyword."), std::string::npos);
+    EXPECT_NE(p.sink.warnings.find("Unknown fog type."), std::string::npos);
+    EXPECT_NE(p.sink.warnings.find("A fog's up vector can't be translated."), std::string::npos);
 }
 
 TEST(AtmosphereParse, FogTurbulenceIsNotSupportedYet) {
@@ -101,7 +82,7 @@ TEST(AtmosphereParse, SkySphere) {
     EXPECT_EQ(sky.pigments.size(), 2u);  // the last sky_sphere replaces the first
     expectRGB(sky.emission, 0.5, 0.5, 0.5, 1e-7);
     EXPECT_NEAR(sky.transform.inversePoint({0, 1, 0}).y, 0, 1e-12);
-    EXPECT_NE(p.sink.text.find("Only one sky-sphere allowed (last one will be used)."),
+    EXPECT_NE(p.sink.warnings.find("Only one sky-sphere allowed (last one will be used)."),
               std::string::npos);
     EXPECT_NE(parseError("sky_sphere { emission 1 }").find("Empty sky_sphere statement."),
               std::string::npos);

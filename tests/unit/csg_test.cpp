@@ -1,10 +1,12 @@
 // CSG trees and object modifiers in world space: which crossings survive,
 // which primitive is reported, inside tests, bounds, inheritance, and the
 // SDL that builds them.
+#include "scene/csg.h"
+
 #include <gtest/gtest.h>
 
+#include "parse_support.h"
 #include "render/world.h"
-#include "scene/csg.h"
 #include "scene/flat_shapes.h"
 #include "scene/revolved_shapes.h"
 #include "sdl/interpreter.h"
@@ -19,8 +21,12 @@ std::shared_ptr<Object> primitive(std::shared_ptr<const Shape> shape) {
     o->shape = std::move(shape);
     return o;
 }
-std::shared_ptr<Object> sphere(const Vec3& c, double r) { return primitive(std::make_shared<Sphere>(c, r)); }
-std::shared_ptr<Object> box(const Vec3& a, const Vec3& b) { return primitive(std::make_shared<Box>(a, b)); }
+std::shared_ptr<Object> sphere(const Vec3& c, double r) {
+    return primitive(std::make_shared<Sphere>(c, r));
+}
+std::shared_ptr<Object> box(const Vec3& a, const Vec3& b) {
+    return primitive(std::make_shared<Box>(a, b));
+}
 
 std::shared_ptr<Object> csgOf(CsgOp op, std::vector<ObjectRef> kids) {
     auto o = std::make_shared<Object>();
@@ -99,7 +105,8 @@ TEST(Csg, CoincidentBoxFacesFollowPovray) {
     ASSERT_TRUE(d->firstHit({{0.1, 5, 0.2}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
     EXPECT_DOUBLE_EQ(h.t, 4);
     // Two boxes sharing a face intersect in that face (box faces are inside).
-    auto i = csgOf(CsgOp::Intersection, {box({-1, -1, -1}, {1, 0, 1}), box({-1, 0, -1}, {1, 1, 1})});
+    auto i =
+        csgOf(CsgOp::Intersection, {box({-1, -1, -1}, {1, 0, 1}), box({-1, 0, -1}, {1, 1, 1})});
     ASSERT_TRUE(i->firstHit({{0.1, 5, 0.2}, {0, -1, 0}}, 0, kInfinity, RayKind::Camera, h));
     EXPECT_DOUBLE_EQ(h.t, 5);
 }
@@ -115,7 +122,8 @@ TEST(Csg, InverseAndPatches) {
     EXPECT_EQ(allHits(*s, kAlongX).size(), 2u);
     // A triangle is never inside, inverted or not: difference { sphere
     // triangle } keeps none of the sphere (povray).
-    auto tri = primitive(std::make_shared<Triangle>(Vec3{-5, 0, -5}, Vec3{5, 0, -5}, Vec3{0, 0, 5}));
+    auto tri =
+        primitive(std::make_shared<Triangle>(Vec3{-5, 0, -5}, Vec3{5, 0, -5}, Vec3{0, 0, 5}));
     EXPECT_FALSE(tri->insideInverted({0, 1, 0}));
     auto d = csgOf(CsgOp::Difference, {sphere({0, 0, 0}, 1), tri});
     const auto h = allHits(*d, {{0.1, 5, 0.1}, {0, -1, 0}});
@@ -219,29 +227,9 @@ TEST(World, CsgHitReportsTheChildPrimitive) {
 
 namespace {
 
-struct Quiet : sdl::MessageSink {
-    std::string warnings;
-    void message(sdl::Stream s, const std::string& t) override {
-        if (s == sdl::Stream::Warning) warnings += t;
-    }
-};
-
-struct Parsed {
-    sdl::FrameContext ctx;
-    sdl::TokenCache cache;
-    Quiet sink;
-    sdl::Interpreter interp{ctx, cache, sink};
-    Scene scene;
-    explicit Parsed(const std::string& text) { scene = interp.parseText("t.pov", text); }
-};
-
+using Parsed = test_support::ParsedScene;
 std::string parseError(const std::string& text) {
-    try {
-        Parsed p(text);
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
+    return test_support::parseErrorOf(text);
 }
 
 }  // namespace
@@ -275,13 +263,19 @@ TEST(CsgSdl, ShapesCsgAndModifiersParse) {
 
 TEST(CsgSdl, PovrayErrorsAndWarnings) {
     EXPECT_NE(parseError("cylinder { 0, 0, 1 }").find("Degenerate cylinder"), std::string::npos);
-    EXPECT_NE(parseError("cone { y, 1, y, 0.5 }").find("Degenerate cone/cylinder"), std::string::npos);
-    EXPECT_NE(parseError("union { sphere { 0, 1 } translate x sphere { 0, 1 } }").find("No matching }"),
+    EXPECT_NE(parseError("cone { y, 1, y, 0.5 }").find("Degenerate cone/cylinder"),
               std::string::npos);
+    EXPECT_NE(
+        parseError("union { sphere { 0, 1 } translate x sphere { 0, 1 } }").find("No matching }"),
+        std::string::npos);
     EXPECT_NE(parseError("torus { 1, 0.5 }").find("not supported yet: torus"), std::string::npos);
-    EXPECT_NE(parseError("sphere { 0, 1 interior { media { } } }").find("not supported yet: media"), std::string::npos);
-    Parsed one("union { sphere { 0, 1 } }  triangle { 0, x, 2*x }  difference { sphere { 0, 1 } triangle { 0, x, y } }");
-    EXPECT_NE(one.sink.warnings.find("Patch objects not allowed in intersection."), std::string::npos);
+    EXPECT_NE(parseError("sphere { 0, 1 interior { media { } } }").find("not supported yet: media"),
+              std::string::npos);
+    Parsed one(
+        "union { sphere { 0, 1 } }  triangle { 0, x, 2*x }  difference { sphere { 0, 1 } triangle "
+        "{ 0, x, y } }");
+    EXPECT_NE(one.sink.warnings.find("Patch objects not allowed in intersection."),
+              std::string::npos);
     EXPECT_NE(one.sink.warnings.find("Should have at least 2 objects in csg."), std::string::npos);
     EXPECT_NE(one.sink.warnings.find("Degenerate triangle. Please remove."), std::string::npos);
 }

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sdl/interpreter.h"
+#include "parse_support.h"
 
 using namespace frameray;
 using namespace frameray::render;
@@ -83,26 +83,9 @@ TEST(Optics, ReflectionExponent) {
 
 namespace {
 
-struct Quiet : sdl::MessageSink {
-    void message(sdl::Stream, const std::string&) override {}
-};
-
-struct Parsed {
-    sdl::FrameContext ctx;
-    sdl::TokenCache cache;
-    Quiet sink;
-    sdl::Interpreter interp{ctx, cache, sink};
-    scene::Scene scene;
-    explicit Parsed(const std::string& text) { scene = interp.parseText("t.pov", text); }
-};
-
+using Parsed = test_support::ParsedScene;
 std::string parseError(const std::string& text) {
-    try {
-        Parsed p(text);
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
+    return test_support::parseErrorOf(text);
 }
 
 }  // namespace

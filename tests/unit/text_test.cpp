@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "parse_support.h"
 #include "scene/glyph_outline.h"
 #include "scene/text_shape.h"
 #include "scene/ttf_font.h"
@@ -249,33 +250,18 @@ TEST(TtfFont, LayoutAsPovray) {
 
 namespace {
 
-struct Sink : sdl::MessageSink {
-    std::string warnings;
-    void message(sdl::Stream s, const std::string& t) override {
-        if (s == sdl::Stream::Warning) warnings += t;
-    }
-};
+sdl::FrameContext fontContext() {
+    sdl::FrameContext c;
+    c.libraryPaths = {kFontDir};
+    return c;
+}
 
-struct Parsed {
-    sdl::FrameContext ctx = [] {
-        sdl::FrameContext c;
-        c.libraryPaths = {kFontDir};
-        return c;
-    }();
-    sdl::TokenCache cache;
-    Sink sink;
-    sdl::Interpreter interp{ctx, cache, sink};
-    Scene scene;
-    explicit Parsed(const std::string& text) { scene = interp.parseText("t.pov", text); }
+struct Parsed : test_support::ParsedScene {
+    explicit Parsed(const std::string& text) : test_support::ParsedScene(text, fontContext()) {}
 };
 
 std::string parseError(const std::string& text) {
-    try {
-        Parsed p(text);
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
+    return test_support::parseErrorOf(text, fontContext());
 }
 
 const TextShape& textOf(const Object& o) {
