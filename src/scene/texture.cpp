@@ -83,4 +83,21 @@ Color Pigment::at(const Vec3& point) const {
     return color_;
 }
 
+void Texture::stackOn(Texture& upper) const {
+    // Layers are kept flat: this texture without its layers, then its layers.
+    Texture alone = *this;
+    alone.layersBelow.clear();
+    upper.layersBelow.push_back(std::make_shared<const Texture>(std::move(alone)));
+    upper.layersBelow.insert(upper.layersBelow.end(), layersBelow.begin(), layersBelow.end());
+}
+
+void Texture::transformBy(const Transform& t) {
+    transform = transform.then(t);
+    for (auto& layer : layersBelow) {
+        auto moved = std::make_shared<Texture>(*layer);
+        moved->transformBy(t);
+        layer = std::move(moved);
+    }
+}
+
 }  // namespace frameray::scene
