@@ -126,6 +126,11 @@ struct Texture {
     // render::Tracer::shade for how povray composites them.
     std::vector<std::shared_ptr<const Texture>> layersBelow;
 
+    // What the texture lets through at world point p (shadow rays): the
+    // product of every layer's filter and transmit, black as soon as one
+    // layer is opaque.
+    RGB throughAt(const Vec3& p) const;
+
     // Puts this texture (with its own layers) under `upper`'s layers.
     void stackOn(Texture& upper) const;
 
