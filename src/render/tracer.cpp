@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/lighting.h"
 #include "render/optics.h"
@@ -104,21 +105,12 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     return atmosphere_.along(ray, hit.t, Color(color)).rgb;
 }
 
-RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
-                  RayCounts& counts) const {
-    const scene::Object& obj = *hit.object;
-    const Vec3 p = ray.at(hit.t);
-    const Vec3 viewDir = normalize(ray.direction);
-    // The hit primitive (for CSG, the child whose surface was crossed)
-    // carries its complete transform and inherited texture.
-    Vec3 n = obj.normalAt(p);
-    // Shade the side facing the viewer.
-    if (dot(n, viewDir) > 0) n = -n;
-    if (obj.texture) n = obj.texture->perturbNormal(p, n);
-
-    const scene::Texture& tex = obj.texture ? *obj.texture : defaultTexture();
+// Ambient, emission, diffuse and highlights of one texture layer whose
+// pigment at the point is `surface`, shaded with the normal n.
+RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
+                       const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
+                       RayCounts& counts) const {
     const scene::Finish& fin = tex.finish;
-    const Color surface = tex.pigment->at(tex.transform.inversePoint(p));
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
     // passes unchanged. Ambient, emission and diffuse light are scaled by
@@ -130,7 +122,6 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-    const double eps = selfHitEpsilon(p, ray);
     for (const scene::Light& light : scene_.lights) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
@@ -169,30 +160,46 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
             }
         }
     }
+    return color;
+}
 
-    const bool reflects = fin.reflection.any();
-    const bool transmits = seeThrough > 0;
-    if (!secondaryRays_ || (!reflects && !transmits)) return color;
-    // povray spawns no ray from a ray already at max_trace_level: the
-    // missing light is black.
-    if (state.level >= scene_.globals.maxTraceLevel) return color;
-
-    // The ior on this side of the surface and on the other.
-    const scene::Object& prim = obj;
-    const InteriorStack::Region region = regionOf(prim);
-    const bool leaving = state.inside.contains(region.key);
-    InteriorStack beyond = state.inside;
-    if (leaving)
-        beyond.remove(region.key);
-    else
-        beyond.push(region);
-    const double iorHere = state.inside.ior();
-    const double iorBeyond =
-        leaving ? beyond.ior() : (region.interior ? region.interior->ior : 1.0);
-    const double cosView = std::clamp(-dot(viewDir, n), 0.0, 1.0);
+RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
+                  RayCounts& counts) const {
+    const scene::Object& obj = *hit.object;
+    const Vec3 p = ray.at(hit.t);
+    const Vec3 viewDir = normalize(ray.direction);
+    // The hit primitive (for CSG, the child whose surface was crossed)
+    // carries its complete transform and inherited texture.
+    Vec3 geometric = obj.normalAt(p);
+    // Shade the side facing the viewer.
+    if (dot(geometric, viewDir) > 0) geometric = -geometric;
+    const double eps = selfHitEpsilon(p, ray);
+    const bool spawns = secondaryRays_ && state.level < scene_.globals.maxTraceLevel;
     const double adcBailout = scene_.globals.adcBailout;
 
-    auto spawnReflection = [&](const RGB& weightColor) -> RGB {
+    // The ior on this side of the surface and on the other, found only when
+    // a secondary ray needs it.
+    struct Crossing {
+        InteriorStack beyond;
+        double iorHere;
+        double iorBeyond;
+    };
+    std::optional<Crossing> crossing;
+    auto crossingInfo = [&]() -> const Crossing& {
+        if (crossing) return *crossing;
+        const InteriorStack::Region region = regionOf(obj);
+        const bool leaving = state.inside.contains(region.key);
+        Crossing c{state.inside, state.inside.ior(), 1.0};
+        if (leaving)
+            c.beyond.remove(region.key);
+        else
+            c.beyond.push(region);
+        c.iorBeyond = leaving ? c.beyond.ior() : (region.interior ? region.interior->ior : 1.0);
+        crossing = c;
+        return *crossing;
+    };
+
+    auto spawnReflection = [&](const Vec3& reflected, const RGB& weightColor) -> RGB {
         State child;
         child.level = state.level + 1;
         child.weight = state.weight * weightColor.maxComponent();
@@ -203,46 +210,81 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
         return trace({p, reflected}, eps, child, counts);
     };
 
+    // Layered textures (seed 003 5.4.5): each layer is shaded on its own;
+    // its ambient, diffuse and highlights are tinted by the filter and
+    // transmit of the layers above it, its reflection is added in full,
+    // and a fully opaque layer hides the ones below (all measured with
+    // povray 3.7). Whatever all layers let through continues the ray.
+    const scene::Texture& top = obj.texture ? *obj.texture : defaultTexture();
+    RGB color(0.0);
+    RGB through(1.0);  // what the layers evaluated so far let through
+    bool transmits = false;
     RGB reflectivity(0.0);
-    if (reflects) {
-        reflectivity = reflectance(fin.reflection, cosView, iorBeyond / iorHere, pigment);
-        if (!reflectivity.isBlack())
-            color += reflectivity *
-                     reflectionExponent(spawnReflection(reflectivity), fin.reflection.exponent);
-    }
+    Vec3 n = geometric;
+    RGB pigment(0.0);
+    const size_t layerCount = 1 + top.layersBelow.size();
+    for (size_t i = 0; i < layerCount; ++i) {
+        const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
+        const scene::Finish& fin = tex.finish;
+        n = tex.perturbNormal(p, geometric);
+        const Color surface = tex.pigment->at(tex.transform.inversePoint(p));
+        pigment = surface.rgb;
+        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, counts);
+        color += i == 0 ? local : through * local;
 
-    if (transmits) {
-        RGB through = pigment * surface.filter + RGB(surface.transmit);
-        if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
-        if (state.weight * through.maxComponent() >= adcBailout) {
-            State child;
-            child.weight = state.weight * through.maxComponent();
-            child.kind = state.kind;
-            child.inside = beyond;
-            if (iorHere == iorBeyond) {
-                // Straight on: povray continues the ray at the same trace
-                // level (measured: max_trace_level 2 sees through any
-                // number of non-refracting surfaces).
-                child.level = state.level;
-                ++counts.transmission;
-                color += through * trace({p, viewDir}, eps, child, counts);
-            } else if (const auto bent = refractedDirection(viewDir, n, iorHere / iorBeyond)) {
-                child.level = state.level + 1;
-                ++counts.refraction;
-                color += through * trace({p, *bent}, eps, child, counts);
-            } else {
-                // Total internal reflection: the ray is mirrored back
-                // inside with what the reflection term did not already
-                // take, so the surface mirrors 100 % (measured: a prism of
-                // transmit 0.5 passes 0.5 * 0.5 of the light whatever its
-                // reflection value).
-                const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
-                               std::max(0.0, 1.0 - reflectivity.g),
-                               std::max(0.0, 1.0 - reflectivity.b));
-                // The mirrored ray keeps the incoming ray's adc weight
-                // (measured: scaling it by `rest` cuts rays povray traces).
-                if (!rest.isBlack()) color += rest * spawnReflection(RGB(1.0));
+        if (spawns && fin.reflection.any()) {
+            const double cosView = std::clamp(-dot(viewDir, n), 0.0, 1.0);
+            const Crossing& c = crossingInfo();
+            reflectivity = reflectance(fin.reflection, cosView, c.iorBeyond / c.iorHere, pigment);
+            if (!reflectivity.isBlack()) {
+                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                color += reflectivity * reflectionExponent(spawnReflection(reflected, reflectivity),
+                                                           fin.reflection.exponent);
             }
+        } else {
+            reflectivity = RGB(0.0);
+        }
+
+        transmits = surface.filter + surface.transmit > 0;
+        if (!transmits) break;
+        through = through * (pigment * surface.filter + RGB(surface.transmit));
+        if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
+        if (through.isBlack() && i + 1 < layerCount) {
+            transmits = false;
+            break;
+        }
+    }
+    if (!spawns || !transmits) return color;
+    if (state.weight * through.maxComponent() < adcBailout) return color;
+
+    const Crossing& c = crossingInfo();
+    State child;
+    child.weight = state.weight * through.maxComponent();
+    child.kind = state.kind;
+    child.inside = c.beyond;
+    if (c.iorHere == c.iorBeyond) {
+        // Straight on: povray continues the ray at the same trace level
+        // (measured: max_trace_level 2 sees through any number of
+        // non-refracting surfaces).
+        child.level = state.level;
+        ++counts.transmission;
+        color += through * trace({p, viewDir}, eps, child, counts);
+    } else if (const auto bent = refractedDirection(viewDir, n, c.iorHere / c.iorBeyond)) {
+        child.level = state.level + 1;
+        ++counts.refraction;
+        color += through * trace({p, *bent}, eps, child, counts);
+    } else {
+        // Total internal reflection: the ray is mirrored back inside with
+        // what the reflection term did not already take, so the surface
+        // mirrors 100 % (measured: a prism of transmit 0.5 passes 0.5 * 0.5
+        // of the light whatever its reflection value).
+        const RGB rest(std::max(0.0, 1.0 - reflectivity.r), std::max(0.0, 1.0 - reflectivity.g),
+                       std::max(0.0, 1.0 - reflectivity.b));
+        // The mirrored ray keeps the incoming ray's adc weight (measured:
+        // scaling it by `rest` cuts rays povray traces).
+        if (!rest.isBlack()) {
+            const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+            color += rest * spawnReflection(reflected, RGB(1.0));
         }
     }
     return color;

@@ -76,6 +76,9 @@ class Tracer {
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
     RGB shade(const scene::Ray& ray, const Hit& hit, const State& state, RayCounts& counts) const;
+    RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
+                   const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
+                   RayCounts& counts) const;
 
     const World& world_;
     const scene::Scene& scene_;

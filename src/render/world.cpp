@@ -189,11 +189,10 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
     while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
         const scene::Object& obj = *hit.object;
         if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
-        const scene::Texture& tex = *obj.texture;
         const Vec3 p = ray.at(hit.t);
-        const Color c = tex.pigment->at(tex.transform.inversePoint(p));
-        if (c.filter == 0 && c.transmit == 0) return RGB(0.0);
-        passed *= c.rgb * c.filter + RGB(c.transmit);
+        const RGB through = obj.texture->throughAt(p);
+        if (through.isBlack()) return RGB(0.0);
+        passed *= through;
         if (passed.isBlack()) return passed;
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);

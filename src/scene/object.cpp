@@ -73,7 +73,7 @@ void Object::transformBy(const Transform& t) {
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
     if (texture) {
         auto moved = std::make_shared<Texture>(*texture);
-        moved->transform = moved->transform.then(t);
+        moved->transformBy(t);
         texture = moved;
     }
 }

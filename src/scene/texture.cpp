@@ -83,4 +83,33 @@ Color Pigment::at(const Vec3& point) const {
     return color_;
 }
 
+RGB Texture::throughAt(const Vec3& p) const {
+    RGB passed(1.0);
+    const std::size_t layerCount = 1 + layersBelow.size();
+    for (std::size_t i = 0; i < layerCount; ++i) {
+        const Texture& layer = i == 0 ? *this : *layersBelow[i - 1];
+        const Color c = layer.pigment->at(layer.transform.inversePoint(p));
+        if (c.filter == 0 && c.transmit == 0) return RGB(0.0);
+        passed *= c.rgb * c.filter + RGB(c.transmit);
+    }
+    return passed;
+}
+
+void Texture::stackOn(Texture& upper) const {
+    // Layers are kept flat: this texture without its layers, then its layers.
+    Texture alone = *this;
+    alone.layersBelow.clear();
+    upper.layersBelow.push_back(std::make_shared<const Texture>(std::move(alone)));
+    upper.layersBelow.insert(upper.layersBelow.end(), layersBelow.begin(), layersBelow.end());
+}
+
+void Texture::transformBy(const Transform& t) {
+    transform = transform.then(t);
+    for (auto& layer : layersBelow) {
+        auto moved = std::make_shared<Texture>(*layer);
+        moved->transformBy(t);
+        layer = std::move(moved);
+    }
+}
+
 }  // namespace frameray::scene

@@ -121,6 +121,23 @@ struct Texture {
     // it with the object (seed 003 B.3).
     Transform transform;
 
+    // Layered texture (seed 003 5.4.5): the layers under this one, the
+    // nearest first. Each is a complete texture of its own; see
+    // render::Tracer::shade for how povray composites them.
+    std::vector<std::shared_ptr<const Texture>> layersBelow;
+
+    // What the texture lets through at world point p (shadow rays): the
+    // product of every layer's filter and transmit, black as soon as one
+    // layer is opaque.
+    RGB throughAt(const Vec3& p) const;
+
+    // Puts this texture (with its own layers) under `upper`'s layers.
+    void stackOn(Texture& upper) const;
+
+    // Moves the texture, every layer with it, by t (a transformation given
+    // after the texture in an object).
+    void transformBy(const Transform& t);
+
     // Normal perturbation (normals.h); none when null.
     std::shared_ptr<const Normal> normal;
     // The shading normal at world point p after the texture's normal, for a

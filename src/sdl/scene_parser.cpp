@@ -264,7 +264,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
 void Interpreter::addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const {
     obj.transformBy(t);
     // A transformation after the texture moves the texture too (seed 003 B.3).
-    if (texture) texture->transform = texture->transform.then(t);
+    if (texture) texture->transformBy(t);
 }
 
 std::vector<scene::ObjectRef> Interpreter::parseObjectList(const Token& modifier, Keyword alternative,
@@ -314,6 +314,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_texture: {
             scene::Texture& tx = editTexture();
             tx = *parseTexture(&tx);
+            // Further texture blocks right after it lie on top of it: a
+            // layered texture (seed 003 5.4.5).
+            while (peek().is(Keyword::kw_texture)) {
+                scene::Texture upper = *parseTexture(nullptr);
+                tx.stackOn(upper);
+                tx = std::move(upper);
+            }
             return true;
         }
         case Keyword::kw_interior: obj.interior = parseInterior(obj.interior.get()); return true;
