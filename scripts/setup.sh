@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-    cmake g++ make
+    cmake g++ make ccache
     libembree-dev libtbb-dev
     libopenimageio-dev openimageio-tools libopenexr-dev
     libspdlog-dev libfmt-dev libfreetype-dev
