@@ -1,9 +1,9 @@
 #include "sdl/lexer.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cstdlib>
-
-#include <fmt/format.h>
 
 #include "sdl/diagnostics.h"
 
@@ -11,22 +11,32 @@ namespace frameray::sdl {
 
 std::string describeToken(const Token& t) {
     switch (t.kind) {
-        case TokenKind::End: return "end of file";
-        case TokenKind::Number: return fmt::format("number {}", t.number);
-        case TokenKind::String: return fmt::format("string \"{}\"", t.text);
+        case TokenKind::End:
+            return "end of file";
+        case TokenKind::Number:
+            return fmt::format("number {}", t.number);
+        case TokenKind::String:
+            return fmt::format("string \"{}\"", t.text);
         case TokenKind::Word:
             return t.kw == Keyword::None ? fmt::format("identifier '{}'", t.text)
                                          : fmt::format("keyword '{}'", t.text);
-        case TokenKind::Symbol: return fmt::format("'{}'", t.text);
+        case TokenKind::Symbol:
+            return fmt::format("'{}'", t.text);
     }
     return "token";
 }
 
 namespace {
 
-bool isIdentStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool isIdentChar(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isIdentStart(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool isIdentChar(char c) {
+    return isIdentStart(c) || (c >= '0' && c <= '9');
+}
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
 
 void appendUtf8(std::string& out, uint32_t cp) {
     if (cp < 0x80) {
@@ -47,18 +57,19 @@ struct SymbolSpelling {
     Sym sym;
 };
 constexpr SymbolSpelling kSymbols[] = {
-    {"<=", Sym::LessEq}, {">=", Sym::GreaterEq}, {"!=", Sym::NotEq},  {"{", Sym::LBrace},
-    {"}", Sym::RBrace},  {"(", Sym::LParen},     {")", Sym::RParen},  {"<", Sym::Less},
-    {">", Sym::Greater}, {"[", Sym::LBracket},   {"]", Sym::RBracket}, {",", Sym::Comma},
-    {";", Sym::Semicolon}, {".", Sym::Dot},      {"+", Sym::Plus},    {"-", Sym::Minus},
-    {"*", Sym::Star},    {"/", Sym::Slash},      {"=", Sym::Equal},   {"!", Sym::Bang},
-    {"?", Sym::Question}, {":", Sym::Colon},     {"&", Sym::Amp},     {"|", Sym::Bar},
+    {"<=", Sym::LessEq},   {">=", Sym::GreaterEq}, {"!=", Sym::NotEq},   {"{", Sym::LBrace},
+    {"}", Sym::RBrace},    {"(", Sym::LParen},     {")", Sym::RParen},   {"<", Sym::Less},
+    {">", Sym::Greater},   {"[", Sym::LBracket},   {"]", Sym::RBracket}, {",", Sym::Comma},
+    {";", Sym::Semicolon}, {".", Sym::Dot},        {"+", Sym::Plus},     {"-", Sym::Minus},
+    {"*", Sym::Star},      {"/", Sym::Slash},      {"=", Sym::Equal},    {"!", Sym::Bang},
+    {"?", Sym::Question},  {":", Sym::Colon},      {"&", Sym::Amp},      {"|", Sym::Bar},
     {"#", Sym::Hash},
 };
 
 class Lexer {
-public:
-    explicit Lexer(std::shared_ptr<const SourceFile> source) : out_(std::make_shared<TokenizedFile>()) {
+  public:
+    explicit Lexer(std::shared_ptr<const SourceFile> source)
+        : out_(std::make_shared<TokenizedFile>()) {
         out_->source = std::move(source);
         text_ = out_->source->text();
     }
@@ -66,6 +77,11 @@ public:
     std::shared_ptr<const TokenizedFile> run() {
         // A UTF-8 byte order mark at the very start is not part of the scene.
         if (text_.substr(0, 3) == "\xEF\xBB\xBF") advance(3);
+        // Big data files (exported meshes) hold about one token per 3-4
+        // bytes (a minus sign is a token of its own). Reserving for one per 2
+        // avoids re-copying a vector of hundreds of MB while it grows; pages
+        // never written cost nothing.
+        out_->tokens.reserve(text_.size() / 2 + 16);
         for (;;) {
             skipSpaceAndComments();
             Token t;
@@ -82,7 +98,7 @@ public:
         return out_;
     }
 
-private:
+  private:
     [[noreturn]] void fail(uint32_t line, uint32_t column, const std::string& message) {
         throw SdlError({out_->source.get(), line, column}, message);
     }
@@ -124,7 +140,8 @@ private:
         const uint32_t line = line_, column = column_;
         int depth = 0;
         do {
-            if (pos_ >= text_.size()) fail(line, column, "unterminated comment: '/*' has no matching '*/'");
+            if (pos_ >= text_.size())
+                fail(line, column, "unterminated comment: '/*' has no matching '*/'");
             if (peek() == '/' && peek(1) == '*') {
                 ++depth;
                 advance(2);
@@ -159,10 +176,11 @@ private:
                     return;
                 }
             }
-            fail(t.line, t.column, fmt::format("unexpected character '{}'",
-                                               std::isprint(static_cast<unsigned char>(c))
-                                                   ? std::string(1, c)
-                                                   : fmt::format("\\x{:02x}", static_cast<unsigned char>(c))));
+            fail(t.line, t.column,
+                 fmt::format("unexpected character '{}'",
+                             std::isprint(static_cast<unsigned char>(c))
+                                 ? std::string(1, c)
+                                 : fmt::format("\\x{:02x}", static_cast<unsigned char>(c))));
         }
     }
 
@@ -180,8 +198,7 @@ private:
         }
         t.kind = TokenKind::Number;
         t.text = std::string_view(text_).substr(begin, pos_ - begin);
-        // strtod on a bounded copy: from_chars for double is not in every libstdc++.
-        t.number = std::strtod(std::string(t.text).c_str(), nullptr);
+        std::from_chars(t.text.data(), t.text.data() + t.text.size(), t.number);
     }
 
     void lexString(Token& t) {
@@ -204,22 +221,44 @@ private:
             const char e = peek(1);
             advance(2);
             switch (e) {
-                case 'a': value += '\a'; break;
-                case 'b': value += '\b'; break;
-                case 'f': value += '\f'; break;
-                case 'n': value += '\n'; break;
-                case 'r': value += '\r'; break;
-                case 't': value += '\t'; break;
-                case 'v': value += '\v'; break;
-                case '0': value += '\0'; break;
-                case '\\': value += '\\'; break;
-                case '\'': value += '\''; break;
-                case '"': value += '"'; break;
+                case 'a':
+                    value += '\a';
+                    break;
+                case 'b':
+                    value += '\b';
+                    break;
+                case 'f':
+                    value += '\f';
+                    break;
+                case 'n':
+                    value += '\n';
+                    break;
+                case 'r':
+                    value += '\r';
+                    break;
+                case 't':
+                    value += '\t';
+                    break;
+                case 'v':
+                    value += '\v';
+                    break;
+                case '0':
+                    value += '\0';
+                    break;
+                case '\\':
+                    value += '\\';
+                    break;
+                case '\'':
+                    value += '\'';
+                    break;
+                case '"':
+                    value += '"';
+                    break;
                 case 'u': {
                     uint32_t cp = 0;
                     for (int i = 0; i < 4; ++i) {
                         const char h = peek();
-                        int d = isDigit(h) ? h - '0'
+                        int d = isDigit(h)               ? h - '0'
                                 : (h >= 'a' && h <= 'f') ? h - 'a' + 10
                                 : (h >= 'A' && h <= 'F') ? h - 'A' + 10
                                                          : -1;

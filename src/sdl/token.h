@@ -11,6 +11,7 @@
 
 #include "sdl/keywords.h"
 #include "sdl/source.h"
+#include "util/huge_page_allocator.h"
 
 namespace frameray::sdl {
 
@@ -18,18 +19,40 @@ enum class TokenKind : uint8_t { Word, Number, String, Symbol, End };
 
 enum class Sym : uint8_t {
     None,
-    LBrace, RBrace, LParen, RParen, Less, Greater, LBracket, RBracket,
-    Comma, Semicolon, Dot, Plus, Minus, Star, Slash, Equal, Bang, Question,
-    Colon, Amp, Bar, Hash, LessEq, GreaterEq, NotEq,
+    LBrace,
+    RBrace,
+    LParen,
+    RParen,
+    Less,
+    Greater,
+    LBracket,
+    RBracket,
+    Comma,
+    Semicolon,
+    Dot,
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    Equal,
+    Bang,
+    Question,
+    Colon,
+    Amp,
+    Bar,
+    Hash,
+    LessEq,
+    GreaterEq,
+    NotEq,
 };
 
 struct Token {
     TokenKind kind = TokenKind::End;
-    Sym sym = Sym::None;           // for Symbol
-    Keyword kw = Keyword::None;    // for Word: the reserved word, or None for an identifier
+    Sym sym = Sym::None;         // for Symbol
+    Keyword kw = Keyword::None;  // for Word: the reserved word, or None for an identifier
     uint32_t line = 0, column = 0;
-    std::string_view text;         // Word spelling, String contents (escapes decoded)
-    double number = 0;             // for Number
+    std::string_view text;  // Word spelling, String contents (escapes decoded)
+    double number = 0;      // for Number
 
     bool is(Sym s) const { return kind == TokenKind::Symbol && sym == s; }
     bool is(Keyword k) const { return kind == TokenKind::Word && kw == k; }
@@ -39,7 +62,7 @@ struct Token {
 // One lexed file: its source and its tokens, ending with an End token.
 struct TokenizedFile {
     std::shared_ptr<const SourceFile> source;
-    std::vector<Token> tokens;
+    std::vector<Token, HugePageAllocator<Token>> tokens;
     std::deque<std::string> decodedStrings;  // storage for String token text
 
     SourceLoc locOf(const Token& t) const { return {source.get(), t.line, t.column}; }
