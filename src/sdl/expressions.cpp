@@ -1,12 +1,12 @@
 // Expressions of the scene language: floats, vectors (2-5 components),
 // colours and strings, with the seed's precedence and promotion rules.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
+#include <ctime>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "sdl/float_functions.h"
 #include "sdl/interpreter.h"
@@ -17,7 +17,9 @@ namespace {
 
 constexpr double kEpsilon = 1e-10;
 
-bool isTrue(double v) { return std::fabs(v) > kEpsilon; }
+bool isTrue(double v) {
+    return std::fabs(v) > kEpsilon;
+}
 
 // Brings two operands to a common shape: floats promote to every
 // component, shorter vectors to longer ones with zeros (seed 004).
@@ -59,12 +61,18 @@ bool isNumeric(const Value& v) {
 // The component keywords of a colour and their slot.
 int colorComponent(Keyword k) {
     switch (k) {
-        case Keyword::kw_red: return 0;
-        case Keyword::kw_green: return 1;
-        case Keyword::kw_blue: return 2;
-        case Keyword::kw_filter: return 3;
-        case Keyword::kw_transmit: return 4;
-        default: return -1;
+        case Keyword::kw_red:
+            return 0;
+        case Keyword::kw_green:
+            return 1;
+        case Keyword::kw_blue:
+            return 2;
+        case Keyword::kw_filter:
+            return 3;
+        case Keyword::kw_transmit:
+            return 4;
+        default:
+            return -1;
     }
 }
 
@@ -86,7 +94,13 @@ VectorValue Interpreter::toVector(const Value& v, const Token& at, int size) {
     return promote(v, size);
 }
 
-Value Interpreter::parseExpression() { return parseTernary(false); }
+// povray parses comparisons, '&', '|' and '? :' only inside parentheses
+// (measured: `#declare F = 1 < 2;` is an error, `(1 < 2)` is 1). At the top
+// of an expression, in vector components and in arguments, '<' therefore
+// starts the next vector: `box { <0,0,0> <1,1,1> }` needs no comma.
+Value Interpreter::parseExpression() {
+    return parseAdditive();
+}
 
 double Interpreter::parseFloat() {
     const Token at = peek();
@@ -98,20 +112,23 @@ VectorValue Interpreter::parseVector() {
     return toVector(parseExpression(), at, 3);
 }
 
-Vec3 Interpreter::parseVec3() { return parseVector().xyz(); }
+Vec3 Interpreter::parseVec3() {
+    return parseVector().xyz();
+}
 
 bool Interpreter::startsStringExpression(const Token& t) {
     static constexpr Keyword kStringFunctions[] = {
-        Keyword::kw_concat, Keyword::kw_str,    Keyword::kw_chr,      Keyword::kw_substr,
-        Keyword::kw_strupr, Keyword::kw_strlwr, Keyword::kw_vstr,     Keyword::kw_datetime,
-        Keyword::kw_input_file_name};
+        Keyword::kw_concat, Keyword::kw_str,      Keyword::kw_chr,
+        Keyword::kw_substr, Keyword::kw_strupr,   Keyword::kw_strlwr,
+        Keyword::kw_vstr,   Keyword::kw_datetime, Keyword::kw_input_file_name};
     if (t.kind == TokenKind::String) return true;
     if (t.isIdentifier()) {
         const Value* v = lookup(t.text);
         return v && std::holds_alternative<std::string>(*v);
     }
     return t.kind == TokenKind::Word &&
-           std::find(std::begin(kStringFunctions), std::end(kStringFunctions), t.kw) != std::end(kStringFunctions);
+           std::find(std::begin(kStringFunctions), std::end(kStringFunctions), t.kw) !=
+               std::end(kStringFunctions);
 }
 
 std::string Interpreter::parseString() {
@@ -119,7 +136,7 @@ std::string Interpreter::parseString() {
     // A string expression has no operators, so nothing after it is looked
     // at: `#include "x.inc"` runs before whatever the next line holds.
     if (startsStringExpression(at)) {
-        Value v = parsePrimary(false);
+        Value v = parsePrimary();
         if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);
         fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
     }
@@ -152,51 +169,62 @@ Color Interpreter::parseColor() {
     return c.color();
 }
 
-Value Interpreter::parseTernary(bool inVector) {
+Value Interpreter::parseTernary() {
     const Token at = peek();
-    Value cond = parseLogical(inVector);
+    Value cond = parseLogical();
     if (!peek().is(Sym::Question)) return cond;
     next();
     const bool truth = isTrue(toFloat(cond, at));
-    Value a = parseTernary(inVector);
+    Value a = parseTernary();
     expect(Sym::Colon, "':' of the conditional expression");
-    Value b = parseTernary(inVector);
+    Value b = parseTernary();
     return truth ? a : b;
 }
 
-Value Interpreter::parseLogical(bool inVector) {
-    Value left = parseRelational(inVector);
+Value Interpreter::parseLogical() {
+    Value left = parseRelational();
     for (;;) {
         const Token op = peek();
         if (!op.is(Sym::Amp) && !op.is(Sym::Bar)) return left;
         next();
-        const Value right = parseRelational(inVector);
+        const Value right = parseRelational();
         const bool a = isTrue(toFloat(left, op)), b = isTrue(toFloat(right, op));
         left = op.is(Sym::Amp) ? double(a && b) : double(a || b);
     }
 }
 
-Value Interpreter::parseRelational(bool inVector) {
-    Value left = parseAdditive(inVector);
+Value Interpreter::parseRelational() {
+    Value left = parseAdditive();
     for (;;) {
         const Token op = peek();
-        // Inside <...> a '>' closes the vector instead of comparing.
         const bool relational = op.is(Sym::Less) || op.is(Sym::LessEq) || op.is(Sym::Equal) ||
-                                op.is(Sym::NotEq) || op.is(Sym::GreaterEq) ||
-                                (op.is(Sym::Greater) && !inVector);
+                                op.is(Sym::NotEq) || op.is(Sym::GreaterEq) || op.is(Sym::Greater);
         if (!relational) return left;
         next();
-        const Value right = parseAdditive(inVector);
-        if (std::holds_alternative<std::string>(left) && std::holds_alternative<std::string>(right)) {
+        const Value right = parseAdditive();
+        if (std::holds_alternative<std::string>(left) &&
+            std::holds_alternative<std::string>(right)) {
             const int c = std::get<std::string>(left).compare(std::get<std::string>(right));
             bool r = false;
             switch (op.sym) {
-                case Sym::Less: r = c < 0; break;
-                case Sym::LessEq: r = c <= 0; break;
-                case Sym::Equal: r = c == 0; break;
-                case Sym::NotEq: r = c != 0; break;
-                case Sym::GreaterEq: r = c >= 0; break;
-                default: r = c > 0; break;
+                case Sym::Less:
+                    r = c < 0;
+                    break;
+                case Sym::LessEq:
+                    r = c <= 0;
+                    break;
+                case Sym::Equal:
+                    r = c == 0;
+                    break;
+                case Sym::NotEq:
+                    r = c != 0;
+                    break;
+                case Sym::GreaterEq:
+                    r = c >= 0;
+                    break;
+                default:
+                    r = c > 0;
+                    break;
             }
             left = double(r);
             continue;
@@ -206,24 +234,30 @@ Value Interpreter::parseRelational(bool inVector) {
         left = combine(left, right, [&](double a, double b) {
             switch (op.sym) {
                 // As povray 3.7: '=' '!=' '<=' '>=' allow 1e-10, '<' '>' are exact.
-                case Sym::Less: return double(a < b);
-                case Sym::LessEq: return double(a <= b + kEpsilon);
-                case Sym::Equal: return double(std::fabs(a - b) <= kEpsilon);
-                case Sym::NotEq: return double(std::fabs(a - b) > kEpsilon);
-                case Sym::GreaterEq: return double(a >= b - kEpsilon);
-                default: return double(a > b);
+                case Sym::Less:
+                    return double(a < b);
+                case Sym::LessEq:
+                    return double(a <= b + kEpsilon);
+                case Sym::Equal:
+                    return double(std::fabs(a - b) <= kEpsilon);
+                case Sym::NotEq:
+                    return double(std::fabs(a - b) > kEpsilon);
+                case Sym::GreaterEq:
+                    return double(a >= b - kEpsilon);
+                default:
+                    return double(a > b);
             }
         });
     }
 }
 
-Value Interpreter::parseAdditive(bool inVector) {
-    Value left = parseMultiplicative(inVector);
+Value Interpreter::parseAdditive() {
+    Value left = parseMultiplicative();
     for (;;) {
         const Token op = peek();
         if (!op.is(Sym::Plus) && !op.is(Sym::Minus)) return left;
         next();
-        const Value right = parseMultiplicative(inVector);
+        const Value right = parseMultiplicative();
         if (!isNumeric(left) || !isNumeric(right))
             fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
                                  valueKindName(right)));
@@ -232,59 +266,79 @@ Value Interpreter::parseAdditive(bool inVector) {
     }
 }
 
-Value Interpreter::parseMultiplicative(bool inVector) {
-    Value left = parseUnary(inVector);
+Value Interpreter::parseMultiplicative() {
+    Value left = parseUnary();
     for (;;) {
         const Token op = peek();
         if (!op.is(Sym::Star) && !op.is(Sym::Slash)) return left;
         next();
-        const Value right = parseUnary(inVector);
+        const Value right = parseUnary();
         if (!isNumeric(left) || !isNumeric(right))
             fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
                                  valueKindName(right)));
         // Division by zero gives POV-Ray's huge value rather than inf.
-        left = op.is(Sym::Star) ? combine(left, right, std::multiplies<double>())
-                                : combine(left, right, [](double a, double b) {
-                                      return b == 0 ? (a == 0 ? 0.0 : std::copysign(1e10, a)) : a / b;
-                                  });
+        left = op.is(Sym::Star)
+                   ? combine(left, right, std::multiplies<double>())
+                   : combine(left, right, [](double a, double b) {
+                         return b == 0 ? (a == 0 ? 0.0 : std::copysign(1e10, a)) : a / b;
+                     });
     }
 }
 
-Value Interpreter::parseUnary(bool inVector) {
+Value Interpreter::parseUnary() {
     const Token op = peek();
     if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
         next();
-        const Value v = parseUnary(inVector);
-        if (!isNumeric(v)) fail(op, fmt::format("cannot apply '{}' to a {}", op.text, valueKindName(v)));
+        const Value v = parseUnary();
+        if (!isNumeric(v))
+            fail(op, fmt::format("cannot apply '{}' to a {}", op.text, valueKindName(v)));
         if (op.is(Sym::Plus)) return v;
         if (op.is(Sym::Minus)) return combine(v, 0.0, [](double a, double) { return -a; });
         return combine(v, 0.0, [](double a, double) { return double(!isTrue(a)); });
     }
-    return parsePostfix(inVector);
+    return parsePostfix();
 }
 
-Value Interpreter::parsePostfix(bool inVector) {
-    Value v = parsePrimary(inVector);
+Value Interpreter::parsePostfix() {
+    Value v = parsePrimary();
     while (peek().is(Sym::Dot)) {
         const Token dot = next();
         const Token item = next();
         if (!std::holds_alternative<VectorValue>(v))
-            fail(dot, fmt::format("'.{}' needs a vector or color, not a {}", item.text, valueKindName(v)));
+            fail(dot, fmt::format("'.{}' needs a vector or color, not a {}", item.text,
+                                  valueKindName(v)));
         const VectorValue& vec = std::get<VectorValue>(v);
         int slot = -1;
         switch (item.kw) {
-            case Keyword::kw_x: case Keyword::kw_u: case Keyword::kw_red: slot = 0; break;
-            case Keyword::kw_y: case Keyword::kw_v: case Keyword::kw_green: slot = 1; break;
-            case Keyword::kw_z: case Keyword::kw_blue: slot = 2; break;
-            case Keyword::kw_t: case Keyword::kw_filter: slot = 3; break;
-            case Keyword::kw_transmit: slot = 4; break;
+            case Keyword::kw_x:
+            case Keyword::kw_u:
+            case Keyword::kw_red:
+                slot = 0;
+                break;
+            case Keyword::kw_y:
+            case Keyword::kw_v:
+            case Keyword::kw_green:
+                slot = 1;
+                break;
+            case Keyword::kw_z:
+            case Keyword::kw_blue:
+                slot = 2;
+                break;
+            case Keyword::kw_t:
+            case Keyword::kw_filter:
+                slot = 3;
+                break;
+            case Keyword::kw_transmit:
+                slot = 4;
+                break;
             case Keyword::kw_gray: {
                 // Luminance weights POV-Ray uses for .gray.
                 VectorValue c = promote(v, 5);
                 v = c.v[0] * 0.297 + c.v[1] * 0.589 + c.v[2] * 0.114;
                 continue;
             }
-            default: fail(item, fmt::format("'{}' is not a vector component", item.text));
+            default:
+                fail(item, fmt::format("'{}' is not a vector component", item.text));
         }
         // Colours always carry all five components.
         const int size = vec.isColor ? 5 : vec.size;
@@ -301,7 +355,7 @@ Value Interpreter::parseVectorLiteral() {
     int n = 0;
     do {
         const Token at = peek();
-        const double c = toFloat(parseTernary(true), at);
+        const double c = toFloat(parseAdditive(), at);
         if (n >= 5) fail(at, "a vector has at most 5 components");
         out.v[n++] = c;
         // povray accepts a comma before the closing '>' (<0.2,0.1,0.5,> in
@@ -318,19 +372,26 @@ Value Interpreter::parseColorKeywords(const Token& first) {
     c.size = 5;
     c.isColor = true;
     switch (first.kw) {
-        case Keyword::kw_rgb: case Keyword::kw_rgbf: case Keyword::kw_rgbt: case Keyword::kw_rgbft:
-        case Keyword::kw_srgb: case Keyword::kw_srgbf: case Keyword::kw_srgbt: case Keyword::kw_srgbft: {
+        case Keyword::kw_rgb:
+        case Keyword::kw_rgbf:
+        case Keyword::kw_rgbt:
+        case Keyword::kw_rgbft:
+        case Keyword::kw_srgb:
+        case Keyword::kw_srgbf:
+        case Keyword::kw_srgbt:
+        case Keyword::kw_srgbft: {
             const std::string_view name = first.text;
             const bool srgb = name.starts_with("srgb");
             const std::string_view suffix = name.substr(srgb ? 4 : 3);
             const int size = 3 + static_cast<int>(suffix.size());
             const Token at = peek();
-            const Value v = parseAdditive(false);
+            const Value v = parseAdditive();
             const VectorValue vec = toVector(v, at, size);
             // sRGB values convert to the working gamma, which must be known
             // by then (povray 3.7 stops the parse otherwise).
             if (srgb && !scene_.globals.assumedGammaSet)
-                fail(first, "cannot use sRGB colors before assumed_gamma has been set in global_settings");
+                fail(first,
+                     "cannot use sRGB colors before assumed_gamma has been set in global_settings");
             const double gamma = scene_.globals.assumedGamma;
             for (int i = 0; i < 3; ++i) {
                 c.v[i] = vec.v[i];
@@ -341,7 +402,10 @@ Value Interpreter::parseColorKeywords(const Token& first) {
             }
             if (suffix == "f") c.v[3] = vec.v[3];
             if (suffix == "t") c.v[4] = vec.v[3];
-            if (suffix == "ft") { c.v[3] = vec.v[3]; c.v[4] = vec.v[4]; }
+            if (suffix == "ft") {
+                c.v[3] = vec.v[3];
+                c.v[4] = vec.v[4];
+            }
             break;
         }
         default: {
@@ -376,7 +440,8 @@ Value Interpreter::identifierValue(const Token& name, const Value* known) {
         const size_t index = parseArrayIndex(*array, name);
         out = array->elements[index];
         if (std::holds_alternative<std::monostate>(out))
-            fail(name, fmt::format("element {} of array '{}' used before it was set", index, name.text));
+            fail(name,
+                 fmt::format("element {} of array '{}' used before it was set", index, name.text));
     }
     if (const auto* spline = std::get_if<SplinePtr>(&out); spline && peek().is(Sym::LParen)) {
         const SplinePtr keep = *spline;
@@ -399,9 +464,14 @@ Value Interpreter::identifierValue(const Token& name, const Value* known) {
 std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Token& fn) {
     expectAfter(Sym::LParen, "'('", fn.text);
     std::vector<Value> args;
+    // A function of exactly one argument reads its parentheses as the
+    // argument's own, so comparisons and '? :' work there as in any
+    // parenthesised expression (povray: abs(1 < 2) is 1, pow(1 < 2, 2) an
+    // error).
+    const bool single = min == 1 && max == 1;
     if (!peek().is(Sym::RParen)) {
         do {
-            args.push_back(parseExpression());
+            args.push_back(single ? parseTernary() : parseExpression());
         } while (accept(Sym::Comma));
     }
     expect(Sym::RParen, "')'");
@@ -413,24 +483,29 @@ std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Tok
     return args;
 }
 
-Value Interpreter::parsePrimary(bool inVector) {
+Value Interpreter::parsePrimary() {
     const Token t = peek();
     switch (t.kind) {
-        case TokenKind::Number: next(); return t.number;
-        case TokenKind::String: next(); return std::string(t.text);
-        case TokenKind::End: fail(t, "unexpected end of file in an expression");
+        case TokenKind::Number:
+            next();
+            return t.number;
+        case TokenKind::String:
+            next();
+            return std::string(t.text);
+        case TokenKind::End:
+            fail(t, "unexpected end of file in an expression");
         case TokenKind::Symbol:
             if (t.is(Sym::LParen)) {
                 next();
-                Value v = parseTernary(false);
+                Value v = parseTernary();
                 expect(Sym::RParen, "')'");
                 return v;
             }
             if (t.is(Sym::Less)) return parseVectorLiteral();
             fail(t, fmt::format("expected an expression, found {}", describeToken(t)));
-        case TokenKind::Word: break;
+        case TokenKind::Word:
+            break;
     }
-    (void)inVector;
     if (t.kw == Keyword::None) {
         // peek() just looked this identifier up; nothing ran since.
         const Value* known = peekCache_.identifier;
@@ -439,53 +514,110 @@ Value Interpreter::parsePrimary(bool inVector) {
     }
     auto vec3 = [](double a, double b, double c) { return VectorValue{{a, b, c, 0, 0}, 3, false}; };
     switch (t.kw) {
-        case Keyword::kw_pi: next(); return std::numbers::pi;
-        case Keyword::kw_true: case Keyword::kw_yes: case Keyword::kw_on: next(); return 1.0;
-        case Keyword::kw_false: case Keyword::kw_no: case Keyword::kw_off: next(); return 0.0;
-        case Keyword::kw_x: next(); return vec3(1, 0, 0);
-        case Keyword::kw_y: next(); return vec3(0, 1, 0);
-        case Keyword::kw_z: next(); return vec3(0, 0, 1);
-        case Keyword::kw_t: next(); return VectorValue{{0, 0, 0, 1, 0}, 4, false};
-        case Keyword::kw_u: next(); return VectorValue{{1, 0, 0, 0, 0}, 2, false};
-        case Keyword::kw_v: next(); return VectorValue{{0, 1, 0, 0, 0}, 2, false};
-        case Keyword::kw_clock: next(); return frame_.clock;
-        case Keyword::kw_clock_delta: next(); return frame_.clockDelta;
-        case Keyword::kw_clock_on: next(); return double(frame_.clockOn);
-        case Keyword::kw_frame_number: next(); return double(frame_.frameNumber);
-        case Keyword::kw_initial_clock: next(); return frame_.initialClock;
-        case Keyword::kw_final_clock: next(); return frame_.finalClock;
-        case Keyword::kw_initial_frame: next(); return double(frame_.initialFrame);
-        case Keyword::kw_final_frame: next(); return double(frame_.finalFrame);
-        case Keyword::kw_image_width: next(); return double(frame_.imageWidth);
-        case Keyword::kw_image_height: next(); return double(frame_.imageHeight);
-        case Keyword::kw_version: next(); return version_;
-        case Keyword::kw_input_file_name: next(); return inputFileName_;
+        case Keyword::kw_pi:
+            next();
+            return std::numbers::pi;
+        case Keyword::kw_true:
+        case Keyword::kw_yes:
+        case Keyword::kw_on:
+            next();
+            return 1.0;
+        case Keyword::kw_false:
+        case Keyword::kw_no:
+        case Keyword::kw_off:
+            next();
+            return 0.0;
+        case Keyword::kw_x:
+            next();
+            return vec3(1, 0, 0);
+        case Keyword::kw_y:
+            next();
+            return vec3(0, 1, 0);
+        case Keyword::kw_z:
+            next();
+            return vec3(0, 0, 1);
+        case Keyword::kw_t:
+            next();
+            return VectorValue{{0, 0, 0, 1, 0}, 4, false};
+        case Keyword::kw_u:
+            next();
+            return VectorValue{{1, 0, 0, 0, 0}, 2, false};
+        case Keyword::kw_v:
+            next();
+            return VectorValue{{0, 1, 0, 0, 0}, 2, false};
+        case Keyword::kw_clock:
+            next();
+            return frame_.clock;
+        case Keyword::kw_clock_delta:
+            next();
+            return frame_.clockDelta;
+        case Keyword::kw_clock_on:
+            next();
+            return double(frame_.clockOn);
+        case Keyword::kw_frame_number:
+            next();
+            return double(frame_.frameNumber);
+        case Keyword::kw_initial_clock:
+            next();
+            return frame_.initialClock;
+        case Keyword::kw_final_clock:
+            next();
+            return frame_.finalClock;
+        case Keyword::kw_initial_frame:
+            next();
+            return double(frame_.initialFrame);
+        case Keyword::kw_final_frame:
+            next();
+            return double(frame_.finalFrame);
+        case Keyword::kw_image_width:
+            next();
+            return double(frame_.imageWidth);
+        case Keyword::kw_image_height:
+            next();
+            return double(frame_.imageHeight);
+        case Keyword::kw_version:
+            next();
+            return version_;
+        case Keyword::kw_input_file_name:
+            next();
+            return inputFileName_;
         case Keyword::kw_now: {
             // Days since 2000-01-01 00:00 UTC, as povray's `now`.
             next();
             const auto since = std::chrono::system_clock::now().time_since_epoch();
             return std::chrono::duration<double>(since).count() / 86400.0 - 10957.0;
         }
-        case Keyword::kw_color: case Keyword::kw_colour: {
+        case Keyword::kw_color:
+        case Keyword::kw_colour: {
             next();
             if (colorComponent(peek().kw) >= 0 && peek().kind == TokenKind::Word) {
                 const Token first = next();
                 return parseColorKeywords(first);
             }
             const Token at = peek();
-            Value v = parseAdditive(inVector);
+            Value v = parseAdditive();
             VectorValue c = toVector(v, at, 5);
             c.isColor = true;
             return c;
         }
-        case Keyword::kw_rgb: case Keyword::kw_rgbf: case Keyword::kw_rgbt: case Keyword::kw_rgbft:
-        case Keyword::kw_srgb: case Keyword::kw_srgbf: case Keyword::kw_srgbt: case Keyword::kw_srgbft:
-        case Keyword::kw_red: case Keyword::kw_green: case Keyword::kw_blue:
-        case Keyword::kw_filter: case Keyword::kw_transmit: {
+        case Keyword::kw_rgb:
+        case Keyword::kw_rgbf:
+        case Keyword::kw_rgbt:
+        case Keyword::kw_rgbft:
+        case Keyword::kw_srgb:
+        case Keyword::kw_srgbf:
+        case Keyword::kw_srgbt:
+        case Keyword::kw_srgbft:
+        case Keyword::kw_red:
+        case Keyword::kw_green:
+        case Keyword::kw_blue:
+        case Keyword::kw_filter:
+        case Keyword::kw_transmit: {
             next();
             return parseColorKeywords(t);
         }
-        default: break;
+        default:
+            break;
     }
     next();
     return parseBuiltinFunction(t);
@@ -498,14 +630,16 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         if (const auto* s = std::get_if<std::string>(&v)) return *s;
         fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
     };
-    if (const UnaryFloatFunction op = unaryFloatFunction(fn.kw)) return op(f(parseArguments(1, 1, fn)[0]));
+    if (const UnaryFloatFunction op = unaryFloatFunction(fn.kw))
+        return op(f(parseArguments(1, 1, fn)[0]));
     if (const BinaryFloatFunction op = binaryFloatFunction(fn.kw)) {
         auto a = parseArguments(2, 2, fn);
         return op(f(a[0]), f(a[1]));
     }
 
     switch (fn.kw) {
-        case Keyword::kw_min: case Keyword::kw_max: {
+        case Keyword::kw_min:
+        case Keyword::kw_max: {
             auto a = parseArguments(1, 256, fn);
             double r = f(a[0]);
             for (size_t i = 1; i < a.size(); ++i)
@@ -518,10 +652,18 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             if (a.size() == 3) return s < 0 ? a[1] : a[2];
             return s < 0 ? a[1] : (s == 0 ? a[2] : a[3]);
         }
-        case Keyword::kw_vlength: return length(vec(parseArguments(1, 1, fn)[0]));
-        case Keyword::kw_vdot: { auto a = parseArguments(2, 2, fn); return dot(vec(a[0]), vec(a[1])); }
-        case Keyword::kw_vcross: { auto a = parseArguments(2, 2, fn); return VectorValue::fromVec3(cross(vec(a[0]), vec(a[1]))); }
-        case Keyword::kw_vnormalize: return VectorValue::fromVec3(normalize(vec(parseArguments(1, 1, fn)[0])));
+        case Keyword::kw_vlength:
+            return length(vec(parseArguments(1, 1, fn)[0]));
+        case Keyword::kw_vdot: {
+            auto a = parseArguments(2, 2, fn);
+            return dot(vec(a[0]), vec(a[1]));
+        }
+        case Keyword::kw_vcross: {
+            auto a = parseArguments(2, 2, fn);
+            return VectorValue::fromVec3(cross(vec(a[0]), vec(a[1])));
+        }
+        case Keyword::kw_vnormalize:
+            return VectorValue::fromVec3(normalize(vec(parseArguments(1, 1, fn)[0])));
         case Keyword::kw_vrotate: {
             auto a = parseArguments(2, 2, fn);
             return VectorValue::fromVec3(Transform::rotate(vec(a[1])).point(vec(a[0])));
@@ -539,11 +681,14 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                          m12 = k.y * k.z * t + k.x * sn;
             const double m20 = k.x * k.z * t + k.y * sn, m21 = k.y * k.z * t - k.x * sn,
                          m22 = k.z * k.z + c * (1 - k.z * k.z);
-            return VectorValue::fromVec3({p.x * m00 + p.y * m10 + p.z * m20, p.x * m01 + p.y * m11 + p.z * m21,
+            return VectorValue::fromVec3({p.x * m00 + p.y * m10 + p.z * m20,
+                                          p.x * m01 + p.y * m11 + p.z * m21,
                                           p.x * m02 + p.y * m12 + p.z * m22});
         }
-        case Keyword::kw_strlen: return double(str(parseArguments(1, 1, fn)[0]).size());
-        case Keyword::kw_strupr: case Keyword::kw_strlwr: {
+        case Keyword::kw_strlen:
+            return double(str(parseArguments(1, 1, fn)[0]).size());
+        case Keyword::kw_strupr:
+        case Keyword::kw_strlwr: {
             std::string s = str(parseArguments(1, 1, fn)[0]);
             for (char& c : s) c = fn.kw == Keyword::kw_strupr ? std::toupper(c) : std::tolower(c);
             return s;
@@ -553,19 +698,29 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             for (const Value& v : parseArguments(1, 1024, fn)) out += str(v);
             return out;
         }
-        case Keyword::kw_chr: return std::string(1, static_cast<char>(f(parseArguments(1, 1, fn)[0])));
-        case Keyword::kw_asc: { const std::string s = str(parseArguments(1, 1, fn)[0]); return s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0])); }
-        case Keyword::kw_strcmp: { auto a = parseArguments(2, 2, fn); const int c = str(a[0]).compare(str(a[1])); return double((c > 0) - (c < 0)); }
+        case Keyword::kw_chr:
+            return std::string(1, static_cast<char>(f(parseArguments(1, 1, fn)[0])));
+        case Keyword::kw_asc: {
+            const std::string s = str(parseArguments(1, 1, fn)[0]);
+            return s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0]));
+        }
+        case Keyword::kw_strcmp: {
+            auto a = parseArguments(2, 2, fn);
+            const int c = str(a[0]).compare(str(a[1]));
+            return double((c > 0) - (c < 0));
+        }
         case Keyword::kw_substr: {
             auto a = parseArguments(3, 3, fn);
             const std::string s = str(a[0]);
             const long start = static_cast<long>(f(a[1])), len = static_cast<long>(f(a[2]));
             if (start < 1 || len < 0 || static_cast<size_t>(start - 1 + len) > s.size())
-                fail(fn, fmt::format("substr: characters {} to {} are outside the {}-character string", start,
-                                     start + len - 1, s.size()));
+                fail(fn,
+                     fmt::format("substr: characters {} to {} are outside the {}-character string",
+                                 start, start + len - 1, s.size()));
             return s.substr(static_cast<size_t>(start - 1), static_cast<size_t>(len));
         }
-        case Keyword::kw_val: return std::strtod(str(parseArguments(1, 1, fn)[0]).c_str(), nullptr);
+        case Keyword::kw_val:
+            return std::strtod(str(parseArguments(1, 1, fn)[0]).c_str(), nullptr);
         case Keyword::kw_str: {
             // str(value, width, precision) as printf's "%W.Pf"; width 0
             // means none, precision -1 means 6.
@@ -615,19 +770,27 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             state = state * 1812433253u + 12345u;
             return state / 4294967295.0;
         }
-        case Keyword::kw_bitwise_and: case Keyword::kw_bitwise_or: case Keyword::kw_bitwise_xor: {
+        case Keyword::kw_bitwise_and:
+        case Keyword::kw_bitwise_or:
+        case Keyword::kw_bitwise_xor: {
             auto a = parseArguments(2, 256, fn);
             auto r = static_cast<int64_t>(f(a[0]));
             for (size_t i = 1; i < a.size(); ++i) {
                 const auto b = static_cast<int64_t>(f(a[i]));
-                r = fn.kw == Keyword::kw_bitwise_and ? (r & b) : fn.kw == Keyword::kw_bitwise_or ? (r | b) : (r ^ b);
+                r = fn.kw == Keyword::kw_bitwise_and  ? (r & b)
+                    : fn.kw == Keyword::kw_bitwise_or ? (r | b)
+                                                      : (r ^ b);
             }
             return double(r);
         }
-        case Keyword::kw_dimensions: case Keyword::kw_dimension_size: {
-            auto a = parseArguments(fn.kw == Keyword::kw_dimensions ? 1 : 2, fn.kw == Keyword::kw_dimensions ? 1 : 2, fn);
+        case Keyword::kw_dimensions:
+        case Keyword::kw_dimension_size: {
+            auto a = parseArguments(fn.kw == Keyword::kw_dimensions ? 1 : 2,
+                                    fn.kw == Keyword::kw_dimensions ? 1 : 2, fn);
             const auto* arr = std::get_if<ArrayPtr>(&a[0]);
-            if (!arr) fail(fn, fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
+            if (!arr)
+                fail(fn,
+                     fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
             if (fn.kw == Keyword::kw_dimensions) return double((*arr)->dims.size());
             const long d = std::lround(f(a[1]));
             if (d < 1 || static_cast<size_t>(d) > (*arr)->dims.size()) return 0.0;
@@ -637,10 +800,13 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             const std::string name = str(parseArguments(1, 1, fn)[0]);
             return double(!findIncludeFile(name).empty());
         }
-        case Keyword::kw_min_extent: case Keyword::kw_max_extent: {
+        case Keyword::kw_min_extent:
+        case Keyword::kw_max_extent: {
             auto a = parseArguments(1, 1, fn);
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
-            if (!obj) fail(fn, fmt::format("'{}' needs an object, found a {}", fn.text, valueKindName(a[0])));
+            if (!obj)
+                fail(fn,
+                     fmt::format("'{}' needs an object, found a {}", fn.text, valueKindName(a[0])));
             const scene::Bounds b = (*obj)->worldBounds();
             return VectorValue::fromVec3(fn.kw == Keyword::kw_min_extent ? b.lo : b.hi);
         }
@@ -651,7 +817,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             const Token objToken = peek();
             const Value objValue = parseExpression();
             const auto* obj = std::get_if<ObjectPtr>(&objValue);
-            if (!obj) fail(objToken, fmt::format("'trace' needs an object, found a {}", valueKindName(objValue)));
+            if (!obj)
+                fail(objToken,
+                     fmt::format("'trace' needs an object, found a {}", valueKindName(objValue)));
             expect(Sym::Comma, "','");
             const Vec3 start = parseVec3();
             expect(Sym::Comma, "','");
@@ -661,8 +829,8 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             expect(Sym::RParen, "')'");
             scene::SurfaceHit hit;
             Vec3 point, normal;
-            if (length(direction) > 0 &&
-                (*obj)->firstHit({start, direction}, 0.0, scene::kInfinity, scene::RayKind::Any, hit)) {
+            if (length(direction) > 0 && (*obj)->firstHit({start, direction}, 0.0, scene::kInfinity,
+                                                          scene::RayKind::Any, hit)) {
                 point = start + direction * hit.t;
                 normal = hit.primitive->normalAt(point);
             }
@@ -672,7 +840,8 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_inside: {
             auto a = parseArguments(2, 2, fn);
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
-            if (!obj) fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
+            if (!obj)
+                fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
             return double((*obj)->inside(vec(a[1])));
         }
         case Keyword::kw_datetime: {
@@ -681,7 +850,8 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             auto a = parseArguments(1, 2, fn);
             const double days = f(a[0]);
             const std::string format = a.size() > 1 ? str(a[1]) : "%Y-%m-%d %H:%M:%SZ";
-            const auto seconds = static_cast<std::time_t>(std::floor((days + 10957.0) * 86400.0 + 0.5));
+            const auto seconds =
+                static_cast<std::time_t>(std::floor((days + 10957.0) * 86400.0 + 0.5));
             std::tm utc{};
             gmtime_r(&seconds, &utc);
             char buffer[512];
@@ -695,7 +865,8 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             expect(Sym::RParen, "')'");
             return double(id.isIdentifier() && lookup(id.text) != nullptr);
         }
-        default: break;
+        default:
+            break;
     }
     unsupported(fn, fmt::format("'{}' in an expression", fn.text));
 }

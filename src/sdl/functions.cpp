@@ -206,7 +206,7 @@ private:
         }
         // Any other identifier is a constant taken at declaration time.
         const Token at = in_.peek();
-        const Value value = in_.parsePostfix(false);
+        const Value value = in_.parsePostfix();
         const double* f = std::get_if<double>(&value);
         if (!f) in_.fail(at, fmt::format("'{}' is a {}; a function body needs floats", at.text, valueKindName(value)));
         constant(*f);
@@ -256,7 +256,7 @@ private:
             default: break;
         }
         // Constant keywords (pi, clock, image_width, true...) evaluate now.
-        const Value value = in_.parsePostfix(false);
+        const Value value = in_.parsePostfix();
         const double* f = std::get_if<double>(&value);
         if (!f) in_.unsupported(t, fmt::format("'{}' in a function", t.text));
         constant(*f);

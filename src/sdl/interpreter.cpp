@@ -1,10 +1,10 @@
 // Token stream, directives, scopes and include files of the interpreter.
 #include "sdl/interpreter.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 namespace frameray::sdl {
 
@@ -19,7 +19,9 @@ const char* valueKindName(const Value& v) {
     struct Namer {
         const char* operator()(std::monostate) const { return "nothing"; }
         const char* operator()(double) const { return "float"; }
-        const char* operator()(const VectorValue& vec) const { return vec.isColor ? "color" : "vector"; }
+        const char* operator()(const VectorValue& vec) const {
+            return vec.isColor ? "color" : "vector";
+        }
         const char* operator()(const std::string&) const { return "string"; }
         const char* operator()(const ObjectPtr&) const { return "object"; }
         const char* operator()(const PigmentPtr&) const { return "pigment"; }
@@ -80,21 +82,26 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
     scene_.languageVersion = version_;
     scene_.versionDeclared = versionSeen_;
     const std::string scenePath = file->source->path();
-    if (scene_.objects.empty()) messages_.message(Stream::Warning, scenePath + ": warning: no objects in scene");
+    if (scene_.objects.empty())
+        messages_.message(Stream::Warning, scenePath + ": warning: no objects in scene");
     if (!versionSeen_)
-        messages_.message(Stream::Warning, scenePath + ": warning: the scene has no #version directive; as of "
-                                                       "POV-Ray 3.7 one is expected as its first declaration");
+        messages_.message(Stream::Warning,
+                          scenePath +
+                              ": warning: the scene has no #version directive; as of "
+                              "POV-Ray 3.7 one is expected as its first declaration");
     else if (declarationBeforeVersion_)
-        messages_.message(Stream::Warning, scenePath + ": warning: declarations precede the first #version "
-                                                       "directive, which POV-Ray 3.7 expects first");
+        messages_.message(Stream::Warning, scenePath +
+                                               ": warning: declarations precede the first #version "
+                                               "directive, which POV-Ray 3.7 expects first");
     // povray 3.7 warns about a missing assumed_gamma because the result
     // depends on the scene's version (render/gamma.cpp applies the rule).
     if (!scene_.globals.assumedGammaSet) {
-        const char* text = version_ >= 3.7 - 1e-9
-                               ? "warning: assumed_gamma not specified in this POV-Ray 3.7 or later scene; "
-                                 "using 'assumed_gamma 1.0'"
-                               : "warning: assumed_gamma not specified, so gamma correction is turned off "
-                                 "for compatibility with this pre POV-Ray 3.7 scene";
+        const char* text =
+            version_ >= 3.7 - 1e-9
+                ? "warning: assumed_gamma not specified in this POV-Ray 3.7 or later scene; "
+                  "using 'assumed_gamma 1.0'"
+                : "warning: assumed_gamma not specified, so gamma correction is turned off "
+                  "for compatibility with this pre POV-Ray 3.7 scene";
         messages_.message(Stream::Warning, fmt::format("{}: {}", file->source->path(), text));
     }
     return std::move(scene_);
@@ -198,7 +205,9 @@ SourceLoc Interpreter::loc(const Token& t) const {
     return cursors_.back().file->locOf(t);
 }
 
-SourceLoc Interpreter::here() { return loc(peek()); }
+SourceLoc Interpreter::here() {
+    return loc(peek());
+}
 
 void Interpreter::fail(const Token& at, const std::string& message) {
     throw SdlError(loc(at), message);
@@ -225,7 +234,8 @@ void Interpreter::expect(Sym s, const char* what) {
 
 void Interpreter::expectAfter(Sym s, const char* symbol, std::string_view after) {
     const Token& t = peek();
-    if (!t.is(s)) fail(t, fmt::format("expected {} after '{}', found {}", symbol, after, describeToken(t)));
+    if (!t.is(s))
+        fail(t, fmt::format("expected {} after '{}', found {}", symbol, after, describeToken(t)));
     next();
 }
 
@@ -265,40 +275,70 @@ void Interpreter::runDirective() {
     struct ArgumentMode {
         Interpreter& self;
         size_t index;
-        ArgumentMode(Interpreter& s, size_t i) : self(s), index(i) { self.cursors_[index].inDirective = true; }
+        ArgumentMode(Interpreter& s, size_t i) : self(s), index(i) {
+            self.cursors_[index].inDirective = true;
+        }
         ~ArgumentMode() {
             if (index < self.cursors_.size()) self.cursors_[index].inDirective = false;
         }
     } argumentMode(*this, cursors_.size() - 1);
     switch (word.kw) {
-        case Keyword::kw_declare: directiveDeclare(false); break;
-        case Keyword::kw_local: directiveDeclare(true); break;
-        case Keyword::kw_include: directiveInclude(word); break;
-        case Keyword::kw_if: directiveIf(word, &Interpreter::conditionExpression); break;
-        case Keyword::kw_ifdef: directiveIf(word, &Interpreter::conditionIfdef); break;
-        case Keyword::kw_ifndef: directiveIf(word, &Interpreter::conditionIfndef); break;
+        case Keyword::kw_declare:
+            directiveDeclare(false);
+            break;
+        case Keyword::kw_local:
+            directiveDeclare(true);
+            break;
+        case Keyword::kw_include:
+            directiveInclude(word);
+            break;
+        case Keyword::kw_if:
+            directiveIf(word, &Interpreter::conditionExpression);
+            break;
+        case Keyword::kw_ifdef:
+            directiveIf(word, &Interpreter::conditionIfdef);
+            break;
+        case Keyword::kw_ifndef:
+            directiveIf(word, &Interpreter::conditionIfndef);
+            break;
         case Keyword::kw_else:
-        case Keyword::kw_elseif: directiveElse(word); break;
-        case Keyword::kw_end: directiveEnd(word); break;
-        case Keyword::kw_while: directiveWhile(word, hashPos); break;
-        case Keyword::kw_for: directiveFor(word); break;
-        case Keyword::kw_switch: directiveSwitch(word); break;
+        case Keyword::kw_elseif:
+            directiveElse(word);
+            break;
+        case Keyword::kw_end:
+            directiveEnd(word);
+            break;
+        case Keyword::kw_while:
+            directiveWhile(word, hashPos);
+            break;
+        case Keyword::kw_for:
+            directiveFor(word);
+            break;
+        case Keyword::kw_switch:
+            directiveSwitch(word);
+            break;
         case Keyword::kw_case:
         case Keyword::kw_range:
             // Reached while executing a case above: fall through, ignoring
             // this label's values.
             if (blocks_.empty() || blocks_.back().kind != BlockKind::Switch)
                 fail(word, fmt::format("#{} outside #switch", word.text));
-            expect(Sym::LParen, "'('");
-            parseFloat();
             if (word.kw == Keyword::kw_range) {
+                expect(Sym::LParen, "'('");
+                parseFloat();
                 expect(Sym::Comma, "','");
                 parseFloat();
+                expect(Sym::RParen, "')'");
+            } else {
+                parseParenthesizedFloat();
             }
-            expect(Sym::RParen, "')'");
             break;
-        case Keyword::kw_break: directiveBreak(word); break;
-        case Keyword::kw_macro: directiveMacro(word); break;
+        case Keyword::kw_break:
+            directiveBreak(word);
+            break;
+        case Keyword::kw_macro:
+            directiveMacro(word);
+            break;
         case Keyword::kw_version: {
             if (!versionSeen_ && !scene_.objects.empty()) declarationBeforeVersion_ = true;
             version_ = parseFloat();
@@ -312,14 +352,30 @@ void Interpreter::runDirective() {
                 if (it->erase(name)) break;
             break;
         }
-        case Keyword::kw_fopen: directiveFopen(word); break;
-        case Keyword::kw_fclose: directiveFclose(word); break;
-        case Keyword::kw_read: directiveRead(word); break;
-        case Keyword::kw_write: directiveWrite(word); break;
-        case Keyword::kw_debug: directiveMessage(Stream::Debug); break;
-        case Keyword::kw_warning: directiveMessage(Stream::Warning); break;
-        case Keyword::kw_render: directiveMessage(Stream::Render); break;
-        case Keyword::kw_statistics: directiveMessage(Stream::Statistics); break;
+        case Keyword::kw_fopen:
+            directiveFopen(word);
+            break;
+        case Keyword::kw_fclose:
+            directiveFclose(word);
+            break;
+        case Keyword::kw_read:
+            directiveRead(word);
+            break;
+        case Keyword::kw_write:
+            directiveWrite(word);
+            break;
+        case Keyword::kw_debug:
+            directiveMessage(Stream::Debug);
+            break;
+        case Keyword::kw_warning:
+            directiveMessage(Stream::Warning);
+            break;
+        case Keyword::kw_render:
+            directiveMessage(Stream::Render);
+            break;
+        case Keyword::kw_statistics:
+            directiveMessage(Stream::Statistics);
+            break;
         case Keyword::kw_error: {
             const std::string text = parseString();
             fail(word, fmt::format("#error: {}", text));
@@ -368,7 +424,8 @@ void Interpreter::directiveDeclare(bool local) {
     // so may expressions (`(1 + #if (A) 2 #else 3 #end)`).
     cursors_.back().inDirective = false;
     Value value = parseRValue();
-    const bool needsSemicolon = std::holds_alternative<double>(value) || std::holds_alternative<VectorValue>(value);
+    const bool needsSemicolon =
+        std::holds_alternative<double>(value) || std::holds_alternative<VectorValue>(value);
     if (deprecated)
         deprecated_[name] = {deprecatedMessage.empty()
                                  ? fmt::format("Identifier '{}' was declared deprecated.", name)
@@ -379,8 +436,10 @@ void Interpreter::directiveDeclare(bool local) {
     declare(name, std::move(value), local);
     // povray 3.7: an error from language version 3.5 on, a warning before.
     if (needsSemicolon && !peek().is(Sym::Semicolon)) {
-        const std::string message =
-            fmt::format("missing ';' after the declaration of '{}': float, vector and color declarations need one", name);
+        const std::string message = fmt::format(
+            "missing ';' after the declaration of '{}': float, vector and color declarations need "
+            "one",
+            name);
         if (version_ >= 3.5 - 1e-9) fail(nameToken, message + " (since #version 3.5)");
         warn(nameToken, message);
     }
@@ -391,19 +450,32 @@ Value Interpreter::parseRValue() {
     const Token start = peek();
     if (isObjectStart(start)) return parseObject();
     switch (start.kw) {
-        case Keyword::kw_pigment: return parsePigment();
-        case Keyword::kw_finish: return parseFinish(nullptr);
-        case Keyword::kw_interior: return parseInterior(nullptr);
-        case Keyword::kw_texture: return parseTexture(nullptr);
-        case Keyword::kw_camera: return std::make_shared<const scene::Camera>(parseCamera());
-        case Keyword::kw_transform: return std::make_shared<const Transform>(parseTransformBlock());
-        case Keyword::kw_array: return parseArrayDeclaration();
-        case Keyword::kw_spline: return parseSpline();
-        case Keyword::kw_function: return parseFunctionDeclaration();
-        case Keyword::kw_light_source: return std::make_shared<const scene::Light>(parseLightSource());
-        case Keyword::kw_fog: return std::make_shared<const scene::Fog>(parseFog());
-        case Keyword::kw_sky_sphere: return std::make_shared<const scene::SkySphere>(parseSkySphere());
-        default: break;
+        case Keyword::kw_pigment:
+            return parsePigment();
+        case Keyword::kw_finish:
+            return parseFinish(nullptr);
+        case Keyword::kw_interior:
+            return parseInterior(nullptr);
+        case Keyword::kw_texture:
+            return parseTexture(nullptr);
+        case Keyword::kw_camera:
+            return std::make_shared<const scene::Camera>(parseCamera());
+        case Keyword::kw_transform:
+            return std::make_shared<const Transform>(parseTransformBlock());
+        case Keyword::kw_array:
+            return parseArrayDeclaration();
+        case Keyword::kw_spline:
+            return parseSpline();
+        case Keyword::kw_function:
+            return parseFunctionDeclaration();
+        case Keyword::kw_light_source:
+            return std::make_shared<const scene::Light>(parseLightSource());
+        case Keyword::kw_fog:
+            return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_sky_sphere:
+            return std::make_shared<const scene::SkySphere>(parseSkySphere());
+        default:
+            break;
     }
     // A string value is complete without looking further (see parseString).
     if (startsStringExpression(start)) return parseString();
@@ -444,12 +516,18 @@ void Interpreter::directiveInclude(const Token& at) {
     ++includeDepth_;
 }
 
-bool Interpreter::conditionExpression() {
+double Interpreter::parseParenthesizedFloat() {
     expect(Sym::LParen, "'('");
     const Token at = peek();
-    const double v = toFloat(parseExpression(), at);
+    // The parentheses are the expression's own: comparisons, '&', '|' and
+    // '? :' are allowed inside.
+    const double v = toFloat(parseTernary(), at);
     expect(Sym::RParen, "')'");
-    return std::fabs(v) > kEpsilon;
+    return v;
+}
+
+bool Interpreter::conditionExpression() {
+    return std::fabs(parseParenthesizedFloat()) > kEpsilon;
 }
 
 bool Interpreter::conditionIfdef() {
@@ -463,7 +541,8 @@ bool Interpreter::conditionIfdef() {
         // #ifdef (A[i]): whether that element has been set.
         if (v && std::holds_alternative<ArrayPtr>(*v) && peek().is(Sym::LBracket)) {
             const ArrayPtr array = std::get<ArrayPtr>(*v);
-            defined = !std::holds_alternative<std::monostate>(array->elements[parseArrayIndex(*array, t)]);
+            defined = !std::holds_alternative<std::monostate>(
+                array->elements[parseArrayIndex(*array, t)]);
         }
     } else {
         fail(t, fmt::format("expected an identifier, found {}", describeToken(t)));
@@ -472,7 +551,9 @@ bool Interpreter::conditionIfdef() {
     return defined;
 }
 
-bool Interpreter::conditionIfndef() { return !conditionIfdef(); }
+bool Interpreter::conditionIfndef() {
+    return !conditionIfdef();
+}
 
 void Interpreter::directiveIf(const Token& at, bool (Interpreter::*condition)()) {
     for (bool taken = (this->*condition)();; taken = conditionExpression()) {
@@ -505,7 +586,9 @@ void Interpreter::directiveEnd(const Token& at) {
     Block& b = blocks_.back();
     switch (b.kind) {
         case BlockKind::If:
-        case BlockKind::Switch: blocks_.pop_back(); break;
+        case BlockKind::Switch:
+            blocks_.pop_back();
+            break;
         case BlockKind::While: {
             const size_t restart = b.restartPos;
             blocks_.pop_back();
@@ -518,7 +601,8 @@ void Interpreter::directiveEnd(const Token& at) {
                 fail(at, fmt::format("#for loop variable '{}' is no longer a float", b.loopVar));
             const double value = std::get<double>(*var) + b.loopStep;
             *var = value;
-            const bool more = b.loopStep > 0 ? value <= b.loopEnd + kEpsilon : value >= b.loopEnd - kEpsilon;
+            const bool more =
+                b.loopStep > 0 ? value <= b.loopEnd + kEpsilon : value >= b.loopEnd - kEpsilon;
             if (more)
                 cursors_.back().pos = b.restartPos;
             else
@@ -571,9 +655,7 @@ void Interpreter::directiveFor(const Token& at) {
 }
 
 void Interpreter::directiveSwitch(const Token& at) {
-    expect(Sym::LParen, "'('");
-    const double value = parseFloat();
-    expect(Sym::RParen, "')'");
+    const double value = parseParenthesizedFloat();
     Block b{BlockKind::Switch, loc(at)};
     b.switchValue = value;
     // Find the first label that matches; its body runs until #break.
@@ -582,17 +664,17 @@ void Interpreter::directiveSwitch(const Token& at) {
         if (found == Keyword::kw_end) return;
         if (found == Keyword::kw_else) break;
         if (found == Keyword::kw_break) continue;
-        expect(Sym::LParen, "'('");
         bool match;
         if (found == Keyword::kw_case) {
-            match = std::fabs(parseFloat() - value) < kEpsilon;
+            match = std::fabs(parseParenthesizedFloat() - value) < kEpsilon;
         } else {
+            expect(Sym::LParen, "'('");
             const double lo = parseFloat();
             expect(Sym::Comma, "','");
             const double hi = parseFloat();
+            expect(Sym::RParen, "')'");
             match = value >= lo && value <= hi;
         }
-        expect(Sym::RParen, "')'");
         if (match) break;
     }
     blocks_.push_back(b);
@@ -654,9 +736,11 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     }
     expect(Sym::RParen, "')'");
     if (count != macro.params.size())
-        fail(nameToken, fmt::format("macro '{}' takes {} parameter{}, {} given", macro.name,
-                                    macro.params.size(), macro.params.size() == 1 ? "" : "s", count));
-    cursors_.push_back({macro.file, macro.bodyStart, CursorKind::Macro, scopes_.size(), blocks_.size(), false});
+        fail(nameToken,
+             fmt::format("macro '{}' takes {} parameter{}, {} given", macro.name,
+                         macro.params.size(), macro.params.size() == 1 ? "" : "s", count));
+    cursors_.push_back(
+        {macro.file, macro.bodyStart, CursorKind::Macro, scopes_.size(), blocks_.size(), false});
     scopes_.push_back(std::move(args));
     blocks_.push_back({BlockKind::Macro, macro.loc});
 }
@@ -683,7 +767,9 @@ Value Interpreter::bareIdentifierArgument() {
         break;
     }
     if (alias.scope == scopes_.size())
-        fail(t, fmt::format("cannot pass the undeclared identifier '{}' to a macro; declare it first", name));
+        fail(t,
+             fmt::format("cannot pass the undeclared identifier '{}' to a macro; declare it first",
+                         name));
     ++cursors_.back().pos;
     return alias;
 }
@@ -713,7 +799,9 @@ Keyword Interpreter::skipBranch(bool stopAtElse, bool stopAtCase) {
             case Keyword::kw_while:
             case Keyword::kw_for:
             case Keyword::kw_switch:
-            case Keyword::kw_macro: ++depth; break;
+            case Keyword::kw_macro:
+                ++depth;
+                break;
             case Keyword::kw_end:
                 if (depth == 0) {
                     ++c.pos;
@@ -736,7 +824,8 @@ Keyword Interpreter::skipBranch(bool stopAtElse, bool stopAtCase) {
                     return w.kw;
                 }
                 break;
-            default: break;
+            default:
+                break;
         }
     }
 }

@@ -171,19 +171,20 @@ private:
     // --- expressions (expressions.cpp) ---
     Value parseExpression();                    // float, vector, colour or string
     double parseFloat();
+    double parseParenthesizedFloat();  // ( full expression ): #if, #while, #switch, #case
     VectorValue parseVector();                  // float promoted to <f,f,f>
     Vec3 parseVec3();
     Color parseColor();                         // with optional color/colour keyword
     std::string parseString();
     bool startsStringExpression(const Token& t);
-    Value parseTernary(bool inVector);
-    Value parseLogical(bool inVector);
-    Value parseRelational(bool inVector);
-    Value parseAdditive(bool inVector);
-    Value parseMultiplicative(bool inVector);
-    Value parseUnary(bool inVector);
-    Value parsePostfix(bool inVector);
-    Value parsePrimary(bool inVector);
+    Value parseTernary();
+    Value parseLogical();
+    Value parseRelational();
+    Value parseAdditive();
+    Value parseMultiplicative();
+    Value parseUnary();
+    Value parsePostfix();
+    Value parsePrimary();
     Value parseVectorLiteral();
     Value parseColorKeywords(const Token& first);
     Value parseBuiltinFunction(const Token& name);

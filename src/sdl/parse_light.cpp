@@ -109,11 +109,11 @@ scene::Light Interpreter::parseLightSource() {
             case Keyword::kw_area_light: {
                 light.isArea = true;
                 light.area.axis1 = parseVec3();
-                expect(Sym::Comma, "',' after the first area_light axis");
+                accept(Sym::Comma);  // commas optional, as in povray
                 light.area.axis2 = parseVec3();
-                expect(Sym::Comma, "',' after the second area_light axis");
+                accept(Sym::Comma);
                 light.area.size1 = std::max(1, static_cast<int>(parseFloat()));
-                expect(Sym::Comma, "',' between the area_light sizes");
+                accept(Sym::Comma);
                 light.area.size2 = std::max(1, static_cast<int>(parseFloat()));
                 break;
             }

@@ -401,7 +401,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
     // step count and the first point, not a comparison (as in povray).
     auto setting = [&]() {
         const Token at = peek();
-        return toFloat(parseAdditive(true), at);
+        return toFloat(parseAdditive(), at);
     };
     int type = -1, uSteps = 0, vSteps = 0;
     double flatness = 0;

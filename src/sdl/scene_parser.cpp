@@ -167,8 +167,9 @@ void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
 }
 
 std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
-    // Reads "<first>, <second>" style arguments with povray's commas.
-    auto comma = [&](const char* what) { expect(Sym::Comma, what); };
+    // The commas between a shape's numbers are optional in povray
+    // (`box { <0,0,0> <1,1,1> }`): take one when it is there.
+    auto comma = [&](const char*) { accept(Sym::Comma); };
     // `open` follows a cylinder's or cone's numbers, before any modifier.
     auto parseOpen = [&]() { return accept(Keyword::kw_open); };
     switch (kind.kw) {
@@ -371,8 +372,8 @@ bool Interpreter::parseTransformation(Transform& out) {
             expect(Sym::Less, "'<' starting the 12 matrix values");
             std::array<double, 12> v{};
             for (int i = 0; i < 12; ++i) {
-                if (i) expect(Sym::Comma, "',' between matrix values");
-                v[i] = toFloat(parseTernary(true), t);
+                if (i) accept(Sym::Comma);  // optional, as in povray
+                v[i] = toFloat(parseAdditive(), t);
             }
             expect(Sym::Greater, "'>' closing the matrix");
             if (!Transform::fromMatrix(Matrix4::fromPovMatrix(v), out))

@@ -9,8 +9,9 @@
 //              last point;
 //   natural    the natural cubic spline (zero curvature at both ends).
 // Outside its range a spline keeps the value at the nearest end.
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "sdl/interpreter.h"
 
@@ -29,11 +30,20 @@ namespace {
 
 bool splineTypeKeyword(Keyword kw, SplineType& out) {
     switch (kw) {
-        case Keyword::kw_linear_spline: out = SplineType::Linear; return true;
-        case Keyword::kw_quadratic_spline: out = SplineType::Quadratic; return true;
-        case Keyword::kw_cubic_spline: out = SplineType::Cubic; return true;
-        case Keyword::kw_natural_spline: out = SplineType::Natural; return true;
-        default: return false;
+        case Keyword::kw_linear_spline:
+            out = SplineType::Linear;
+            return true;
+        case Keyword::kw_quadratic_spline:
+            out = SplineType::Quadratic;
+            return true;
+        case Keyword::kw_cubic_spline:
+            out = SplineType::Cubic;
+            return true;
+        case Keyword::kw_natural_spline:
+            out = SplineType::Natural;
+            return true;
+        default:
+            return false;
     }
 }
 
@@ -71,7 +81,8 @@ Vec5 evalQuadratic(const SplineValue& s, double x) {
     const double l1 = (x - t0) * (x - t2) / ((t1 - t0) * (t1 - t2));
     const double l2 = (x - t0) * (x - t1) / ((t2 - t0) * (t2 - t1));
     Vec5 r;
-    for (int k = 0; k < 5; ++k) r[k] = l0 * s.p[a].v[k] + l1 * s.p[a + 1].v[k] + l2 * s.p[a + 2].v[k];
+    for (int k = 0; k < 5; ++k)
+        r[k] = l0 * s.p[a].v[k] + l1 * s.p[a + 1].v[k] + l2 * s.p[a + 2].v[k];
     return r;
 }
 
@@ -93,7 +104,8 @@ Vec5 evalCubic(const SplineValue& s, double x) {
     };
     Vec5 r;
     for (int k = 0; k < 5; ++k)
-        r[k] = h00 * s.p[i].v[k] + h10 * h * tangent(i, k) + h01 * s.p[i + 1].v[k] + h11 * h * tangent(i + 1, k);
+        r[k] = h00 * s.p[i].v[k] + h10 * h * tangent(i, k) + h01 * s.p[i + 1].v[k] +
+               h11 * h * tangent(i + 1, k);
     return r;
 }
 
@@ -111,7 +123,8 @@ Vec5 evalNatural(const SplineValue& s, double x) {
     for (int k = 0; k < 5; ++k) {
         std::vector<double> m(n, 0.0), c(n, 0.0), d(n, 0.0);
         for (size_t i = 1; i + 1 < n; ++i) {
-            const double rhs = 6 * ((s.p[i + 1].v[k] - s.p[i].v[k]) / h[i] - (s.p[i].v[k] - s.p[i - 1].v[k]) / h[i - 1]);
+            const double rhs = 6 * ((s.p[i + 1].v[k] - s.p[i].v[k]) / h[i] -
+                                    (s.p[i].v[k] - s.p[i - 1].v[k]) / h[i - 1]);
             const double diag = 2 * (h[i - 1] + h[i]) - h[i - 1] * c[i - 1];
             c[i] = h[i] / diag;
             d[i] = (rhs - h[i - 1] * d[i - 1]) / diag;
@@ -144,11 +157,13 @@ Value Interpreter::parseSpline() {
     while (!accept(Sym::RBrace)) {
         const Token at = peek();
         const double t = parseFloat();
-        expect(Sym::Comma, "',' between the spline parameter and its point");
+        accept(Sym::Comma);  // optional, as in povray
         const Token pointAt = peek();
         const Value v = parseExpression();
         if (!std::holds_alternative<VectorValue>(v))
-            fail(pointAt, fmt::format("a spline point must be a vector of 2 to 5 components, not a {}", valueKindName(v)));
+            fail(pointAt,
+                 fmt::format("a spline point must be a vector of 2 to 5 components, not a {}",
+                             valueKindName(v)));
         const VectorValue point = std::get<VectorValue>(v);
         accept(Sym::Comma);
         // Entries are kept sorted; a repeated parameter keeps its first
@@ -172,7 +187,8 @@ Value Interpreter::callSpline(const SplineValue& spline, const Token& at) {
     SplineType type = spline.type;
     if (accept(Sym::Comma)) {
         const Token kw = next();
-        if (!splineTypeKeyword(kw.kw, type)) fail(kw, fmt::format("expected a spline type, found {}", describeToken(kw)));
+        if (!splineTypeKeyword(kw.kw, type))
+            fail(kw, fmt::format("expected a spline type, found {}", describeToken(kw)));
     }
     expect(Sym::RParen, "')'");
     (void)at;

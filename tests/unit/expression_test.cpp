@@ -28,7 +28,7 @@ struct ParsedText {
 
 TEST(Expressions, PrecedenceAndFunctions) {
     ParsedText r("#declare A = 1 + 2 * 3 - 4 / 2; #declare B = -2 * (3 + 1); #declare C = pow(2, 10) + abs(-1);"
-          "#declare D = 5 > 3 & 2 < 1 | 1; #declare E = (1 ? 7 : 8); #declare F = mod(7, 3) + int(-2.5);");
+          "#declare D = (5 > 3 & 2 < 1 | 1); #declare E = (1 ? 7 : 8); #declare F = mod(7, 3) + int(-2.5);");
     EXPECT_EQ(r.f("A"), 5);
     EXPECT_EQ(r.f("B"), -8);
     EXPECT_EQ(r.f("C"), 1025);
