@@ -110,6 +110,12 @@ def main():
         if len(pngs) != 24:
             fail(f"{switches}: {len(pngs)} frames written, expected 24")
         stats = check_statistics(stats_path, switches, 24)
+        # With more than one frame in flight the first frame is measured
+        # alone and bounds the others by memory.
+        wanted = int(switches[1].split("=")[-1].lstrip("+WF"))
+        if wanted > 1 and not (stats["frame_memory_estimate_bytes"] > 0 and 1 <= stats["frames_in_flight"] <= wanted):
+            fail(f"{switches}: no memory estimate or frames in flight out of range: "
+                 f"{stats['frame_memory_estimate_bytes']}, {stats['frames_in_flight']}")
         if reference is None:
             reference = (switches, files, console, stats["rays"])
             continue
