@@ -168,7 +168,7 @@ struct Job {
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
     bool failed = false;  // the log holds the fatal message
-    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
+    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0, commitSeconds = 0;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -538,7 +538,8 @@ class Run {
                 log.message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
                 job.failed = true;
             }
-            job.writeSeconds += secondsSince(start);
+            job.commitSeconds = secondsSince(start);
+            job.writeSeconds += job.commitSeconds;
         }
         if (job.failed) {
             if (o_.outputToFile) log.save(frame.log);
@@ -547,7 +548,7 @@ class Run {
         ++finished_;
         records_.push_back({frame.number, frame.clock, frame.output.filename().string(), job.stats.rays,
                             std::move(job.shapeTests), job.parseSeconds, job.prepareSeconds, job.renderSeconds,
-                            job.writeSeconds});
+                            job.writeSeconds, job.commitSeconds});
         const double seconds = job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
         const std::string where = o_.outputToFile ? frame.output.string() : std::string("(no file)");
         if (o_.verbose) {

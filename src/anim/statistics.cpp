@@ -80,17 +80,16 @@ std::string sequenceJson(const RunFigures& run, const std::vector<FrameRecord>& 
         // The flat keys came first (issue 4's slice); "stats" groups what
         // was measured of the frame.
         frames += fmt::format(
-            "    {{\"number\": {}, \"clock\": {}, \"file\": {}, \"rays\": {}, \"parse_seconds\": "
-            "{:.6f}, "
-            "\"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, \"write_seconds\": {:.6f},\n"
-            "     \"stats\": {{\"rays\": {}, \"intersection_tests\": {}, \"parse_seconds\": "
-            "{:.6f}, "
-            "\"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, \"write_seconds\": "
-            "{:.6f}}}}}",
+            "    {{\"number\": {}, \"clock\": {}, \"file\": {}, \"rays\": {}, "
+            "\"parse_seconds\": {:.6f}, \"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, "
+            "\"write_seconds\": {:.6f},\n     \"stats\": {{\"rays\": {}, \"intersection_tests\": "
+            "{}, "
+            "\"parse_seconds\": {:.6f}, \"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, "
+            "\"write_seconds\": {:.6f}, \"commit_seconds\": {:.6f}}}}}",
             r.number, clockText(r.clock), jsonString(r.file), jsonRays(r.rays), r.parseSeconds,
             r.prepareSeconds, r.prepareSeconds + r.renderSeconds, r.writeSeconds, jsonRays(r.rays),
             jsonTests(r.shapeTests), r.parseSeconds, r.prepareSeconds,
-            r.prepareSeconds + r.renderSeconds, r.writeSeconds);
+            r.prepareSeconds + r.renderSeconds, r.writeSeconds, r.commitSeconds);
     }
     std::string keptList;
     for (const KeptFrame& k : kept) {

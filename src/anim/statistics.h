@@ -20,6 +20,8 @@ struct FrameRecord {
     render::RayCounts rays;
     render::ShapeTestCounts shapeTests;  // intersection tests by kind of object
     double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
+    // The part of writeSeconds spent in the serial stage (rename, journal).
+    double commitSeconds = 0;
 };
 
 // A frame an earlier run finished, kept by Continue_Trace (+C).
