@@ -25,12 +25,23 @@ RunStreams::~RunStreams() {
         if (s.file) std::fclose(s.file);
 }
 
+bool RunStreams::console(TextStream stream) const {
+    return streams_[static_cast<int>(stream)].console;
+}
+
+void RunStreams::setOverlay(ConsoleOverlay* overlay) {
+    std::lock_guard lock(mutex_);
+    overlay_ = overlay;
+}
+
 void RunStreams::write(TextStream stream, const std::string& text) {
     std::lock_guard lock(mutex_);
     const Stream& s = streams_[static_cast<int>(stream)];
     if (s.console) {
+        if (overlay_) overlay_->hide();
         std::fputs(text.c_str(), stderr);
         std::fflush(stderr);
+        if (overlay_) overlay_->show();
     }
     if (s.file) {
         std::fputs(text.c_str(), s.file);

@@ -20,6 +20,15 @@
 
 namespace frameray::anim {
 
+// Something drawn on the console that other text must not land inside
+// (the progress line on a terminal).
+class ConsoleOverlay {
+  public:
+    virtual ~ConsoleOverlay() = default;
+    virtual void hide() = 0;
+    virtual void show() = 0;
+};
+
 class RunStreams {
 public:
     // Opens (truncates) the stream files the options name. Throws
@@ -31,6 +40,10 @@ public:
 
     // `text` is written as given; callers supply line ends.
     void write(options::TextStream stream, const std::string& text);
+    // Whether `stream` goes to the console.
+    bool console(options::TextStream stream) const;
+    // Hidden before and shown after every console write; null: none.
+    void setOverlay(ConsoleOverlay* overlay);
 
 private:
     struct Stream {
@@ -39,6 +52,7 @@ private:
     };
     std::array<Stream, options::kTextStreams> streams_;
     std::mutex mutex_;
+    ConsoleOverlay* overlay_ = nullptr;
 };
 
 options::TextStream toTextStream(sdl::Stream s);

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 #include <signal.h>
-
 #include <sys/resource.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_pipeline.h>
@@ -15,6 +14,7 @@
 #include <condition_variable>
 #include <deque>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -26,6 +26,9 @@
 #include "anim/hooks.h"
 #include "anim/interrupt.h"
 #include "anim/journal.h"
+#include "anim/memory_budget.h"
+#include "anim/progress.h"
+#include "anim/statistics.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
 #include "render/gamma.h"
@@ -63,6 +66,12 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
         ctx.libraryPaths.push_back(kDefaultLibrary);
     ctx.declares = o.declares;
     ctx.version = o.version;
+    if (seq.shardCount > 1)
+        ctx.refuseFileWrites = fmt::format(
+            "frames that pass state through files must be rendered in order by one process, so "
+            "this scene "
+            "cannot be split into shards (Shard_Count {}); render it without Shard_Count / +SHC",
+            seq.shardCount);
     return ctx;
 }
 
@@ -90,8 +99,10 @@ image::EncodedImage encode(const render::FrameImage& img, const render::GammaEnc
 // values is not trusted.
 std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq) {
     std::error_code ec;
-    std::string s = fmt::format("{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(), o.width,
-                                o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
+    // Shards share the images but not the journal (each has its own), so
+    // the shard is not part of the settings.
+    std::string s = fmt::format("{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(),
+                                o.width, o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
                                 seq.window.x1, seq.window.y1, o.version, o.quality, o.includeHeader);
     for (const auto& [k, v] : o.declares) s += fmt::format("|{}={}", k, v);
     for (const auto& p : o.libraryPaths) s += fmt::format("|{}", p.string());
@@ -114,7 +125,7 @@ void removeStaleTemporaries(const Sequence& seq) {
             const auto dot = name.find(".", 1);
             if (dot == std::string::npos) continue;
             // sequence.json's own temporary (see writeStatistics).
-            if (long pid = 0; image::isTemporaryFor(name, "sequence.json", pid)) {
+            if (long pid = 0; image::isTemporaryFor(name, seq.statisticsName, pid)) {
                 if (pid == static_cast<long>(getpid()) || kill(static_cast<pid_t>(pid), 0) != 0)
                     fs::remove(entry.path(), ec);
                 continue;
@@ -135,68 +146,42 @@ void removeStaleTemporaries(const Sequence& seq) {
 struct Outcome {
     enum class Kind { None, Finish, Quit, UserAbort, Fatal };
     Kind kind = Kind::None;
-    std::string why;               // Fatal: the message ("" when the frame's log has it)
+    std::string why;  // Fatal: the message ("" when the frame's log has it)
     const FrameSpec* frame = nullptr;
 };
 
 struct Job {
     enum class Kind { Render, Kept, Stop };
     Kind kind = Kind::Render;
-    size_t index = 0;               // position in the pipeline (order of stage 3)
-    size_t position = 0;            // position in the sequence
+    size_t index = 0;     // position in the pipeline (order of stage 3)
+    size_t position = 0;  // position in the sequence
     const FrameSpec* frame = nullptr;
-    Outcome stop;                   // Kind::Stop
+    Outcome stop;  // Kind::Stop
     std::unique_ptr<FrameLog> log;
     std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
     std::optional<scene::Scene> scene;
-    image::EncodedImage encoded;
+    // The image encoded and flushed under a temporary name in stage 2;
+    // stage 3 renames it into place and journals it.
+    fs::path temporary;
+    std::uintmax_t fileSize = 0;
+    std::uint64_t fileHash = 0;
     render::FrameStats stats;
-    bool failed = false;            // the log holds the fatal message
-    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
-};
-
-// What sequence.json records of a frame written in this run.
-struct FrameRecord {
-    int number = 0;
-    double clock = 0;
-    std::string file;
-    render::RayCounts rays;
-    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
+    render::ShapeTestCounts shapeTests;
+    bool failed = false;  // the log holds the fatal message
+    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0, commitSeconds = 0;
 };
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double secondsSince(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 double cpuSeconds() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
     return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
            static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
-}
-
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20)
-                    out += fmt::format("\\u{:04x}", static_cast<int>(c));
-                else
-                    out += c;
-        }
-    }
-    return out + "\"";
-}
-
-std::string jsonRays(const render::RayCounts& r) {
-    return fmt::format(
-        "{{\"camera\": {}, \"shadow\": {}, \"reflection\": {}, \"refraction\": {}, \"transmission\": {}}}",
-        r.camera, r.shadow, r.reflection, r.refraction, r.transmission);
 }
 
 // The frame scheduler (DESIGN.md, "Data flow"): a oneTBB pipeline with a
@@ -211,9 +196,21 @@ std::string jsonRays(const render::RayCounts& r) {
 //      gives: frames before the one that ends the run are written, later
 //      ones never are.
 class Run {
-public:
-    Run(const options::RenderOptions& o, const Sequence& seq) : o_(o), seq_(seq), streams_(o) {}
-    ~Run() { setEmergencyStop(nullptr); }
+  public:
+    Run(const options::RenderOptions& o, const Sequence& seq)
+        : o_(o),
+          seq_(seq),
+          streams_(o),
+          progress_(seq.animated
+                        ? progressModeFor(o.verbose, streams_.console(TextStream::Render), isatty(STDERR_FILENO) != 0)
+                        : ProgressMode::Silent,
+                    seq.frames.size(), [this](const std::string& line) { say(TextStream::Render, line); }) {
+        streams_.setOverlay(&progress_);
+    }
+    ~Run() {
+        setEmergencyStop(nullptr);
+        streams_.setOverlay(nullptr);
+    }
     Run(const Run&) = delete;
     Run& operator=(const Run&) = delete;
 
@@ -227,32 +224,48 @@ public:
             journal_ = std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
             if (journal_->discardedStale())
                 say(TextStream::Warning, fmt::format("frameray: the journal {} was written with other settings; "
-                                                     "rendering every frame again\n", seq_.journal.string()));
+                                                     "rendering every frame again\n",
+                                                     seq_.journal.string()));
         }
         setEmergencyStop([this] { emergencyStop(); });
 
         HookValues scene = values(nullptr);
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PreScene)], scene)) {
-            case HookAction::Continue: break;
-            case HookAction::SkipFrame: case HookAction::SkipAll: return finish();
-            case HookAction::Quit: return 0;
-            case HookAction::UserAbort: return userAbort();
-            case HookAction::Fatal: return fatal("Pre_Scene_Command failed", nullptr);
+            case HookAction::Continue:
+                break;
+            case HookAction::SkipFrame:
+            case HookAction::SkipAll:
+                return finish();
+            case HookAction::Quit:
+                return 0;
+            case HookAction::UserAbort:
+                return userAbort();
+            case HookAction::Fatal:
+                return fatal("Pre_Scene_Command failed", nullptr);
         }
 
         runPipeline();
+        removeUnfinishedTemporaries();
+        progress_.done();
         writeStatistics();
+        if (o_.verbose && seq_.animated) say(TextStream::Statistic, summaryTable(figures(), records_, kept_.size()));
 
         switch (outcome_.kind) {
-            case Outcome::Kind::None: case Outcome::Kind::Finish: return finish();
-            case Outcome::Kind::Quit: return 0;
-            case Outcome::Kind::UserAbort: current_ = outcome_.frame; return userAbort();
-            case Outcome::Kind::Fatal: return fatal(outcome_.why, outcome_.frame);
+            case Outcome::Kind::None:
+            case Outcome::Kind::Finish:
+                return finish();
+            case Outcome::Kind::Quit:
+                return 0;
+            case Outcome::Kind::UserAbort:
+                current_ = outcome_.frame;
+                return userAbort();
+            case Outcome::Kind::Fatal:
+                return fatal(outcome_.why, outcome_.frame);
         }
         return finish();
     }
 
-private:
+  private:
     size_t framesInFlight() const {
         // Shell-outs between frames keep POV-Ray's strict order: frame N's
         // Post_Frame_Command before frame N+1's Pre_Frame_Command.
@@ -268,6 +281,28 @@ private:
         inFlight_ = framesInFlight();
         runStart_ = Clock::now();
         cpuStart_ = cpuSeconds();
+        // Frames in flight are bounded by memory too: the first frame
+        // renders alone (its tiles still use every core) and its growth
+        // of the process is the estimate for the others.
+        const bool measureFirst = inFlight_ > 1 && seq_.frames.size() > 1;
+        if (measureFirst) {
+            const std::uint64_t before = residentBytes();
+            pipelinePhase(1, 1);
+            const std::uint64_t peak = peakResidentBytes();
+            frameMemory_ = peak > before ? peak - before : 0;
+            memoryBudget_ = availableBytes();
+            inFlight_ = framesWithin(inFlight_, frameMemory_, memoryBudget_);
+        }
+        if (!measureFirst || (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
+            pipelinePhase(inFlight_, std::numeric_limits<size_t>::max());
+        wallSeconds_ = secondsSince(runStart_);
+        cpuSecondsUsed_ = cpuSeconds() - cpuStart_;
+    }
+
+    // One parallel_pipeline over the next frames: at most `tokens` in
+    // flight, ending after `renders` rendered frames (or the sequence).
+    void pipelinePhase(size_t tokens, size_t renders) {
+        rendersLeft_ = renders;
 
         // Ctrl-C while every thread is inside a long render: the watcher
         // cancels the pipeline (tiles included) so the run stops at once.
@@ -279,25 +314,25 @@ private:
             while (!done) {
                 doneCv.wait_for(lock, std::chrono::milliseconds(50));
                 if (!done && stopRequested()) decide({Outcome::Kind::UserAbort, "", current_.load()});
+                progress_.tick();
             }
         });
         try {
-            tbb::parallel_pipeline(
-                inFlight_,
-                tbb::make_filter<void, Job*>(tbb::filter_mode::serial_in_order,
-                                             [this](tbb::flow_control& fc) -> Job* {
-                                                 Job* job = nextJob();
-                                                 if (!job) fc.stop();
-                                                 return job;
-                                             }) &
-                    tbb::make_filter<Job*, Job*>(tbb::filter_mode::parallel,
-                                                 [this](Job* job) {
-                                                     renderJob(*job);
-                                                     return job;
-                                                 }) &
-                    tbb::make_filter<Job*, void>(tbb::filter_mode::serial_in_order,
-                                                 [this](Job* job) { finishJob(*job); }),
-                context_);
+            tbb::parallel_pipeline(tokens,
+                                   tbb::make_filter<void, Job*>(tbb::filter_mode::serial_in_order,
+                                                                [this](tbb::flow_control& fc) -> Job* {
+                                                                    Job* job = nextJob();
+                                                                    if (!job) fc.stop();
+                                                                    return job;
+                                                                }) &
+                                       tbb::make_filter<Job*, Job*>(tbb::filter_mode::parallel,
+                                                                    [this](Job* job) {
+                                                                        renderJob(*job);
+                                                                        return job;
+                                                                    }) &
+                                       tbb::make_filter<Job*, void>(tbb::filter_mode::serial_in_order,
+                                                                    [this](Job* job) { finishJob(*job); }),
+                                   context_);
         } catch (...) {
             {
                 std::lock_guard lock(doneMutex);
@@ -313,8 +348,6 @@ private:
         }
         doneCv.notify_all();
         watcher.join();
-        wallSeconds_ = secondsSince(runStart_);
-        cpuSecondsUsed_ = cpuSeconds() - cpuStart_;
     }
 
     // The first outcome wins; later frames are dropped.
@@ -350,7 +383,7 @@ private:
 
     // Stage 1: the next frame to render, parsed; nullptr when there is none.
     Job* nextJob() {
-        while (!inputDone_ && !decided_ && next_ < seq_.frames.size()) {
+        while (!inputDone_ && !decided_ && next_ < seq_.frames.size() && rendersLeft_ > 0) {
             if (stopRequested()) return stopJob({Outcome::Kind::UserAbort, "", nullptr});
             const size_t position = next_++;
             const FrameSpec& frame = seq_.frames[position];
@@ -363,14 +396,21 @@ private:
                 if (kept) return &newJob(Job::Kind::Kept, position);
             }
             switch (runHook(o_.commands[static_cast<int>(ShellHook::PreFrame)], values(&frame))) {
-                case HookAction::Continue: break;
-                case HookAction::SkipFrame: continue;
-                case HookAction::SkipAll: return stopJob({Outcome::Kind::Finish, "", nullptr});
-                case HookAction::Quit: return stopJob({Outcome::Kind::Quit, "", nullptr});
-                case HookAction::UserAbort: return stopJob({Outcome::Kind::UserAbort, "", nullptr});
-                case HookAction::Fatal: return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", &frame});
+                case HookAction::Continue:
+                    break;
+                case HookAction::SkipFrame:
+                    continue;
+                case HookAction::SkipAll:
+                    return stopJob({Outcome::Kind::Finish, "", nullptr});
+                case HookAction::Quit:
+                    return stopJob({Outcome::Kind::Quit, "", nullptr});
+                case HookAction::UserAbort:
+                    return stopJob({Outcome::Kind::UserAbort, "", nullptr});
+                case HookAction::Fatal:
+                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", &frame});
             }
             Job& job = newJob(Job::Kind::Render, position);
+            --rendersLeft_;
             const auto start = Clock::now();
             try {
                 job.interpreter = std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame), cache_, *job.log);
@@ -414,6 +454,7 @@ private:
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
         if (job.kind != Job::Kind::Render || job.failed || decided_ || stopRequested()) return;
+        progress_.started(job.frame->number);
         try {
             auto start = Clock::now();
             const render::World world(*job.scene);
@@ -421,8 +462,21 @@ private:
             start = Clock::now();
             const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
             const render::FrameImage image = render::renderFrame(world, frameSettings(gamma), job.stats);
+            job.shapeTests = world.shapeTests();
             job.renderSeconds = secondsSince(start);
-            if (o_.outputToFile && !decided_) job.encoded = encode(image, gamma, o_.bitDepth, seq_.window);
+            // Encoding, compression and the flush to disk happen here, in
+            // parallel; stage 3 only renames and journals.
+            if (o_.outputToFile && !decided_) {
+                start = Clock::now();
+                const fs::path temporary = image::writeTemporary(job.frame->output, seq_.fileType,
+                                                                 encode(image, gamma, o_.bitDepth, seq_.window));
+                job.temporary = temporary;
+                const auto hash = hashFile(temporary, &job.fileSize);
+                if (!hash)
+                    throw std::runtime_error(fmt::format("cannot read back '{}' for the journal", temporary.string()));
+                job.fileHash = *hash;
+                job.writeSeconds = secondsSince(start);
+            }
         } catch (const sdl::SdlError& e) {
             job.log->message(sdl::Stream::Fatal, e.what());
             job.failed = true;
@@ -440,7 +494,11 @@ private:
         // The next frame in line prints from now on.
         std::lock_guard lock(jobsMutex_);
         head_ = job.index + 1;
-        job.encoded = {};
+        if (!job.temporary.empty()) {  // not committed: the run ended before this frame
+            std::error_code ec;
+            fs::remove(job.temporary, ec);
+            job.temporary.clear();
+        }
         job.log.reset();
         if (head_ < jobs_.size()) {
             Job& next = *jobs_[head_];
@@ -459,26 +517,29 @@ private:
         const size_t index = job.position + 1;
         if (job.kind == Job::Kind::Kept) {
             ++finished_;
+            kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});
+            progress_.finished(frame.number, true);
             if (o_.verbose)
                 say(TextStream::Render, fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
-                                                    frame.number, index, seq_.frames.size(),
-                                                    frame.output.string()));
+                                                    frame.number, index, seq_.frames.size(), frame.output.string()));
             return;
         }
         FrameLog& log = *job.log;
         if (!job.failed && o_.outputToFile) {
             const auto start = Clock::now();
             try {
-                image::writeAtomic(frame.output, seq_.fileType, job.encoded);
+                image::commitTemporary(job.temporary, frame.output);
+                job.temporary.clear();
                 if (journal_) {
                     std::lock_guard lock(journalMutex_);
-                    journal_->record(frame.number, clockText(frame.clock), frame.output);
+                    journal_->record(frame.number, clockText(frame.clock), frame.output, job.fileSize, job.fileHash);
                 }
             } catch (const std::exception& e) {
                 log.message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
                 job.failed = true;
             }
-            job.writeSeconds = secondsSince(start);
+            job.commitSeconds = secondsSince(start);
+            job.writeSeconds += job.commitSeconds;
         }
         if (job.failed) {
             if (o_.outputToFile) log.save(frame.log);
@@ -486,60 +547,59 @@ private:
         }
         ++finished_;
         records_.push_back({frame.number, frame.clock, frame.output.filename().string(), job.stats.rays,
-                            job.parseSeconds, job.prepareSeconds, job.renderSeconds, job.writeSeconds});
+                            std::move(job.shapeTests), job.parseSeconds, job.prepareSeconds, job.renderSeconds,
+                            job.writeSeconds, job.commitSeconds});
         const double seconds = job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
         const std::string where = o_.outputToFile ? frame.output.string() : std::string("(no file)");
         if (o_.verbose) {
             log.message(TextStream::Render,
                         fmt::format("frame {} ({} of {}): {}\n", frame.number, index, seq_.frames.size(), where));
-            log.message(TextStream::Statistic, fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n",
-                                                           frame.number, seconds, job.stats.rays.camera,
-                                                           job.stats.rays.shadow));
+            log.message(TextStream::Statistic,
+                        fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n", frame.number, seconds,
+                                    job.stats.rays.camera, job.stats.rays.shadow));
         }
         if (o_.outputToFile) log.save(frame.log);
+        progress_.finished(frame.number, false);
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
-            case HookAction::Continue: case HookAction::SkipFrame: break;
-            case HookAction::SkipAll: return decide({Outcome::Kind::Finish, "", nullptr});
-            case HookAction::Quit: return decide({Outcome::Kind::Quit, "", nullptr});
-            case HookAction::UserAbort: return decide({Outcome::Kind::UserAbort, "", nullptr});
-            case HookAction::Fatal: return decide({Outcome::Kind::Fatal, "Post_Frame_Command failed", &frame});
+            case HookAction::Continue:
+            case HookAction::SkipFrame:
+                break;
+            case HookAction::SkipAll:
+                return decide({Outcome::Kind::Finish, "", nullptr});
+            case HookAction::Quit:
+                return decide({Outcome::Kind::Quit, "", nullptr});
+            case HookAction::UserAbort:
+                return decide({Outcome::Kind::UserAbort, "", nullptr});
+            case HookAction::Fatal:
+                return decide({Outcome::Kind::Fatal, "Post_Frame_Command failed", &frame});
         }
     }
 
-    // sequence.json beside the frames of an animation: per-frame ray
-    // counts and times, their sums, and how busy the cores were.
+    RunFigures figures() const {
+        RunFigures f;
+        f.scene = seq_.sceneName;
+        f.framesPlanned = seq_.frames.size();
+        f.framesFinished = finished_.load();
+        f.workThreads = threads_;
+        f.framesInFlight = inFlight_;
+        f.wallSeconds = wallSeconds_;
+        f.cpuSeconds = cpuSecondsUsed_;
+        f.frameMemoryEstimate = frameMemory_;
+        f.memoryBudget = memoryBudget_;
+        f.shardIndex = seq_.shardIndex;
+        f.shardCount = seq_.shardCount;
+        return f;
+    }
+
+    // sequence.json (a shard's own sequence.shard-I-of-N.json) beside the
+    // frames of an animation: per-frame statistics, their sums, and how
+    // busy the cores were.
     void writeStatistics() const {
         if (!o_.outputToFile || !seq_.animated || seq_.frames.empty()) return;
         const fs::path dir = seq_.frames.front().output.parent_path();
-        const fs::path path = (dir.empty() ? fs::path(".") : dir) / "sequence.json";
-        render::RayCounts total;
-        double parse = 0, prepare = 0, render = 0, write = 0;
-        std::string frames;
-        for (const FrameRecord& r : records_) {
-            total += r.rays;
-            parse += r.parseSeconds;
-            prepare += r.prepareSeconds;
-            render += r.renderSeconds;
-            write += r.writeSeconds;
-            if (!frames.empty()) frames += ",\n";
-            frames += fmt::format(
-                "    {{\"number\": {}, \"clock\": {}, \"file\": {}, \"rays\": {}, \"parse_seconds\": {:.6f}, "
-                "\"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, \"write_seconds\": {:.6f}}}",
-                r.number, clockText(r.clock), jsonString(r.file), jsonRays(r.rays), r.parseSeconds, r.prepareSeconds,
-                r.prepareSeconds + r.renderSeconds, r.writeSeconds);
-        }
-        const double utilisation =
-            wallSeconds_ > 0 && threads_ > 0 ? cpuSecondsUsed_ / (wallSeconds_ * static_cast<double>(threads_)) : 0;
-        const std::string text = fmt::format(
-            "{{\n  \"scene\": {},\n  \"frames\": [\n{}\n  ],\n  \"rays\": {},\n  \"frames_rendered\": {},\n"
-            "  \"frames_finished\": {},\n  \"frames_planned\": {},\n  \"parse_seconds\": {:.6f},\n"
-            "  \"prepare_seconds\": {:.6f},\n  \"render_seconds\": {:.6f},\n  \"write_seconds\": {:.6f},\n"
-            "  \"wall_seconds\": {:.6f},\n  \"cpu_seconds\": {:.6f},\n  \"work_threads\": {},\n"
-            "  \"frames_in_flight\": {},\n  \"cpu_utilisation\": {:.4f}\n}}\n",
-            jsonString(seq_.sceneName), frames, jsonRays(total), records_.size(), finished_.load(),
-            seq_.frames.size(), parse, prepare, prepare + render, write, wallSeconds_, cpuSecondsUsed_, threads_,
-            inFlight_, utilisation);
-        const fs::path temporary = path.parent_path() / fmt::format(".sequence.json.{}.tmp", getpid());
+        const fs::path path = (dir.empty() ? fs::path(".") : dir) / seq_.statisticsName;
+        const std::string text = sequenceJson(figures(), records_, kept_);
+        const fs::path temporary = path.parent_path() / fmt::format(".{}.{}.tmp", seq_.statisticsName, getpid());
         {
             std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
             out << text;
@@ -556,11 +616,26 @@ private:
         }
     }
 
+    // Frames cancelled after their image was staged (the pipeline drops
+    // them without stage 3) leave no temporary file behind.
+    void removeUnfinishedTemporaries() {
+        std::lock_guard lock(jobsMutex_);
+        for (auto& job : jobs_)
+            if (!job->temporary.empty()) {
+                std::error_code ec;
+                fs::remove(job->temporary, ec);
+                job->temporary.clear();
+            }
+    }
+
     int finish() {
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PostScene)], values(nullptr))) {
-            case HookAction::UserAbort: return userAbort();
-            case HookAction::Fatal: return fatal("Post_Scene_Command failed", nullptr);
-            default: return 0;
+            case HookAction::UserAbort:
+                return userAbort();
+            case HookAction::Fatal:
+                return fatal("Post_Scene_Command failed", nullptr);
+            default:
+                return 0;
         }
     }
 
@@ -600,9 +675,15 @@ private:
     // Runs on the watcher thread when the run missed the grace time. Only
     // the frame at the head of the pipeline can be writing its image.
     void emergencyStop() {
-        if (const FrameSpec* f = current_) {
-            std::error_code ec;
-            fs::remove(image::temporaryPathFor(f->output), ec);
+        // Any frame in flight may have staged its image.
+        {
+            std::unique_lock lock(jobsMutex_, std::try_to_lock);
+            if (lock.owns_lock())
+                for (const auto& job : jobs_)
+                    if (job->frame) {
+                        std::error_code ec;
+                        fs::remove(image::temporaryPathFor(job->frame->output), ec);
+                    }
         }
         std::fputs(stopMessage().c_str(), stderr);
         runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
@@ -613,6 +694,7 @@ private:
     const options::RenderOptions& o_;
     const Sequence& seq_;
     mutable RunStreams streams_;
+    Progress progress_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
     std::mutex journalMutex_;
@@ -633,6 +715,9 @@ private:
 
     // Statistics (stage 3 appends; read after the pipeline).
     std::vector<FrameRecord> records_;
+    std::vector<KeptFrame> kept_;
+    std::uint64_t frameMemory_ = 0, memoryBudget_ = 0;
+    size_t rendersLeft_ = 0;  // stage 1 of the current pipeline phase
     size_t threads_ = 1;
     size_t inFlight_ = 1;
     Clock::time_point runStart_;
@@ -642,6 +727,13 @@ private:
 }  // namespace
 
 int runSequence(const options::RenderOptions& o, const Sequence& seq) {
+    if (seq.frames.empty()) {
+        // More shards than frames: nothing is this shard's.
+        if (o.verbose)
+            std::fprintf(stderr, "frameray: shard %d of %d has no frames of the %zu in the sequence\n", seq.shardIndex,
+                         seq.shardCount, seq.framesInAllShards);
+        return 0;
+    }
     try {
         Run run(o, seq);
         return run.execute();

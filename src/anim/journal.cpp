@@ -131,11 +131,16 @@ void Journal::record(int number, const std::string& clock, const fs::path& image
     std::uintmax_t size = 0;
     const auto h = hashFile(image, &size);
     if (!h) throw std::runtime_error(fmt::format("cannot read back '{}' for the journal", image.string()));
+    record(number, clock, image, size, *h);
+}
+
+void Journal::record(int number, const std::string& clock, const fs::path& image, std::uintmax_t size,
+                     std::uint64_t hash) {
     std::fprintf(file_, "frame %d %s %ju %016llx %s\n", number, clock.c_str(), size,
-                 static_cast<unsigned long long>(*h), image.filename().c_str());
+                 static_cast<unsigned long long>(hash), image.filename().c_str());
     std::fflush(file_);
     fsync(fileno(file_));
-    entries_[number] = JournalEntry{number, clock, size, *h, image.filename().string()};
+    entries_[number] = JournalEntry{number, clock, size, hash, image.filename().string()};
 }
 
 }  // namespace frameray::anim

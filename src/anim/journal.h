@@ -45,6 +45,10 @@ public:
     bool verified(int number, const std::string& clock, const std::filesystem::path& image) const;
     // Records a finished frame (hashing its file) and flushes to disk.
     void record(int number, const std::string& clock, const std::filesystem::path& image);
+    // The same with the file's size and hash already known (hashed off the
+    // serial stage, from the temporary file before its rename).
+    void record(int number, const std::string& clock, const std::filesystem::path& image, std::uintmax_t size,
+                std::uint64_t hash);
 
     // Whether a resume found an older journal written with other settings.
     bool discardedStale() const { return discardedStale_; }

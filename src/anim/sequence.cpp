@@ -93,7 +93,8 @@ Sequence planSequence(const options::RenderOptions& o) {
     seq.window.y1 = windowEnd(o.endRow, o.height);
     if (seq.window.x0 < 0 || seq.window.x0 >= o.width || seq.window.y0 < 0 || seq.window.y0 >= o.height)
         throw options::OptionError(
-            fmt::format("invalid start column or row: Start_Column {} / Start_Row {} is outside the {}x{} image",
+            fmt::format("invalid start column or row: Start_Column {} / Start_Row {} is outside "
+                        "the {}x{} image",
                         o.startColumn, o.startRow, o.width, o.height));
     if (seq.window.x1 > o.width || seq.window.y1 > o.height)
         throw options::OptionError(
@@ -146,6 +147,26 @@ Sequence planSequence(const options::RenderOptions& o) {
     // The journal sits beside the images, named after the sequence.
     const fs::path firstOut = outputName(o, seq.fileType, false, 0, 0);
     seq.journal = firstOut.parent_path() / fmt::format(".{}.frameray-journal", firstOut.stem().string());
+    seq.framesInAllShards = seq.frames.size();
+    if (o.shardCount > 1 || o.shardIndex != 0) {
+        if (o.shardIndex < 0 || o.shardIndex >= o.shardCount)
+            throw options::OptionError(fmt::format("Shard_Index {} is outside 0 to {} (Shard_Count {})", o.shardIndex,
+                                                   o.shardCount - 1, o.shardCount));
+        // Interleaved rather than in blocks: neighbouring frames cost about
+        // the same, so every shard gets its share of the slow stretches.
+        std::vector<FrameSpec> mine;
+        for (size_t i = static_cast<size_t>(o.shardIndex); i < seq.frames.size();
+             i += static_cast<size_t>(o.shardCount))
+            mine.push_back(seq.frames[i]);
+        seq.frames = std::move(mine);
+        seq.shardIndex = o.shardIndex;
+        seq.shardCount = o.shardCount;
+        // Several processes write into one folder: each keeps its own
+        // journal and statistics, named after its shard.
+        const std::string tag = fmt::format("shard-{}-of-{}", o.shardIndex, o.shardCount);
+        seq.journal = firstOut.parent_path() / fmt::format(".{}.{}.frameray-journal", firstOut.stem().string(), tag);
+        seq.statisticsName = fmt::format("sequence.{}.json", tag);
+    }
     return seq;
 }
 

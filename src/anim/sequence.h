@@ -40,6 +40,11 @@ struct Sequence {
     // The journal of finished frames, beside the images (Continue_Trace).
     std::filesystem::path journal;
     std::string sceneName;  // the scene file's name without folder and extension (%s)
+    // Shard_Index / Shard_Count: `frames` holds this shard's frames only;
+    // the journal and the statistics file are the shard's own.
+    int shardIndex = 0, shardCount = 1;
+    size_t framesInAllShards = 0;
+    std::string statisticsName = "sequence.json";
 };
 
 // Throws options::OptionError when the options make no sense (a render

@@ -1,6 +1,7 @@
 #include "image/image_io.h"
 
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -68,6 +69,10 @@ bool isTemporaryFor(const std::string& name, const std::string& target, long& pi
 }
 
 void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image) {
+    commitTemporary(writeTemporary(path, type, image), path);
+}
+
+fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage& image) {
     const TypeInfo& ti = info(type);
     auto out = OIIO::ImageOutput::create(ti.oiioFormat);
     if (!out) throw std::runtime_error(fmt::format("no image writer for {}: {}", ti.oiioFormat, OIIO::geterror()));
@@ -104,6 +109,20 @@ void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image)
         throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(),
                                              writeError.empty() ? out->geterror() : writeError));
     }
+    // On disk before it is renamed and journalled: a frame the journal
+    // calls finished must survive a power cut.
+    const int fd = ::open(tmp.c_str(), O_RDONLY);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    if (fd >= 0) ::close(fd);
+    if (!synced) {
+        fs::remove(tmp, ec);
+        throw std::runtime_error(fmt::format("cannot write '{}': cannot flush it to disk", path.string()));
+    }
+    return tmp;
+}
+
+void commitTemporary(const fs::path& tmp, const fs::path& path) {
+    std::error_code ec;
     fs::rename(tmp, path, ec);
     if (ec) {
         fs::remove(tmp, ec);

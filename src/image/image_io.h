@@ -37,6 +37,12 @@ bool isTemporaryFor(const std::string& name, const std::string& target, long& pi
 // destination is untouched then.
 void writeAtomic(const std::filesystem::path& path, FileType type, const EncodedImage& image);
 
+// writeAtomic in two steps, so the slow one can run apart from the other:
+// writeTemporary encodes the image into temporaryPathFor(path) and flushes
+// it to disk (returning that name); commitTemporary renames it into place.
+std::filesystem::path writeTemporary(const std::filesystem::path& path, FileType type, const EncodedImage& image);
+void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
 // Reads any image OpenImageIO knows as floats in [0,1] (tests, tools).
 EncodedImage read(const std::filesystem::path& path);
 

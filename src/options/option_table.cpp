@@ -297,8 +297,9 @@ const OptionSpec kOptions[] = {
      nullptr},
     {"Frames_In_Flight", "WF", OptionType::Int, "threads + 1, at most 16",
      "Frames an animation keeps in flight at once: one is parsed (in frame order) while the others render. 1 "
-     "renders frame after frame; the images are the same either way. With Pre_Frame_Command or "
-     "Post_Frame_Command set, frames run one at a time.",
+     "renders frame after frame; the images are the same either way. Lowered to what fits in memory (the first "
+     "frame, rendered alone, gives the estimate). With Pre_Frame_Command or Post_Frame_Command set, frames run one "
+     "at a time.",
      [](RenderOptions& o, const OptionInput& in) { o.framesInFlight = toPositiveInt(in.value); },
      FR_WRITE(num(o.framesInFlight)), nullptr},
     {"Height", "H", OptionType::Int, "600", "Image height in pixels.",
@@ -395,6 +396,18 @@ const OptionSpec kOptions[] = {
      "the window are written black (alpha 0).",
      [](RenderOptions& o, const OptionInput& in) { o.startColumn = toNonNegative(in.value); },
      FR_WRITE(num(o.startColumn)), nullptr},
+    {"Shard_Count", "SHC", OptionType::Int, "1",
+     "Split the frames among this many processes (Slurm array tasks, Kubernetes Job indexes): each renders every "
+     "Shard_Count-th frame of the (subset, stepped) sequence, starting at Shard_Index, into the same folder, with "
+     "its own journal (+C resumes it). Refused for scenes whose frames pass state through files (#fopen write).",
+     [](RenderOptions& o, const OptionInput& in) { o.shardCount = toPositiveInt(in.value); },
+     FR_WRITE(num(o.shardCount)), nullptr},
+    {"Shard_Index", "SHI", OptionType::Int, "0", "Which shard this process renders: 0 to Shard_Count - 1.",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.shardIndex = toInt(in.value);
+         if (o.shardIndex < 0) throw std::invalid_argument(fmt::format("'{}' must not be negative", in.value));
+     },
+     FR_WRITE(num(o.shardIndex)), nullptr},
     {"Start_Row", "SR", OptionType::Window, "1",
      "First row of the render window: a pixel number, or a fraction of the height below 1.0.",
      [](RenderOptions& o, const OptionInput& in) { o.startRow = toNonNegative(in.value); },

@@ -61,6 +61,10 @@ struct RenderOptions {
     bool subsetStartSet = false, subsetEndSet = false;
     int frameStep = 1;
     bool fieldRender = false;
+    // Distribution: this process renders the frames whose position in the
+    // (subset, stepped) sequence modulo shardCount is shardIndex.
+    int shardIndex = 0;
+    int shardCount = 1;
     bool oddField = false;
 
     // Tracing quality.

@@ -19,6 +19,7 @@ struct TraceContext {
     double tMax;
     const scene::Object* hitObject;
     scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
+    std::uint64_t* tests = nullptr;                // the calling thread's counters, by kind
 };
 
 float roundUp(double v) {
@@ -57,6 +58,7 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
+    ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
     const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
     scene::SurfaceHit h;
     if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, ctx->kind, h)) return;
@@ -72,6 +74,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
+    ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
     const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
     scene::SurfaceHit h;
     if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
@@ -96,9 +99,41 @@ RTCRay toEmbreeRay(const scene::Ray& ray, double tMax) {
     return r;
 }
 
+const char* csgName(scene::CsgOp op) {
+    switch (op) {
+        case scene::CsgOp::Union:
+            return "union";
+        case scene::CsgOp::Merge:
+            return "merge";
+        case scene::CsgOp::Intersection:
+            return "intersection";
+        case scene::CsgOp::Difference:
+            return "difference";
+    }
+    return "csg";
+}
+
 }  // namespace
 
-World::World(const scene::Scene& scene) : scene_(scene) {
+std::uint16_t World::kindOf(const scene::Object& object) {
+    const std::string name = object.isCsg() ? csgName(object.op) : object.shape->name();
+    const auto it = std::find(kindNames_.begin(), kindNames_.end(), name);
+    if (it != kindNames_.end()) return static_cast<std::uint16_t>(it - kindNames_.begin());
+    kindNames_.push_back(name);
+    return static_cast<std::uint16_t>(kindNames_.size() - 1);
+}
+
+ShapeTestCounts World::shapeTests() const {
+    std::vector<std::uint64_t> sum(kindNames_.size(), 0);
+    for (const Counters& c : tests_)
+        for (size_t i = 0; i < c.size(); ++i) sum[i] += c[i];
+    ShapeTestCounts out;
+    for (size_t i = 0; i < kindNames_.size(); ++i) out.emplace_back(kindNames_[i], sum[i]);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+World::World(const scene::Scene& scene) : scene_(scene), tests_([this] { return Counters(kindNames_.size(), 0); }) {
     device_ = rtcNewDevice("verbose=0");
     if (!device_) throw std::runtime_error("Embree: cannot create a device");
     bvh_ = rtcNewScene(device_);
@@ -109,10 +144,12 @@ World::World(const scene::Scene& scene) : scene_(scene) {
         if (bounds.isEmpty()) continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
         if (!bounds.isFinite()) {
             unbounded_.push_back(obj.get());
+            unboundedKinds_.push_back(kindOf(*obj));
             continue;
         }
         bounded_.objects.push_back(obj.get());
         bounded_.bounds.push_back(bounds);
+        bounded_.kinds.push_back(kindOf(*obj));
     }
     if (!bounded_.objects.empty()) {
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
@@ -142,13 +179,16 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
     ctx.tMax = tMax;
     ctx.hitObject = nullptr;
     ctx.kind = kind;
+    ctx.tests = counters();
     if (hasBounded_) {
         RTCRayHit rh{};
         rh.ray = toEmbreeRay(ray, tMax);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(bvh_, &ctx.embree, &rh);
     }
-    for (const scene::Object* obj : unbounded_) {
+    for (size_t i = 0; i < unbounded_.size(); ++i) {
+        const scene::Object* obj = unbounded_[i];
+        ++ctx.tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
         if (obj->firstHit(ray, tMin, ctx.tMax, kind, h)) {
             ctx.tMax = h.t;
@@ -162,7 +202,10 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
 }
 
 bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
-    for (const scene::Object* obj : unbounded_) {
+    std::uint64_t* tests = counters();
+    for (size_t i = 0; i < unbounded_.size(); ++i) {
+        const scene::Object* obj = unbounded_[i];
+        ++tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
         if (obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) return true;
     }
@@ -174,6 +217,7 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
     ctx.tMax = tMax;
     ctx.hitObject = nullptr;
     ctx.kind = scene::RayKind::Shadow;
+    ctx.tests = tests;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     return ctx.hitObject != nullptr;

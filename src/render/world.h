@@ -5,12 +5,22 @@
 #pragma once
 
 #include <embree3/rtcore.h>
+#include <tbb/enumerable_thread_specific.h>
 
+#include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene.h"
 
 namespace frameray::render {
+
+// Intersection tests of one frame by the kind of top-level object tested
+// (a shape's name; a CSG tree counts once, under its operation), sorted by
+// kind. A test is one exact (double-precision) test of an object the BVH
+// could not rule out, or of an unbounded object.
+using ShapeTestCounts = std::vector<std::pair<std::string, std::uint64_t>>;
 
 // The closest surface a ray meets: its distance parameter and the
 // primitive hit (for a CSG object, the child whose surface it is; its
@@ -44,11 +54,15 @@ public:
 
     const scene::Scene& scene() const { return scene_; }
 
+    // The tests made so far by every thread; call once rendering is over.
+    ShapeTestCounts shapeTests() const;
+
     // The BVH's primitives (the bounded top-level objects) and their world
     // bounds, both indexed by Embree's primID.
     struct Primitives {
         std::vector<const scene::Object*> objects;
         std::vector<scene::Bounds> bounds;
+        std::vector<std::uint16_t> kinds;  // index into kindNames_, for the statistics
     };
 
 private:
@@ -57,7 +71,17 @@ private:
     RTCScene bvh_ = nullptr;
     Primitives bounded_;
     std::vector<const scene::Object*> unbounded_;
+    std::vector<std::uint16_t> unboundedKinds_;
     bool hasBounded_ = false;
+    // Per-frame statistics: each thread counts into its own array (one
+    // counter per kind), so the hot path takes no lock and shares no cache
+    // line; the World lives for one frame, so no state outlives it.
+    std::vector<std::string> kindNames_;
+    using Counters = std::vector<std::uint64_t>;
+    mutable tbb::enumerable_thread_specific<Counters, tbb::cache_aligned_allocator<Counters>, tbb::ets_key_per_instance>
+        tests_;
+    std::uint16_t kindOf(const scene::Object& object);
+    std::uint64_t* counters() const { return tests_.local().data(); }
 };
 
 

@@ -126,7 +126,11 @@ void Interpreter::directiveFopen(const Token& at) {
         case Keyword::kw_read: {
             const fs::path path = findIncludeFile(name);
             std::ifstream in(path.empty() ? fs::path(name) : path, std::ios::binary);
-            if (!in) fail(at, fmt::format("cannot open '{}' for reading", name));
+            if (!in)
+                fail(at, frame_.refuseFileWrites.empty()
+                             ? fmt::format("cannot open '{}' for reading", name)
+                             : fmt::format("cannot open '{}' for reading; if an earlier frame writes it, {}", name,
+                                           frame_.refuseFileWrites));
             std::ostringstream text;
             text << in.rdbuf();
             handle->content = text.str();
@@ -134,6 +138,9 @@ void Interpreter::directiveFopen(const Token& at) {
         }
         case Keyword::kw_write:
         case Keyword::kw_append:
+            if (!frame_.refuseFileWrites.empty())
+                fail(at, fmt::format("'{}' is opened for {}: {}", name, mode.kw == Keyword::kw_append ? "append" : "write",
+                                     frame_.refuseFileWrites));
             handle->writing = true;
             handle->out.open(name, std::ios::binary | (mode.kw == Keyword::kw_append ? std::ios::app : std::ios::trunc));
             if (!handle->out) fail(at, fmt::format("cannot open '{}' for writing", name));

@@ -22,6 +22,11 @@ struct FrameContext {
     // Declare=Name=Value options: numbers become floats, others strings.
     std::vector<std::pair<std::string, std::string>> declares;
     double version = 3.7;  // Version option (+MV); #version overrides
+    // Non-empty: #fopen ... write/append is an error with this message,
+    // before the file is touched (a sharded run: frames that pass state
+    // through files cannot be rendered apart). A file that cannot be
+    // opened for reading adds it to its message too.
+    std::string refuseFileWrites;
 };
 
 // The text streams of a frame (debug, warning...), routed by the frame

@@ -44,7 +44,15 @@ def run(frameray, root, scene, out, switches):
         elif name.endswith(".log"):
             with open(path) as f:
                 files[name] = TIMING.sub("<t>", f.read()).replace(out, "<out>")
-    console = TIMING.sub("<t>", proc.stderr).replace(out, "<out>")
+    # Progress lines (one per finished frame when stderr is not a terminal)
+    # and the summary table at the end carry times and the settings; the
+    # rest of the console must read the same.
+    text = proc.stderr
+    if "progress: frame 24 - 24 of 24 done" not in text or "frameray summary" not in text:
+        fail(f"{switches}: no progress lines or summary on the console:\n{text}")
+    text = text[:text.index("frameray summary")]
+    text = "".join(line for line in text.splitlines(True) if not line.startswith("progress: "))
+    console = TIMING.sub("<t>", text).replace(out, "<out>")
     return files, console, os.path.join(out, "sequence.json")
 
 
@@ -70,6 +78,11 @@ def check_statistics(path, switches, frames):
             total[key] += frame["rays"][key]
         if frame["number"] != i + 1:
             fail(f"{switches}: sequence.json frame {i} is number {frame['number']}")
+        stats_keys = ("rays", "intersection_tests", "parse_seconds", "render_seconds")
+        if any(key not in frame.get("stats", {}) for key in stats_keys):
+            fail(f"{switches}: sequence.json frame {i} has no 'stats' with {stats_keys}")
+        if frame["stats"]["rays"] != frame["rays"] or not frame["stats"]["intersection_tests"]:
+            fail(f"{switches}: sequence.json frame {i} stats: {frame['stats']}")
         if frame["rays"]["camera"] != 160 * 120:
             fail(f"{switches}: frame {i + 1} has {frame['rays']['camera']} camera rays")
     if stats["rays"] != total:
@@ -97,6 +110,12 @@ def main():
         if len(pngs) != 24:
             fail(f"{switches}: {len(pngs)} frames written, expected 24")
         stats = check_statistics(stats_path, switches, 24)
+        # With more than one frame in flight the first frame is measured
+        # alone and bounds the others by memory.
+        wanted = int(switches[1].split("=")[-1].lstrip("+WF"))
+        if wanted > 1 and not (stats["frame_memory_estimate_bytes"] > 0 and 1 <= stats["frames_in_flight"] <= wanted):
+            fail(f"{switches}: no memory estimate or frames in flight out of range: "
+                 f"{stats['frame_memory_estimate_bytes']}, {stats['frames_in_flight']}")
         if reference is None:
             reference = (switches, files, console, stats["rays"])
             continue
