@@ -46,6 +46,35 @@ TEST(Torus, FarAwayRayKeepsPrecision) {
     EXPECT_NEAR(ts[1], 1e7 - 2 + x, 1e-7);
 }
 
+TEST(Torus, GrazingRays) {
+    // Rays tangent to the outer equator, to the top of the tube and to the
+    // inner equator: a double root. Whatever the solver reports must lie at
+    // the tangent point (once or as a pair), never elsewhere, never NaN.
+    for (bool sturm : {false, true}) {
+        const Torus torus(2, 0.5, sturm);
+        struct Case {
+            Vec3 origin, dir;
+            double tangentT;
+        };
+        const Case cases[] = {{{-10, 0, 2.5}, {1, 0, 0}, 10},
+                              {{-10, 0.5, 0}, {1, 0, 0}, 8},  // touches the top at x = -2 and x = 2
+                              {{-10, 0, 1.5}, {1, 0, 0}, 10}};
+        for (const Case& c : cases) {
+            const auto ts = hits(torus, c.origin, c.dir);
+            for (double t : ts) {
+                ASSERT_TRUE(std::isfinite(t));
+                const bool nearTangent = std::fabs(t - c.tangentT) < 1e-4 ||
+                                         std::fabs(t - 12) < 1e-4 || std::fabs(t - 8) < 1e-4 ||
+                                         std::fabs(t - (10 - std::sqrt(1.75))) < 1e-9 ||
+                                         std::fabs(t - (10 + std::sqrt(1.75))) < 1e-9;
+                EXPECT_TRUE(nearTangent) << "t = " << t << (sturm ? " (sturm)" : "");
+            }
+        }
+        // Just outside the outer equator: a clean miss.
+        EXPECT_TRUE(hits(torus, {-10, 0, 2.5 + 1e-9}, {1, 0, 0}).empty());
+    }
+}
+
 TEST(Torus, InsideAndNormal) {
     const Torus torus(2, 0.5, false);
     EXPECT_TRUE(torus.inside({2, 0.4, 0}));
