@@ -202,6 +202,11 @@ private:
     bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
     std::shared_ptr<const scene::Shape> parseShape(const Token& kind);  // after '{'
     void parseCsgChildren(const Token& kind, scene::Object& csg);     // union/merge/... objects
+    // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
+    std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseBlob();
+    std::vector<double> parseCoefficientVector(int count, const Token& kind);
+    void applySturm(scene::Object& obj, const Token& at);  // after `sturm`
     // clipped_by { objects } / bounded_by { objects }, or the other list
     // when the block names `alternative`.
     std::vector<scene::ObjectRef> parseObjectList(const Token& modifier, Keyword alternative,

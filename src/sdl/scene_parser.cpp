@@ -26,13 +26,13 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_sphere, true},         {Keyword::kw_box, true},
     {Keyword::kw_plane, true},          {Keyword::kw_object, true},
     {Keyword::kw_cylinder, true},       {Keyword::kw_cone, true},
-    {Keyword::kw_torus, false},         {Keyword::kw_disc, true},
+    {Keyword::kw_torus, true},          {Keyword::kw_disc, true},
     {Keyword::kw_triangle, true},       {Keyword::kw_smooth_triangle, true},
-    {Keyword::kw_quadric, true},        {Keyword::kw_quartic, false},
-    {Keyword::kw_cubic, false},         {Keyword::kw_poly, false},
+    {Keyword::kw_quadric, true},        {Keyword::kw_quartic, true},
+    {Keyword::kw_cubic, true},          {Keyword::kw_poly, true},
     {Keyword::kw_union, true},          {Keyword::kw_merge, true},
     {Keyword::kw_intersection, true},   {Keyword::kw_difference, true},
-    {Keyword::kw_blob, false},          {Keyword::kw_lathe, false},
+    {Keyword::kw_blob, true},           {Keyword::kw_lathe, false},
     {Keyword::kw_sor, false},           {Keyword::kw_prism, false},
     {Keyword::kw_superellipsoid, false}, {Keyword::kw_sphere_sweep, false},
     {Keyword::kw_isosurface, false},    {Keyword::kw_parametric, false},
@@ -258,6 +258,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             return std::make_shared<scene::Quadric>(
                 scene::Quadric::Coefficients{sq.x, sq.y, sq.z, mixed.x, mixed.y, mixed.z, lin.x, lin.y, lin.z, j});
         }
+        case Keyword::kw_torus: case Keyword::kw_poly: case Keyword::kw_cubic: case Keyword::kw_quartic:
+        case Keyword::kw_blob: return parsePolynomialShape(kind);
         default: unsupported(kind, std::string(kind.text));
     }
 }
@@ -339,6 +341,7 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_no_image: next(); obj.noImage = true; return true;
         case Keyword::kw_no_reflection: next(); obj.noReflection = true; return true;
         case Keyword::kw_hierarchy: next(); parseOptionalBool(); return true;  // a BVH is always built
+        case Keyword::kw_sturm: next(); applySturm(obj, tok); return true;
         case Keyword::kw_hollow:
             // Only changes media and fog inside the object; neither exists yet.
             next();

@@ -122,10 +122,10 @@ TEST(Errors, MissingEndAndUnsupported) {
     struct : MessageSink { void message(Stream, const std::string&) override {} } sink;
     EXPECT_THROW(Interpreter(ctx, cache, sink).parseText("s.pov", "#if (1)\n#declare A = 1;\n"), SdlError);
     try {
-        Interpreter(ctx, cache, sink).parseText("s.pov", "torus { 1, 0.5 }");
+        Interpreter(ctx, cache, sink).parseText("s.pov", "julia_fractal { <1, 0, 0, 0> }");
         FAIL();
     } catch (const SdlError& e) {
-        EXPECT_EQ(e.message(), "not supported yet: torus");
+        EXPECT_EQ(e.message(), "not supported yet: julia_fractal");
     }
 }
 

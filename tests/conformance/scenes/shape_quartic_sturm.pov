@@ -1,0 +1,20 @@
+// Conformance: quartics from shapesq.inc solved with `sturm` (Sturm
+// sequences), including the surfaces with sharp features (the piriform's
+// tip, Steiner's surface, the witch hat) where the closed form is weakest.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+#include "shapes.inc"
+#include "shapesq.inc"
+
+camera { location <0, 3, -7> look_at <0, 0.3, 0> angle 55 }
+light_source { <-5, 10, -6> color rgb 1 }
+plane { y, -1.5 pigment { color rgb <0.75, 0.75, 0.7> } }
+
+object { Piriform sturm rotate z * 90 scale 1.2 translate <-2.2, -0.3, 0.5>
+    pigment { color rgb <0.9, 0.5, 0.2> } finish { phong 0.5 } }
+object { Steiner_Surface sturm clipped_by { sphere { 0, 1 } } scale 1.4 rotate <30, 20, 0> translate <0, 0.4, 1>
+    pigment { color rgb <0.3, 0.8, 0.35> } finish { phong 0.4 } }
+object { Witch_Hat sturm clipped_by { box { <-2, -0.1, -2>, <2, 2, 2> } } rotate x * -90 scale 0.8 translate <2, -0.4, 0.3>
+    pigment { color rgb <0.3, 0.5, 0.95> } }
+object { Torus_40_12 sturm scale 0.1 rotate x * -60 translate <0.3, -0.5, -2>
+    pigment { color rgb <0.9, 0.85, 0.3> } finish { phong 0.3 } }
