@@ -28,7 +28,7 @@ std::vector<double> Interpreter::parseCoefficientVector(int count, const Token& 
     values.reserve(count);
     for (;;) {
         const Token at = peek();
-        values.push_back(toFloat(parseTernary(true), at));
+        values.push_back(toFloat(parseAdditive(), at));
         if (!accept(Sym::Comma)) break;
     }
     const Token close = peek();
