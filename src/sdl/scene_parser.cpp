@@ -34,8 +34,8 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_intersection, true},   {Keyword::kw_difference, true},
     {Keyword::kw_blob, false},          {Keyword::kw_lathe, false},
     {Keyword::kw_sor, false},           {Keyword::kw_prism, false},
-    {Keyword::kw_superellipsoid, false}, {Keyword::kw_sphere_sweep, false},
-    {Keyword::kw_isosurface, false},    {Keyword::kw_parametric, false},
+    {Keyword::kw_superellipsoid, true}, {Keyword::kw_sphere_sweep, true},
+    {Keyword::kw_isosurface, true},    {Keyword::kw_parametric, false},
     {Keyword::kw_mesh, true},           {Keyword::kw_mesh2, true},
     {Keyword::kw_height_field, true},   {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},          {Keyword::kw_julia_fractal, false},
@@ -257,6 +257,9 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             return std::make_shared<scene::Quadric>(
                 scene::Quadric::Coefficients{sq.x, sq.y, sq.z, mixed.x, mixed.y, mixed.z, lin.x, lin.y, lin.z, j});
         }
+        case Keyword::kw_superellipsoid: return parseSuperellipsoid(kind);
+        case Keyword::kw_isosurface: return parseIsosurface(kind);
+        case Keyword::kw_sphere_sweep: return parseSphereSweep(kind);
         default: unsupported(kind, std::string(kind.text));
     }
 }
