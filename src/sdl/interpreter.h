@@ -263,6 +263,9 @@ private:
     std::shared_ptr<const scene::Shape> parseSuperellipsoid(const Token& kind);
     std::shared_ptr<const scene::Shape> parseIsosurface(const Token& kind);
     std::shared_ptr<const scene::Shape> parseSphereSweep(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseLathe(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseSor(const Token& kind);
+    std::shared_ptr<const scene::Shape> parsePrism(const Token& kind);
 
     FrameContext frame_;
     TokenCache& cache_;

@@ -7,7 +7,9 @@
 #include <unordered_set>
 
 #include "scene/isosurface.h"
+#include "scene/prism.h"
 #include "scene/sphere_sweep.h"
+#include "scene/spline_revolution.h"
 #include "scene/superellipsoid.h"
 #include "sdl/function_value.h"
 #include "sdl/interpreter.h"
@@ -35,6 +37,121 @@ std::string unavailableIn(const CompiledFunction& fn,
 }
 
 }  // namespace
+
+// The optional spline kind of a lathe or prism; linear when absent.
+static bool acceptSplineKind(Keyword kw, scene::SplineKind& kind) {
+    switch (kw) {
+        case Keyword::kw_linear_spline:
+            kind = scene::SplineKind::Linear;
+            return true;
+        case Keyword::kw_quadratic_spline:
+            kind = scene::SplineKind::Quadratic;
+            return true;
+        case Keyword::kw_cubic_spline:
+            kind = scene::SplineKind::Cubic;
+            return true;
+        case Keyword::kw_bezier_spline:
+            kind = scene::SplineKind::Bezier;
+            return true;
+        default:
+            return false;
+    }
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseLathe(const Token& kind) {
+    scene::SplineKind spline = scene::SplineKind::Linear;
+    if (acceptSplineKind(peek().kw, spline)) next();
+    const Token countAt = peek();
+    const int count = static_cast<int>(parseFloat());
+    const int minimum = scene::pointsPerSegment(spline);
+    if (count < minimum || (spline == scene::SplineKind::Bezier && count % 4 != 0))
+        fail(countAt, spline == scene::SplineKind::Bezier
+                          ? std::string("lathe with bezier_spline needs a multiple of 4 points")
+                          : fmt::format("lathe needs at least {} points for this spline", minimum));
+    std::vector<scene::ProfilePoint> points;
+    for (int i = 0; i < count; ++i) {
+        accept(Sym::Comma);
+        const VectorValue v = parseVector();
+        points.push_back({v.v[0], v.v[1]});
+    }
+    accept(Keyword::kw_sturm);  // the solver is exact enough either way
+    (void)kind;
+    return std::make_shared<scene::Lathe>(spline, points);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseSor(const Token& kind) {
+    const Token countAt = peek();
+    const int count = static_cast<int>(parseFloat());
+    if (count < 4) fail(countAt, "sor needs at least 4 points");
+    std::vector<scene::ProfilePoint> points;
+    for (int i = 0; i < count; ++i) {
+        accept(Sym::Comma);
+        const Token at = peek();
+        const VectorValue v = parseVector();
+        points.push_back({v.v[0], v.v[1]});
+        if (i > 0 && !(points[i].v > points[i - 1].v))
+            fail(at, "Incorrect point in surface of revolution: heights must increase");
+    }
+    bool open = false;
+    for (;;) {
+        if (accept(Keyword::kw_open))
+            open = true;
+        else if (!accept(Keyword::kw_sturm))
+            break;
+    }
+    (void)kind;
+    return std::make_shared<scene::Sor>(points, open);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parsePrism(const Token& kind) {
+    scene::SplineKind spline = scene::SplineKind::Linear;
+    bool conic = false;
+    for (;;) {
+        const Token t = peek();
+        if (acceptSplineKind(t.kw, spline)) {
+            next();
+        } else if (t.is(Keyword::kw_linear_sweep)) {
+            next();
+            conic = false;
+        } else if (t.is(Keyword::kw_conic_sweep)) {
+            next();
+            conic = true;
+        } else {
+            break;
+        }
+    }
+    const double h1 = parseFloat();
+    expect(Sym::Comma, "',' between the prism's heights");
+    const double h2 = parseFloat();
+    expect(Sym::Comma, "',' after the prism's heights");
+    const Token countAt = peek();
+    const int count = static_cast<int>(parseFloat());
+    const int minimum =
+        spline == scene::SplineKind::Linear ? 3 : (spline == scene::SplineKind::Quadratic ? 4 : 5);
+    if (count < minimum || (spline == scene::SplineKind::Bezier && count % 4 != 0))
+        fail(countAt, spline == scene::SplineKind::Bezier
+                          ? std::string("prism with bezier_spline needs a multiple of 4 points")
+                          : fmt::format("prism needs at least {} points for this spline", minimum));
+    std::vector<scene::ProfilePoint> points;
+    for (int i = 0; i < count; ++i) {
+        accept(Sym::Comma);
+        const VectorValue v = parseVector();
+        points.push_back({v.v[0], v.v[1]});
+    }
+    bool open = false;
+    for (;;) {
+        if (accept(Keyword::kw_open))
+            open = true;
+        else if (!accept(Keyword::kw_sturm))
+            break;
+    }
+    if (h1 == h2) fail(kind, "prism heights must differ");
+    bool unclosed = false;
+    auto outline = scene::Prism::outlineOf(spline, points, unclosed);
+    if (unclosed)
+        warn(kind, "Prism not closed: its last sub-shape does not end at its first point.");
+    return std::make_shared<scene::Prism>(std::move(outline), h1, h2, conic, open);
+}
 
 std::shared_ptr<const scene::Shape> Interpreter::parseSuperellipsoid(const Token& kind) {
     const VectorValue v = parseVector();
