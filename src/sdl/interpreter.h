@@ -264,6 +264,15 @@ private:
     size_t parseMesh2List(const Token& kw, ReadItem readItem);
     bool parseOptionalBool();  // an optional boolean after a flag keyword; true when absent
 
+    // --- superellipsoid, isosurface, lathe, sor, prism, sphere_sweep
+    // (parse_sweep_shapes.cpp), each after its '{' ---
+    std::shared_ptr<const scene::Shape> parseSuperellipsoid(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseIsosurface(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseSphereSweep(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseLathe(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseSor(const Token& kind);
+    std::shared_ptr<const scene::Shape> parsePrism(const Token& kind);
+
     FrameContext frame_;
     TokenCache& cache_;
     MessageSink& messages_;

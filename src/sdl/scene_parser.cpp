@@ -32,10 +32,10 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_cubic, true},          {Keyword::kw_poly, true},
     {Keyword::kw_union, true},          {Keyword::kw_merge, true},
     {Keyword::kw_intersection, true},   {Keyword::kw_difference, true},
-    {Keyword::kw_blob, true},           {Keyword::kw_lathe, false},
-    {Keyword::kw_sor, false},           {Keyword::kw_prism, false},
-    {Keyword::kw_superellipsoid, false}, {Keyword::kw_sphere_sweep, false},
-    {Keyword::kw_isosurface, false},    {Keyword::kw_parametric, false},
+    {Keyword::kw_blob, true},           {Keyword::kw_lathe, true},
+    {Keyword::kw_sor, true},            {Keyword::kw_prism, true},
+    {Keyword::kw_superellipsoid, true}, {Keyword::kw_sphere_sweep, true},
+    {Keyword::kw_isosurface, true},     {Keyword::kw_parametric, false},
     {Keyword::kw_mesh, true},           {Keyword::kw_mesh2, true},
     {Keyword::kw_height_field, true},   {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},          {Keyword::kw_julia_fractal, false},
@@ -260,6 +260,12 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
         }
         case Keyword::kw_torus: case Keyword::kw_poly: case Keyword::kw_cubic: case Keyword::kw_quartic:
         case Keyword::kw_blob: return parsePolynomialShape(kind);
+        case Keyword::kw_superellipsoid: return parseSuperellipsoid(kind);
+        case Keyword::kw_isosurface: return parseIsosurface(kind);
+        case Keyword::kw_sphere_sweep: return parseSphereSweep(kind);
+        case Keyword::kw_lathe: return parseLathe(kind);
+        case Keyword::kw_sor: return parseSor(kind);
+        case Keyword::kw_prism: return parsePrism(kind);
         default: unsupported(kind, std::string(kind.text));
     }
 }

@@ -1,0 +1,300 @@
+// Shapes built from numbers swept or searched in space: superellipsoid,
+// isosurface, lathe, sor, prism and sphere_sweep (seed 000 §3.4). Each
+// parser starts after the shape's '{' and stops before its modifiers.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <unordered_set>
+
+#include "scene/isosurface.h"
+#include "scene/prism.h"
+#include "scene/sphere_sweep.h"
+#include "scene/spline_revolution.h"
+#include "scene/superellipsoid.h"
+#include "sdl/function_value.h"
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+// Whether `fn` or a function it calls uses a functions.inc internal or a
+// kind of function the VM cannot run; returns that instruction's
+// description. Rendering must not meet one (it would stop mid-frame).
+std::string unavailableIn(const CompiledFunction& fn,
+                          std::unordered_set<const CompiledFunction*>& seen) {
+    if (!seen.insert(&fn).second) return {};
+    for (const FnInstr& in : fn.code)
+        if (in.op == FnOp::Internal)
+            return in.a < 0
+                       ? "calling a pattern, pigment, transform or spline function from a function"
+                       : fmt::format("functions.inc internal function {}", in.a);
+    for (const auto& callee : fn.callees) {
+        std::string what = unavailableIn(*callee, seen);
+        if (!what.empty()) return what;
+    }
+    return {};
+}
+
+}  // namespace
+
+// The optional spline kind of a lathe or prism; linear when absent.
+static bool acceptSplineKind(Keyword kw, scene::SplineKind& kind) {
+    switch (kw) {
+        case Keyword::kw_linear_spline:
+            kind = scene::SplineKind::Linear;
+            return true;
+        case Keyword::kw_quadratic_spline:
+            kind = scene::SplineKind::Quadratic;
+            return true;
+        case Keyword::kw_cubic_spline:
+            kind = scene::SplineKind::Cubic;
+            return true;
+        case Keyword::kw_bezier_spline:
+            kind = scene::SplineKind::Bezier;
+            return true;
+        default:
+            return false;
+    }
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseLathe(const Token& kind) {
+    scene::SplineKind spline = scene::SplineKind::Linear;
+    if (acceptSplineKind(peek().kw, spline)) next();
+    const Token countAt = peek();
+    const int count = static_cast<int>(parseFloat());
+    const int minimum = scene::pointsPerSegment(spline);
+    if (count < minimum || (spline == scene::SplineKind::Bezier && count % 4 != 0))
+        fail(countAt, spline == scene::SplineKind::Bezier
+                          ? std::string("lathe with bezier_spline needs a multiple of 4 points")
+                          : fmt::format("lathe needs at least {} points for this spline", minimum));
+    std::vector<scene::ProfilePoint> points;
+    for (int i = 0; i < count; ++i) {
+        accept(Sym::Comma);
+        const VectorValue v = parseVector();
+        points.push_back({v.v[0], v.v[1]});
+    }
+    accept(Keyword::kw_sturm);  // the solver is exact enough either way
+    (void)kind;
+    return std::make_shared<scene::Lathe>(spline, points);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseSor(const Token& kind) {
+    const Token countAt = peek();
+    const int count = static_cast<int>(parseFloat());
+    if (count < 4) fail(countAt, "sor needs at least 4 points");
+    std::vector<scene::ProfilePoint> points;
+    for (int i = 0; i < count; ++i) {
+        accept(Sym::Comma);
+        const Token at = peek();
+        const VectorValue v = parseVector();
+        points.push_back({v.v[0], v.v[1]});
+        if (i > 0 && !(points[i].v > points[i - 1].v))
+            fail(at, "Incorrect point in surface of revolution: heights must increase");
+    }
+    bool open = false;
+    for (;;) {
+        if (accept(Keyword::kw_open))
+            open = true;
+        else if (!accept(Keyword::kw_sturm))
+            break;
+    }
+    (void)kind;
+    return std::make_shared<scene::Sor>(points, open);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parsePrism(const Token& kind) {
+    scene::SplineKind spline = scene::SplineKind::Linear;
+    bool conic = false;
+    for (;;) {
+        const Token t = peek();
+        if (acceptSplineKind(t.kw, spline)) {
+            next();
+        } else if (t.is(Keyword::kw_linear_sweep)) {
+            next();
+            conic = false;
+        } else if (t.is(Keyword::kw_conic_sweep)) {
+            next();
+            conic = true;
+        } else {
+            break;
+        }
+    }
+    const double h1 = parseFloat();
+    expect(Sym::Comma, "',' between the prism's heights");
+    const double h2 = parseFloat();
+    expect(Sym::Comma, "',' after the prism's heights");
+    const Token countAt = peek();
+    const int count = static_cast<int>(parseFloat());
+    const int minimum =
+        spline == scene::SplineKind::Linear ? 3 : (spline == scene::SplineKind::Quadratic ? 4 : 5);
+    if (count < minimum || (spline == scene::SplineKind::Bezier && count % 4 != 0))
+        fail(countAt, spline == scene::SplineKind::Bezier
+                          ? std::string("prism with bezier_spline needs a multiple of 4 points")
+                          : fmt::format("prism needs at least {} points for this spline", minimum));
+    std::vector<scene::ProfilePoint> points;
+    for (int i = 0; i < count; ++i) {
+        accept(Sym::Comma);
+        const VectorValue v = parseVector();
+        points.push_back({v.v[0], v.v[1]});
+    }
+    bool open = false;
+    for (;;) {
+        if (accept(Keyword::kw_open))
+            open = true;
+        else if (!accept(Keyword::kw_sturm))
+            break;
+    }
+    if (h1 == h2) fail(kind, "prism heights must differ");
+    bool unclosed = false;
+    auto outline = scene::Prism::outlineOf(spline, points, unclosed);
+    if (unclosed)
+        warn(kind, "Prism not closed: its last sub-shape does not end at its first point.");
+    return std::make_shared<scene::Prism>(std::move(outline), h1, h2, conic, open);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseSuperellipsoid(const Token& kind) {
+    const VectorValue v = parseVector();
+    const double e = v.v[0], n = v.v[1];
+    if (!(e > 0) || !(n > 0))
+        fail(kind, "Illegal superellipsoid parameters: e and n must be greater than 0");
+    return std::make_shared<scene::Superellipsoid>(e, n);
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseIsosurface(const Token& kind) {
+    scene::IsosurfaceSettings s;
+    const Token fnAt = peek();
+    if (!accept(Keyword::kw_function))
+        fail(fnAt, fmt::format("expected 'function' in isosurface, found {}", describeToken(fnAt)));
+    const Value body = parseFunctionBody({"x", "y", "z"});
+    const FunctionValue& fn = *std::get<FunctionPtr>(body);
+    if (!fn.unsupported.empty()) unsupported(fnAt, fn.unsupported);
+    std::unordered_set<const CompiledFunction*> seen;
+    if (const std::string what = unavailableIn(*fn.compiled, seen); !what.empty())
+        unsupported(fnAt, what);
+    s.function = fn.compiled;
+
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokenKind::Word) break;
+        switch (t.kw) {
+            case Keyword::kw_contained_by: {
+                next();
+                expect(Sym::LBrace, "'{' after 'contained_by'");
+                const Token shape = next();
+                expect(Sym::LBrace, "'{' after the container's kind");
+                if (shape.is(Keyword::kw_box)) {
+                    const Vec3 a = parseVec3();
+                    expect(Sym::Comma, "',' between the corners");
+                    const Vec3 b = parseVec3();
+                    s.sphereContainer = false;
+                    s.boxLo = vmin(a, b);
+                    s.boxHi = vmax(a, b);
+                } else if (shape.is(Keyword::kw_sphere)) {
+                    s.center = parseVec3();
+                    expect(Sym::Comma, "',' between the centre and the radius");
+                    s.radius = std::fabs(parseFloat());
+                    s.sphereContainer = true;
+                } else {
+                    fail(shape, fmt::format("contained_by takes a box or a sphere, found {}",
+                                            describeToken(shape)));
+                }
+                if (!peek().is(Sym::RBrace))
+                    unsupported(peek(), "modifiers of an isosurface's container");
+                next();
+                expect(Sym::RBrace, "'}' closing 'contained_by'");
+                continue;
+            }
+            case Keyword::kw_threshold:
+                next();
+                s.threshold = parseFloat();
+                continue;
+            case Keyword::kw_accuracy:
+                next();
+                s.accuracy = std::fabs(parseFloat());
+                continue;
+            case Keyword::kw_max_gradient:
+                next();
+                s.maxGradient = std::fabs(parseFloat());
+                continue;
+            case Keyword::kw_evaluate: {
+                // povray adapts max_gradient per ray from these; the first
+                // (the smallest gradient it assumes) is taken as the bound.
+                next();
+                const double p0 = parseFloat();
+                accept(Sym::Comma);
+                parseFloat();
+                accept(Sym::Comma);
+                parseFloat();
+                s.maxGradient = std::fabs(p0);
+                continue;
+            }
+            case Keyword::kw_open:
+                next();
+                s.open = true;
+                continue;
+            case Keyword::kw_max_trace:
+                next();
+                s.maxTrace = std::max(1, static_cast<int>(parseFloat()));
+                continue;
+            case Keyword::kw_all_intersections:
+                next();
+                s.maxTrace = 1 << 30;
+                continue;
+            case Keyword::kw_method:
+                next();
+                parseFloat();
+                continue;  // povray 3.5 and later ignore it
+            case Keyword::kw_precompute:
+                unsupported(t, "isosurface precompute");
+            default:
+                break;
+        }
+        break;
+    }
+    if (s.accuracy <= 0) fail(kind, "isosurface accuracy must be greater than 0");
+    if (s.maxGradient <= 0) fail(kind, "isosurface max_gradient must be greater than 0");
+    return std::make_shared<scene::Isosurface>(std::move(s));
+}
+
+std::shared_ptr<const scene::Shape> Interpreter::parseSphereSweep(const Token& kind) {
+    const Token kindAt = peek();
+    scene::SweepSpline spline;
+    size_t minimum;
+    if (accept(Keyword::kw_linear_spline)) {
+        spline = scene::SweepSpline::Linear;
+        minimum = 2;
+    } else if (accept(Keyword::kw_b_spline)) {
+        spline = scene::SweepSpline::BSpline;
+        minimum = 4;
+    } else if (accept(Keyword::kw_cubic_spline)) {
+        spline = scene::SweepSpline::CatmullRom;
+        minimum = 4;
+    } else {
+        fail(kindAt,
+             fmt::format(
+                 "expected linear_spline, b_spline or cubic_spline in sphere_sweep, found {}",
+                 describeToken(kindAt)));
+    }
+    const Token countAt = peek();
+    const double count = parseFloat();
+    if (count < static_cast<double>(minimum))
+        fail(countAt,
+             fmt::format("sphere_sweep with {} needs at least {} spheres", kindAt.text, minimum));
+    std::vector<scene::SweepPoint> points;
+    for (int i = 0; i < static_cast<int>(count); ++i) {
+        accept(Sym::Comma);
+        scene::SweepPoint p;
+        p.center = parseVec3();
+        expect(Sym::Comma, "',' between a sphere's centre and its radius");
+        p.radius = std::fabs(parseFloat());
+        points.push_back(p);
+    }
+    // povray's depth tolerance against self-shadowing; the hits here are
+    // exact on the pieces, so it has nothing to do.
+    if (accept(Keyword::kw_tolerance)) parseFloat();
+    (void)kind;
+    return std::make_shared<scene::SphereSweep>(spline, points);
+}
+
+}  // namespace frameray::sdl

@@ -1,0 +1,329 @@
+// Superellipsoid, isosurface, lathe, sor, prism and sphere_sweep: hits
+// against known geometry, inside tests, normals and parsing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "parse_support.h"
+#include "render/renderer.h"
+#include "render/world.h"
+#include "scene/isosurface.h"
+#include "scene/prism.h"
+#include "scene/sphere_sweep.h"
+#include "scene/spline_revolution.h"
+#include "scene/superellipsoid.h"
+#include "sdl/function_value.h"
+
+namespace frameray::scene {
+namespace {
+
+using test_support::ParsedScene;
+using test_support::parseErrorOf;
+
+std::vector<double> hitsOf(const Shape& s, const Ray& r, double tMin = 1e-9,
+                           double tMax = kInfinity) {
+    std::vector<double> ts;
+    s.allHits(r, tMin, tMax, ts);
+    return ts;
+}
+
+TEST(Superellipsoid, UnitExponentsMakeTheUnitSphere) {
+    const Superellipsoid s(1, 1);
+    const Ray r{{0.3, -0.2, -5}, {0, 0, 1}};
+    const auto ts = hitsOf(s, r);
+    ASSERT_EQ(ts.size(), 2u);
+    const double half = std::sqrt(1 - 0.09 - 0.04);
+    EXPECT_NEAR(ts[0], 5 - half, 1e-10);
+    EXPECT_NEAR(ts[1], 5 + half, 1e-10);
+    const Vec3 n = s.normal(r.at(ts[0]));
+    EXPECT_NEAR(n.x, 0.3, 1e-9);
+    EXPECT_NEAR(n.z, -half, 1e-9);
+    EXPECT_TRUE(s.inside({0.5, 0.5, 0.5}));
+    EXPECT_FALSE(s.inside({0.6, 0.6, 0.6}));
+}
+
+TEST(Superellipsoid, SmallExponentsApproachTheCube) {
+    const Superellipsoid s(0.05, 0.05);
+    const Ray r{{0.5, 0.5, -3}, {0, 0, 2}};
+    const auto ts = hitsOf(s, r);
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(r.at(ts[0]).z, -1, 1e-3);
+    EXPECT_NEAR(r.at(ts[1]).z, 1, 1e-3);
+    const Vec3 n = s.normal(r.at(ts[0]));
+    EXPECT_NEAR(n.z, -1, 1e-6);
+    EXPECT_TRUE(s.inside({0.95, -0.95, 0.9}));
+}
+
+TEST(Superellipsoid, PinchedShapeHasNoNanNormals) {
+    const Superellipsoid s(3, 3);
+    for (const Vec3 p : {Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1e-300, 0), Vec3(0.3, 0, 0.2)}) {
+        const Vec3 n = s.normal(p);
+        EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+        EXPECT_NEAR(length(n), 1, 1e-12);
+    }
+}
+
+IsosurfaceSettings sphereFunction(ParsedScene& p) {
+    const auto* fn = std::get_if<sdl::FunctionPtr>(p.interp.lookup("F"));
+    EXPECT_NE(fn, nullptr);
+    IsosurfaceSettings s;
+    s.function = (*fn)->compiled;
+    s.boxLo = Vec3(-2);
+    s.boxHi = Vec3(2);
+    s.maxGradient = 5;
+    return s;
+}
+
+TEST(Isosurface, FindsTheSphereOfItsFunction) {
+    ParsedScene p("#declare F = function { x*x + y*y + z*z - 1 }");
+    IsosurfaceSettings s = sphereFunction(p);
+    s.maxTrace = 4;
+    const Isosurface iso(s);
+    const Ray r{{0, 0, -5}, {0, 0, 1}};
+    const auto ts = hitsOf(iso, r);
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 4, 1e-9);
+    EXPECT_NEAR(ts[1], 6, 1e-9);
+    const Vec3 n = iso.normal(r.at(ts[0]));
+    EXPECT_NEAR(n.z, -1, 1e-6);
+    EXPECT_TRUE(iso.inside({0.5, 0, 0}));
+    EXPECT_FALSE(iso.inside({1.5, 0, 0}));
+}
+
+TEST(Isosurface, MaxTraceOneReportsOnlyTheFirstCrossing) {
+    ParsedScene p("#declare F = function { x*x + y*y + z*z - 1 }");
+    const Isosurface iso(sphereFunction(p));
+    EXPECT_EQ(hitsOf(iso, {{0, 0, -5}, {0, 0, 1}}).size(), 1u);
+}
+
+TEST(Isosurface, ClosedContainerCapsTheInside) {
+    // Everything below y = 0 is inside; the box closes it at its faces.
+    ParsedScene p("#declare F = function { y }");
+    IsosurfaceSettings s = sphereFunction(p);
+    s.maxTrace = 4;
+    s.boxLo = Vec3(-1);
+    s.boxHi = Vec3(1);
+    const Isosurface closed(s);
+    const Ray down{{0.2, 5, 0.1}, {0, -1, 0}};
+    auto ts = hitsOf(closed, down);
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 5, 1e-9);
+    EXPECT_NEAR(ts[1], 6, 1e-12);
+    EXPECT_NEAR(closed.normal(down.at(ts[1])).y, -1, 1e-12);
+    s.open = true;
+    const Isosurface open(s);
+    ts = hitsOf(open, down);
+    ASSERT_EQ(ts.size(), 1u);
+}
+
+TEST(Isosurface, RayFromTheSurfaceDoesNotHitItself) {
+    ParsedScene p("#declare F = function { x*x + y*y + z*z - 1 }");
+    const Isosurface iso(sphereFunction(p));
+    const Ray r{{0, 0, -5}, {0, 0.01, 1}};
+    const auto ts = hitsOf(iso, r);
+    ASSERT_EQ(ts.size(), 1u);
+    const Vec3 hit = r.at(ts[0]);
+    // Leaving at a grazing angle and leaving straight out.
+    EXPECT_TRUE(hitsOf(iso, {hit, {1, 0.3, 0}}).empty());
+    EXPECT_TRUE(hitsOf(iso, {hit, hit}).empty());
+}
+
+TEST(Lathe, LinearProfileIsACylinderWall) {
+    // From (1, 0) up to (1, 2): the side of a cylinder of radius 1.
+    const Lathe lathe(SplineKind::Linear, {{1, 0}, {1, 2}});
+    const Ray r{{0.5, 1, -5}, {0, 0, 1}};
+    const auto ts = hitsOf(lathe, r);
+    ASSERT_EQ(ts.size(), 2u);
+    const double half = std::sqrt(1 - 0.25);
+    EXPECT_NEAR(ts[0], 5 - half, 1e-10);
+    EXPECT_NEAR(ts[1], 5 + half, 1e-10);
+    const Vec3 n = lathe.normal(r.at(ts[0]));
+    EXPECT_NEAR(n.x, 0.5, 1e-9);
+    EXPECT_NEAR(n.y, 0, 1e-9);
+    // Rays along and near the horizontal, and one up the axis.
+    EXPECT_EQ(hitsOf(lathe, {{-5, 1.5, 0}, {1, 0, 0}}).size(), 2u);
+    EXPECT_EQ(hitsOf(lathe, {{-5, 1.5, 0}, {1, 1e-9, 0}}).size(), 2u);
+    EXPECT_TRUE(hitsOf(lathe, {{0, -5, 0}, {0, 1, 0}}).empty());
+}
+
+TEST(Lathe, ClosedProfileInsideAndBezierPieces) {
+    // A closed triangle profile: a cone-like solid.
+    const Lathe cone(SplineKind::Linear, {{0, 0}, {1, 0}, {0, 1}, {0, 0}});
+    EXPECT_TRUE(cone.inside({0.2, 0.2, 0.1}));
+    EXPECT_FALSE(cone.inside({0.6, 0.6, 0}));
+    const Bounds b = cone.bounds();
+    EXPECT_DOUBLE_EQ(b.hi.x, 1);
+    EXPECT_DOUBLE_EQ(b.hi.y, 1);
+    // A bezier quarter of a circle-ish dome: the ray down the axis meets
+    // its top where the profile reaches the axis with a flat tangent.
+    const Lathe dome(SplineKind::Bezier, {{1, 0}, {1, 0.55}, {0.55, 1}, {0, 1}});
+    const auto ts = hitsOf(dome, {{0, 5, 0}, {0, -1, 0}});
+    ASSERT_FALSE(ts.empty());
+    EXPECT_NEAR(ts[0], 4, 1e-9);
+    const Vec3 n = dome.normal({0, 1, 0});
+    EXPECT_NEAR(std::fabs(n.y), 1, 1e-12);
+    EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.z));
+}
+
+TEST(Sor, ConstantRadiusIsACappedCylinder) {
+    const Sor sor({{1, -1}, {1, 0}, {1, 1}, {1, 2}}, false);
+    const auto ts = hitsOf(sor, {{0.3, 5, 0}, {0, -1, 0}});
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 4, 1e-12);
+    EXPECT_NEAR(ts[1], 5, 1e-12);
+    EXPECT_NEAR(sor.normal({0.3, 1, 0}).y, 1, 1e-12);
+    const auto side = hitsOf(sor, {{-5, 0.5, 0}, {1, 0, 0}});
+    ASSERT_EQ(side.size(), 2u);
+    EXPECT_NEAR(side[0], 4, 1e-12);
+    EXPECT_NEAR(sor.normal({-1, 0.5, 0}).x, -1, 1e-12);
+    EXPECT_TRUE(sor.inside({0.5, 0.5, 0.5}));
+    EXPECT_FALSE(sor.inside({0.5, 1.5, 0}));
+    const Sor open({{1, -1}, {1, 0}, {1, 1}, {1, 2}}, true);
+    EXPECT_TRUE(hitsOf(open, {{0.3, 5, 0}, {0, -1, 0}}).empty());
+}
+
+TEST(Prism, SquareWithHole) {
+    bool unclosed = true;
+    const auto outline = Prism::outlineOf(SplineKind::Linear,
+                                          {{-1, -1},
+                                           {1, -1},
+                                           {1, 1},
+                                           {-1, 1},
+                                           {-1, -1},
+                                           {-0.5, -0.5},
+                                           {0.5, -0.5},
+                                           {0.5, 0.5},
+                                           {-0.5, 0.5},
+                                           {-0.5, -0.5}},
+                                          unclosed);
+    EXPECT_FALSE(unclosed);
+    EXPECT_EQ(outline.size(), 8u);
+    const Prism prism(outline, 0, 1, false, false);
+    EXPECT_TRUE(prism.inside({0.75, 0.5, 0}));
+    EXPECT_FALSE(prism.inside({0, 0.5, 0}));
+    // Down through the frame, and through the hole.
+    auto ts = hitsOf(prism, {{0.75, 5, 0.1}, {0, -1, 0}});
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 4, 1e-12);
+    EXPECT_NEAR(prism.normal({0.75, 1, 0.1}).y, 1, 1e-12);
+    EXPECT_TRUE(hitsOf(prism, {{0, 5, 0}, {0, -1, 0}}).empty());
+    // Across: wall, hole, wall.
+    ts = hitsOf(prism, {{-5, 0.5, 0}, {1, 0, 0}});
+    ASSERT_EQ(ts.size(), 4u);
+    EXPECT_NEAR(ts[1], 4.5, 1e-12);
+    EXPECT_NEAR(std::fabs(prism.normal({-0.5, 0.5, 0}).x), 1, 1e-9);  // normals face either way
+}
+
+TEST(Prism, ConicSweepScalesWithHeight) {
+    bool unclosed;
+    const auto outline = Prism::outlineOf(SplineKind::Linear,
+                                          {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}, unclosed);
+    const Prism prism(outline, 0.5, 1, true, false);
+    // At y = 0.75 the square reaches 0.75.
+    const auto ts = hitsOf(prism, {{-5, 0.75, 0}, {1, 0, 0}});
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 5 - 0.75, 1e-12);
+    const Vec3 n = prism.normal({-0.75, 0.75, 0});
+    EXPECT_NEAR(n.x * n.y, 0.5, 1e-9);  // the wall x = -y: along (1, 1, 0) or its opposite
+    EXPECT_NEAR(n.z, 0, 1e-9);
+    EXPECT_TRUE(prism.inside({0.6, 0.75, 0.6}));
+    EXPECT_FALSE(prism.inside({0.6, 0.55, 0}));
+}
+
+TEST(SphereSweep, LinearSweepIsBallsAndTangentCone) {
+    const SphereSweep sweep(SweepSpline::Linear, {{{0, 0, 0}, 1}, {{4, 0, 0}, 0.5}});
+    // Through the big ball's centre across the axis, and along the axis.
+    auto ts = hitsOf(sweep, {{0, 5, 0}, {0, -1, 0}});
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 4, 1e-12);
+    ts = hitsOf(sweep, {{-5, 0, 0}, {1, 0, 0}});
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 4, 1e-12);
+    EXPECT_NEAR(ts[1], 9.5, 1e-12);
+    EXPECT_TRUE(sweep.inside({2, 0.5, 0}));
+    EXPECT_FALSE(sweep.inside({2, 0.9, 0}));
+    EXPECT_NEAR(sweep.normal({4.5, 0, 0}).x, 1, 1e-9);
+    // Over the small ball's centre the cone (slope k = -1/8) is the surface.
+    const Vec3 n = sweep.normal(
+        {4, 0.5 / std::sqrt(1 - 1.0 / 64) + 0.0625 * 0.125 / std::sqrt(1 - 1.0 / 64), 0});
+    EXPECT_NEAR(n.x, 0.125, 1e-6);
+}
+
+TEST(SweepShapesParse, SuperellipsoidAndIsosurface) {
+    ParsedScene p(
+        "superellipsoid { <0.5, 2> }\n"
+        "isosurface { function { x*x + y*y - 0.5 } contained_by { sphere { 0, 2 } } threshold 0.1 "
+        "accuracy 0.01 max_gradient 3 open max_trace 2 }\n"
+        "isosurface { function { x } all_intersections evaluate 2, 1.2, 0.9 }\n");
+    ASSERT_EQ(p.scene.objects.size(), 3u);
+    EXPECT_STREQ(p.scene.objects[0]->shape->name(), "superellipsoid");
+    EXPECT_STREQ(p.scene.objects[1]->shape->name(), "isosurface");
+    const Bounds b = p.scene.objects[1]->shape->bounds();
+    EXPECT_DOUBLE_EQ(b.hi.x, 2);
+}
+
+TEST(SweepShapesParse, LatheSorPrismSphereSweep) {
+    ParsedScene p(
+        "lathe { 3, <0, 0>, <1, 1>, <0, 2> sturm }\n"
+        "lathe { bezier_spline 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }\n"
+        "sor { 4, <1, 0>, <1, 1>, <1, 2>, <1, 3> open }\n"
+        "prism { conic_sweep cubic_spline 0.5, 1, 6, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, "
+        "0> }\n"
+        "sphere_sweep { b_spline 4, <0, 0, 0>, 1, <1, 0, 0>, 1, <2, 1, 0>, 1, <3, 0, 0>, 1 "
+        "tolerance 0.001 }\n");
+    ASSERT_EQ(p.scene.objects.size(), 5u);
+    EXPECT_STREQ(p.scene.objects[2]->shape->name(), "sor");
+    EXPECT_STREQ(p.scene.objects[3]->shape->name(), "prism");
+    EXPECT_STREQ(p.scene.objects[4]->shape->name(), "sphere_sweep");
+    ParsedScene unclosed("prism { 0, 1, 3, <0, 0>, <1, 0>, <1, 1> }");
+    EXPECT_NE(unclosed.sink.warnings.find("Prism not closed"), std::string::npos);
+}
+
+TEST(SweepShapesParse, Errors) {
+    EXPECT_NE(parseErrorOf("lathe { bezier_spline 5, <0,0>, <1,0>, <1,1>, <0,1>, <0,2> }"), "");
+    EXPECT_NE(parseErrorOf("lathe { cubic_spline 3, <0,0>, <1,0>, <1,1> }"), "");
+    EXPECT_NE(parseErrorOf("sor { 4, <1, 0>, <1, 1>, <1, 1>, <1, 3> }").find("Incorrect point"),
+              std::string::npos);
+    EXPECT_NE(parseErrorOf("sphere_sweep { b_spline 3, <0,0,0>, 1, <1,0,0>, 1, <2,0,0>, 1 }"), "");
+    EXPECT_NE(parseErrorOf("superellipsoid { <0, 1> }").find("Illegal superellipsoid"),
+              std::string::npos);
+    EXPECT_NE(parseErrorOf("isosurface { function { internal(61) } }").find("not supported yet"),
+              std::string::npos);
+    EXPECT_NE(parseErrorOf("#declare G = function { internal(61) }\n"
+                           "isosurface { function { G(x, y, z, 1) } }")
+                  .find("not supported yet"),
+              std::string::npos);
+    EXPECT_NE(parseErrorOf("isosurface { function { x } contained_by { cone { 0, 1, y, 0 } } }"),
+              "");
+}
+
+// The stability scenes (tests/stability/sweep_*.pov) at three scales:
+// every pixel of the linear image is a finite number.
+TEST(SweepStability, NoNanPixels) {
+    for (const char* name : {"sweep_lathe_axis", "sweep_isosurface_steep"}) {
+        for (const char* scale : {"1", "1e-4", "1e5"}) {
+            sdl::FrameContext ctx;
+            ctx.declares = {{"S", scale}};
+            ctx.imageWidth = 80;
+            ctx.imageHeight = 60;
+            sdl::TokenCache cache;
+            test_support::WarningSink sink;
+            sdl::Interpreter interp(ctx, cache, sink);
+            const Scene scene = interp.parseFile(std::string(FRAMERAY_SOURCE_DIR) +
+                                                 "/tests/stability/" + name + ".pov");
+            render::World world(scene);
+            render::FrameStats stats;
+            render::FrameSettings settings;
+            settings.width = 80;
+            settings.height = 60;
+            const auto image = render::renderFrame(world, settings, stats);
+            size_t bad = 0;
+            for (const float v : image.rgb)
+                if (!std::isfinite(v)) ++bad;
+            EXPECT_EQ(bad, 0u) << name << " at S = " << scale;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace frameray::scene
