@@ -53,6 +53,7 @@ class Pigment {
         imageMap_ = std::move(map);
         kind_ = Kind::ImageMapped;
     }
+    const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
     // Pigment-local transformation ("this, then t"); composes before the
     // texture's transform.
     // The pattern keeps the same transformation in its own chain, where

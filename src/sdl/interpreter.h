@@ -265,7 +265,9 @@ private:
     // image_map / image_pattern in a pigment; false when the next token is
     // neither.
     bool parseImagePigmentItem(scene::Pigment& pigment);
-    void parseBumpMap(scene::Normal& normal);  // at 'bump_map'
+    // bump_map into `normal`, or image_pattern into the pattern holder of
+    // a normal being parsed; false when the next token is neither.
+    bool parseImageNormalItem(scene::Normal& normal, scene::Pigment& holder);
     // The block after image_map, image_pattern or bump_map (`keyword`);
     // bump_size is stored through `bumpSize` when given.
     std::shared_ptr<const scene::ImageMap> parseImageBlock(const Token& keyword, double* bumpSize);

@@ -14,7 +14,8 @@
 //     every texel, later items overriding earlier ones;
 //   - the scalar of image_pattern and bump_map is the grey value
 //     0.297 r + 0.589 g + 0.114 b of the file values (no gamma), or with
-//     use_alpha 1 - alpha; bump_map's use_index takes the palette index.
+//     use_alpha 1 - alpha; bump_map's use_index takes the palette index
+//     itself (0, 1, 2 ..., not scaled to [0,1]).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -307,7 +308,7 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
         for (std::size_t p = 0; p < count; ++p) {
             double v;
             if (use == ImageUse::Bump && s.useIndex && src.isPalette())
-                v = src.indices[p] / 255.0;
+                v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
             else if (s.useAlpha)
                 v = 1.0 - alphaOf(p);
             else
@@ -338,9 +339,14 @@ bool Interpreter::parseImagePigmentItem(scene::Pigment& pigment) {
     return false;
 }
 
-void Interpreter::parseBumpMap(scene::Normal& normal) {
-    const Token item = next();  // bump_map
-    normal.bumpMap = parseImageBlock(item, &normal.amount);
+bool Interpreter::parseImageNormalItem(scene::Normal& normal, scene::Pigment& holder) {
+    const Token item = peek();
+    if (item.is(Keyword::kw_bump_map)) {
+        next();
+        normal.bumpMap = parseImageBlock(item, &normal.amount);
+        return true;
+    }
+    return item.is(Keyword::kw_image_pattern) && parseImagePigmentItem(holder);
 }
 
 }  // namespace frameray::sdl

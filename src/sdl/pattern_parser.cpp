@@ -318,8 +318,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Norma
                 normal.amount = parseFloat();
             continue;
         }
-        if (item.is(Keyword::kw_bump_map)) {
-            parseBumpMap(normal);
+        if (parseImageNormalItem(normal, holder)) {
             havePattern = true;
             continue;
         }

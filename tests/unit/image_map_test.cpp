@@ -160,6 +160,35 @@ TEST(ImageMap, SphericalAndTorusCoordinates) {
     EXPECT_NEAR(v, 0.25, 1e-12);
 }
 
+// 4 x 4 heights rising by 0.1 per column (x) and 0.2 per row down.
+scene::ImageMap ramp() {
+    auto t = std::make_shared<scene::ImageTexels>();
+    t->width = t->height = 4;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) t->values.push_back(static_cast<float>(0.1 * x + 0.2 * y));
+    return scene::ImageMap(t, scene::ImageMapping::Planar, false, scene::ImageInterpolation::None);
+}
+
+TEST(BumpMap, TiltsAcrossAndDownTheImageInTheNormalsFrame) {
+    const auto m = ramp();
+    const Vec3 p(0.4, 0.6, 0);  // texel (1, 1): every neighbour inside the image
+    // Facing -z: across is +x, down is +y; heights rise towards +x and
+    // down the image, so the normal leans to -x and +y.
+    Vec3 n = scene::bumpMapNormal(m, 0.5, p, {0, 0, -1});
+    Vec3 expected = normalize(Vec3(-0.5 * 0.1, 0.5 * 0.2, -1));
+    EXPECT_NEAR(n.x, expected.x, 1e-6);
+    EXPECT_NEAR(n.y, expected.y, 1e-6);
+    EXPECT_NEAR(n.z, expected.z, 1e-6);
+    // Facing +z, across flips to -x (n x y).
+    n = scene::bumpMapNormal(m, 0.5, p, {0, 0, 1});
+    EXPECT_NEAR(n.x, 0.05 / std::sqrt(1 + 0.05 * 0.05 + 0.1 * 0.1), 1e-6);
+    // A vertical normal falls back to x across; down is x cross n.
+    n = scene::bumpMapNormal(m, 0.5, p, {0, 1, 0});
+    expected = normalize(Vec3(-0.05, 1, 0.1));
+    EXPECT_NEAR(n.x, expected.x, 1e-6);
+    EXPECT_NEAR(n.z, expected.z, 1e-6);
+}
+
 // Scene files beside the test's image files.
 class ImageMapParse : public ::testing::Test {
   protected:
@@ -219,6 +248,27 @@ TEST_F(ImageMapParse, ImagePatternUsesTheFileGreyValue) {
         "image_pattern { ppm \"" + path("g.ppm") + "\" } color_map { [0 rgb 0] [1 rgb 1] }",
         {0.75, 0.5, 0});
     EXPECT_NEAR(c.rgb.r, 0.297, 1e-6);
+}
+
+TEST_F(ImageMapParse, BumpMapUseIndexTakesRawIndices) {
+    test_support::ParsedScene s("#version 3.7; sphere { 0, 1 normal { bump_map { gif \"" +
+                                path("p.gif") + "\" use_index bump_size 2 } } }");
+    const auto& normal = s.scene.objects.at(0)->texture->normal;
+    ASSERT_TRUE(normal && normal->bumpMap);
+    EXPECT_DOUBLE_EQ(normal->amount, 2.0);
+    EXPECT_DOUBLE_EQ(normal->bumpMap->texelValue(1, 0), 1.0);
+}
+
+TEST_F(ImageMapParse, MaxExtentOfAnImageMapIsItsResolution) {
+    test_support::ParsedScene s("#version 3.7; #declare P = pigment { image_map { ppm \"" +
+                                path("g.ppm") + "\" } }; #declare R = max_extent(P);");
+    const auto r = std::get<sdl::VectorValue>(*s.interp.lookup("R")).xyz();
+    EXPECT_EQ(r.x, 2);
+    EXPECT_EQ(r.y, 1);
+    EXPECT_EQ(r.z, 0);
+    const std::string error =
+        test_support::parseErrorOf("#declare P = pigment { rgb 1 }; #declare R = max_extent(P);");
+    EXPECT_NE(error.find("must be an image map pigment"), std::string::npos);
 }
 
 TEST_F(ImageMapParse, Errors) {
