@@ -152,8 +152,8 @@ SourceImage readSource(const fs::path& path) {
         img.channels = 3;
         img.values.reserve(gif.indices.size() * 3);
         for (const uint8_t i : gif.indices) {
-            const std::array<uint8_t, 3> c = i < gif.palette.size() ? gif.palette[i]
-                                                                    : std::array<uint8_t, 3>{};
+            std::array<uint8_t, 3> c{};
+            if (i < gif.palette.size()) c = gif.palette[i];
             for (const uint8_t v : c) img.values.push_back(static_cast<float>(v) / 255.0f);
         }
         src.indices = std::move(gif.indices);
