@@ -5,9 +5,13 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <stdexcept>
+
+#include "image/gif_decoder.h"
 
 namespace frameray::image {
 
@@ -144,6 +148,60 @@ EncodedImage read(const fs::path& path) {
         throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), in->geterror()));
     in->close();
     return img;
+}
+
+namespace {
+
+bool hasGifSignature(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    char magic[4] = {};
+    file.read(magic, 4);
+    return file && std::string(magic, 4) == "GIF8";
+}
+
+}  // namespace
+
+SourceImage readSource(const fs::path& path) {
+    SourceImage src;
+    if (hasGifSignature(path)) {
+        PaletteImage gif = readGif(path);
+        EncodedImage& img = src.pixels;
+        img.width = gif.width;
+        img.height = gif.height;
+        img.channels = 3;
+        img.values.reserve(gif.indices.size() * 3);
+        for (const uint8_t i : gif.indices) {
+            std::array<uint8_t, 3> c{};
+            if (i < gif.palette.size()) c = gif.palette[i];
+            for (const uint8_t v : c) img.values.push_back(static_cast<float>(v) / 255.0f);
+        }
+        src.indices = std::move(gif.indices);
+        src.palette = std::move(gif.palette);
+        return src;
+    }
+    // Keep alpha as stored: OpenImageIO would otherwise multiply it into
+    // the colour of PNG and TGA files.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path.string(), &config);
+    if (!in)
+        throw std::runtime_error(
+            fmt::format("cannot read '{}': {}", path.string(), OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    EncodedImage& img = src.pixels;
+    img.width = spec.width;
+    img.height = spec.height;
+    // Channels past RGBA (EXR layers) are not needed.
+    const int channels = std::min(spec.nchannels, 4);
+    img.channels = channels;
+    img.bitDepth = static_cast<int>(spec.format.size() * 8);
+    img.values.resize(static_cast<size_t>(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.values.data()))
+        throw std::runtime_error(
+            fmt::format("cannot read '{}': {}", path.string(), in->geterror()));
+    src.declaredGamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
+    in->close();
+    return src;
 }
 
 }  // namespace frameray::image

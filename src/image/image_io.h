@@ -3,6 +3,8 @@
 // either complete on disk or absent - never truncated.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -45,5 +47,24 @@ void commitTemporary(const std::filesystem::path& temporary, const std::filesyst
 
 // Reads any image OpenImageIO knows as floats in [0,1] (tests, tools).
 EncodedImage read(const std::filesystem::path& path);
+
+// An image read to texture a scene (image maps, bump maps, height fields):
+// file values as stored, alpha not multiplied into the colour, what the
+// file says about its gamma, and for palette files (GIF) the indices.
+struct SourceImage {
+    // 1 grey, 2 grey + alpha, 3 RGB or 4 RGBA channels in [0,1].
+    EncodedImage pixels;
+    // The gamma the file declares (PNG gAMA), 0 when it declares none.
+    double declaredGamma = 0;
+    // Palette images: one index per pixel (row-major from the top) and the
+    // palette; `pixels` holds the palette colours too.
+    std::vector<uint8_t> indices;
+    std::vector<std::array<uint8_t, 3>> palette;
+    bool isPalette() const { return !palette.empty(); }
+};
+
+// GIF files are decoded as palette images, everything else through
+// OpenImageIO. Throws std::runtime_error with the path and reason.
+SourceImage readSource(const std::filesystem::path& path);
 
 }  // namespace frameray::image

@@ -115,8 +115,10 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     // What the surface lets through: filter tints by the pigment, transmit
     // passes unchanged. Ambient, emission and diffuse light are scaled by
     // the opaque rest; highlights and reflection are not (measured).
+    // The rest is not clamped: filter + transmit above 1 (image maps with
+    // alpha and transmit all) takes light away, as in povray.
     const double seeThrough = surface.filter + surface.transmit;
-    const double opacity = std::clamp(1.0 - seeThrough, 0.0, 1.0);
+    const double opacity = 1.0 - seeThrough;
     const RGB lit = pigment * opacity;
 
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;

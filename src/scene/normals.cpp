@@ -78,7 +78,9 @@ Vec3 normalPatternVector(const Normal& nm, const Vec3& q) {
 
 Vec3 Normal::perturb(const Vec3& p, const Vec3& n) const {
     Vec3 m = normalize(normalToPattern(pattern, n));
-    if (isNormalPattern(pattern.kind)) {
+    if (bumpMap) {
+        m = bumpMapNormal(*bumpMap, amount, pattern.patternPoint(p), m);
+    } else if (isNormalPattern(pattern.kind)) {
         m += normalPatternVector(*this, pattern.patternPoint(p));
     } else {
         // povray's fudge factor: -5 times the bump size per sample, as a

@@ -6,6 +6,9 @@
 // point and the samples steer the normal.
 #pragma once
 
+#include <memory>
+
+#include "scene/image_map.h"
 #include "scene/patterns.h"
 #include "util/matrix.h"
 #include "util/vec3.h"
@@ -21,6 +24,9 @@ struct Normal {
     // Size of the sampling tetrahedron for patterns that are not normal
     // patterns of their own (accuracy).
     double accuracy = 0.02;
+    // bump_map: the image whose heights tilt the normal (the pattern's
+    // chain still places it).
+    std::shared_ptr<const ImageMap> bumpMap;
 
     // The perturbed unit normal at texture-space point p, where n is the
     // texture-space unit normal.

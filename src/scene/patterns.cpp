@@ -292,6 +292,8 @@ double Pattern::raw(const Vec3& p) const {
             return ripples(p, frequency, phase);
         case PatternKind::Waves:
             return waves(p, frequency, phase);
+        case PatternKind::Image:
+            return image ? image->valueAt(p) : 0.0;
         default:
             return 0;
     }

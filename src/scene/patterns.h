@@ -5,9 +5,11 @@
 // (warps.h). Evaluation is const, thread-safe and allocation-free.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include "scene/image_map.h"
 #include "scene/noise.h"
 #include "scene/warps.h"
 #include "util/vec3.h"
@@ -44,6 +46,8 @@ enum class PatternKind {
     Wrinkles,
     Ripples,
     Waves,
+    // image_pattern: the image's grey value or alpha (image_map.h)
+    Image,
 };
 
 // The sources of ripples and waves (shared with their normals).
@@ -67,6 +71,7 @@ struct Pattern {
     double frequency = 1, phase = 0;
     NoiseGenerator noiseGenerator = NoiseGenerator::RangeCorrected;
     double agateTurb = 1.0;
+    std::shared_ptr<const ImageMap> image;  // image_pattern
     // The pattern's own `turbulence`: applied after every warp and
     // transformation, or used inside marble, wood and agate.
     std::optional<Turbulence> turbulence;

@@ -77,6 +77,8 @@ Color Pigment::at(const Vec3& point) const {
             return Color(ca.rgb * s + cb.rgb * t, ca.filter * s + cb.filter * t,
                          ca.transmit * s + cb.transmit * t);
         }
+        case Kind::ImageMapped:
+            return imageMap_->colorAt(pattern_.patternPoint(point));
         case Kind::Solid:
             break;
     }

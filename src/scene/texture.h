@@ -20,7 +20,7 @@ namespace frameray::scene {
 // allocate.
 class Pigment {
   public:
-    enum class Kind { Solid, List, ColorMapped, PigmentMapped };
+    enum class Kind { Solid, List, ColorMapped, PigmentMapped, ImageMapped };
     struct MapEntry {
         double value;
         std::shared_ptr<const Pigment> pigment;
@@ -48,6 +48,12 @@ class Pigment {
     const std::vector<std::shared_ptr<const Pigment>>& list() const { return list_; }
     void setColorMap(ColorMap map);
     void setPigmentMap(std::vector<MapEntry> map);
+    // image_map (image_map.h): the image, seen through the pattern's chain.
+    void setImageMap(std::shared_ptr<const ImageMap> map) {
+        imageMap_ = std::move(map);
+        kind_ = Kind::ImageMapped;
+    }
+    const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
     // Pigment-local transformation ("this, then t"); composes before the
     // texture's transform.
     // The pattern keeps the same transformation in its own chain, where
@@ -65,6 +71,7 @@ class Pigment {
     std::vector<std::shared_ptr<const Pigment>> list_;
     ColorMap colorMap_;
     std::vector<MapEntry> pigmentMap_;
+    std::shared_ptr<const ImageMap> imageMap_;
     bool hasTransform_ = false;
     Transform transform_;
 };

@@ -803,6 +803,15 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_min_extent:
         case Keyword::kw_max_extent: {
             auto a = parseArguments(1, 1, fn);
+            // povray 3.7: max_extent of an image_map pigment is the image's
+            // resolution <width, height, 0>.
+            if (const auto* pig = std::get_if<PigmentPtr>(&a[0]);
+                pig && fn.kw == Keyword::kw_max_extent) {
+                if (!(*pig)->imageMap())
+                    fail(fn, "The parameter to max_extent must be an image map pigment");
+                const scene::ImageTexels& t = (*pig)->imageMap()->texels();
+                return VectorValue::fromVec3(Vec3(t.width, t.height, 0));
+            }
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
             if (!obj)
                 fail(fn,

@@ -27,6 +27,9 @@
 namespace frameray::scene {
 struct MeshTriangle;
 }
+namespace frameray::image {
+struct SourceImage;
+}
 
 namespace frameray::sdl {
 
@@ -272,6 +275,18 @@ private:
     std::shared_ptr<const scene::Shape> parseLathe(const Token& kind);
     std::shared_ptr<const scene::Shape> parseSor(const Token& kind);
     std::shared_ptr<const scene::Shape> parsePrism(const Token& kind);
+    // --- image maps (parse_image_map.cpp) ---
+    // image_map / image_pattern in a pigment; false when the next token is
+    // neither.
+    bool parseImagePigmentItem(scene::Pigment& pigment);
+    // bump_map into `normal`, or image_pattern into the pattern holder of
+    // a normal being parsed; false when the next token is neither.
+    bool parseImageNormalItem(scene::Normal& normal, scene::Pigment& holder);
+    // The block after image_map, image_pattern or bump_map (`keyword`);
+    // bump_size is stored through `bumpSize` when given.
+    std::shared_ptr<const scene::ImageMap> parseImageBlock(const Token& keyword, double* bumpSize);
+    // An image file found like an include file, read once per frame.
+    const image::SourceImage& loadSourceImage(const std::string& name, const Token& at);
 
     FrameContext frame_;
     TokenCache& cache_;
@@ -300,6 +315,8 @@ private:
     // read so far, by the name the scene gave (this frame's only).
     scene::TextCharset textCharset_ = scene::TextCharset::Ascii;
     std::map<std::string, std::shared_ptr<scene::TtfFont>> fonts_;
+    // Images read so far by their resolved path (this frame's only).
+    std::map<std::string, std::shared_ptr<const image::SourceImage>> images_;
 };
 
 }  // namespace frameray::sdl

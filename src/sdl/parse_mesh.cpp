@@ -361,14 +361,8 @@ void Interpreter::parseHeightField(scene::Object& obj) {
         }
         const Token nameAt = peek();
         const std::string name = parseString();
-        const std::filesystem::path path = findIncludeFile(name);
-        if (path.empty()) fail(nameAt, fmt::format("Cannot open file '{}'.", name));
-        image::EncodedImage img;
-        try {
-            img = image::read(path);
-        } catch (const std::runtime_error& e) {
-            fail(nameAt, e.what());
-        }
+        // The same per-frame image cache as image maps (parse_image_map.cpp).
+        const image::EncodedImage& img = loadSourceImage(name, nameAt).pixels;
         if (img.width < 2 || img.height < 2)
             fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
         width = img.width;

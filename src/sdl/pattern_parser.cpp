@@ -148,6 +148,7 @@ PigmentPtr Interpreter::parsePigmentListEntry() {
 
 bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
     const Token item = peek();
+    if (parseImagePigmentItem(pigment)) return true;
     if (const auto kind = patternKeyword(item.kw)) {
         next();
         scene::Pattern pattern = pigment.pattern();
@@ -315,6 +316,10 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Norma
                 (n.isIdentifier() && lookup(std::string(n.text)) &&
                  std::holds_alternative<double>(*lookup(std::string(n.text)))))
                 normal.amount = parseFloat();
+            continue;
+        }
+        if (parseImageNormalItem(normal, holder)) {
+            havePattern = true;
             continue;
         }
         if (item.is(Keyword::kw_bump_size)) {

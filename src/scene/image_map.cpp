@@ -1,0 +1,219 @@
+#include "scene/image_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace frameray::scene {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Angle of (x, z) around the y axis in turns, 0 on +x growing towards +z
+// (POV-Ray's "west to east in a -y rotation").
+double turnsAroundY(double x, double z) {
+    const double len = std::sqrt(x * x + z * z);
+    if (len == 0) return 0;
+    double angle = std::acos(std::clamp(x / len, -1.0, 1.0));
+    if (z < 0) angle = kTwoPi - angle;
+    return angle / kTwoPi;
+}
+
+Color blend(const Color& a, const Color& b, double t) {
+    const double s = 1.0 - t;
+    return Color(a.rgb * s + b.rgb * t, a.filter * s + b.filter * t,
+                 a.transmit * s + b.transmit * t);
+}
+
+Color scaled(const Color& c, double w) {
+    return Color(c.rgb * w, c.filter * w, c.transmit * w);
+}
+
+void accumulate(Color& sum, const Color& c) {
+    sum.rgb += c.rgb;
+    sum.filter += c.filter;
+    sum.transmit += c.transmit;
+}
+
+double blend(double a, double b, double t) {
+    return a + (b - a) * t;
+}
+double scaled(double v, double w) {
+    return v * w;
+}
+void accumulate(double& sum, double v) {
+    sum += v;
+}
+
+}  // namespace
+
+bool imageCoordinatesOk(const ImageMap& map, const Vec3& p, double& u, double& v) {
+    return !map.texels().values.empty() && map.imageCoordinates(p, u, v);
+}
+
+bool ImageMap::imageCoordinates(const Vec3& p, double& u, double& v) const {
+    switch (mapping_) {
+        case ImageMapping::Planar:
+            u = p.x;
+            v = p.y;
+            break;
+        case ImageMapping::Spherical: {
+            const double len = length(p);
+            if (len == 0) {
+                u = v = 0;
+                return true;
+            }
+            u = turnsAroundY(p.x, p.z);
+            // Latitude: 0 at the south pole, 1 at the north pole.
+            v = 0.5 + std::asin(std::clamp(p.y / len, -1.0, 1.0)) / std::numbers::pi;
+            return true;
+        }
+        case ImageMapping::Cylindrical:
+            u = turnsAroundY(p.x, p.z);
+            v = p.y;
+            if (once_ && (v < 0 || v >= 1)) return false;
+            v -= std::floor(v);
+            return true;
+        case ImageMapping::Torus: {
+            // Around the y axis for u; around the tube of major radius 1 for
+            // v: 0 on the inner rim, 1/4 underneath, 1/2 on the outer rim
+            // (measured).
+            u = turnsAroundY(p.x, p.z);
+            const double radial = std::sqrt(p.x * p.x + p.z * p.z) - 1.0;
+            v = 0.5 + std::atan2(p.y, radial) / kTwoPi;
+            if (v >= 1.0) v -= 1.0;
+            return true;
+        }
+    }
+    if (once_ && (u < 0 || u >= 1 || v < 0 || v >= 1)) return false;
+    u -= std::floor(u);
+    v -= std::floor(v);
+    return true;
+}
+
+void ImageMap::texelCoordinates(double u, double v, double& x, double& y) const {
+    x = u * texels_->width;
+    y = (1.0 - v) * texels_->height;
+}
+
+int ImageMap::wrapX(int x) const {
+    const int w = texels_->width;
+    if (once_) return std::clamp(x, 0, w - 1);
+    x %= w;
+    return x < 0 ? x + w : x;
+}
+
+int ImageMap::wrapY(int y) const {
+    const int h = texels_->height;
+    if (once_) return std::clamp(y, 0, h - 1);
+    y %= h;
+    return y < 0 ? y + h : y;
+}
+
+template <typename T, typename Fetch>
+T ImageMap::sample(double u, double v, Fetch fetch) const {
+    double x, y;
+    texelCoordinates(u, v, x, y);
+    if (interpolation_ == ImageInterpolation::None) {
+        // Rows are counted up from the bottom and then flipped, which
+        // decides which texel a point exactly on a row boundary takes.
+        const int w = texels_->width, h = texels_->height;
+        const int ix = std::clamp(static_cast<int>(std::floor(u * w)), 0, w - 1);
+        const int iy = h - 1 - std::clamp(static_cast<int>(std::floor(v * h)), 0, h - 1);
+        return fetch(ix, iy);
+    }
+    // Interpolation works between texel centres (measured: a texel's own
+    // colour is reached exactly at its centre).
+    x -= 0.5;
+    y -= 0.5;
+    const double fx0 = std::floor(x), fy0 = std::floor(y);
+    const double fx = x - fx0, fy = y - fy0;
+    const int x0 = wrapX(static_cast<int>(fx0)), x1 = wrapX(static_cast<int>(fx0) + 1);
+    const int y0 = wrapY(static_cast<int>(fy0)), y1 = wrapY(static_cast<int>(fy0) + 1);
+    if (interpolation_ == ImageInterpolation::Bilinear) {
+        const T top = blend(fetch(x0, y0), fetch(x1, y0), fx);
+        const T bottom = blend(fetch(x0, y1), fetch(x1, y1), fx);
+        return blend(top, bottom, fy);
+    }
+    // Normalized distance: the four texels weighted by the inverse square
+    // of their distance (measured from povray's renders).
+    const int xs[4] = {x0, x1, x0, x1}, ys[4] = {y0, y0, y1, y1};
+    const double dxs[4] = {fx, 1 - fx, fx, 1 - fx}, dys[4] = {fy, fy, 1 - fy, 1 - fy};
+    T sum{};
+    double weights = 0;
+    for (int i = 0; i < 4; ++i) {
+        const double d2 = dxs[i] * dxs[i] + dys[i] * dys[i];
+        if (d2 == 0) return fetch(xs[i], ys[i]);
+        const double w = 1.0 / d2;
+        accumulate(sum, scaled(fetch(xs[i], ys[i]), w));
+        weights += w;
+    }
+    return scaled(sum, 1.0 / weights);
+}
+
+Color ImageMap::colorAt(const Vec3& p) const {
+    double u = 0, v = 0;
+    if (!texels_ || texels_->colors.empty() || !imageCoordinates(p, u, v))
+        return Color(RGB(1.0), 0.0, 1.0);
+    const ImageTexels& t = *texels_;
+    return sample<Color>(u, v, [&t](int x, int y) {
+        return t.colors[static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) +
+                        static_cast<std::size_t>(x)];
+    });
+}
+
+double ImageMap::texelValue(int ix, int iy) const {
+    const ImageTexels& t = *texels_;
+    return t.values[static_cast<std::size_t>(wrapY(iy)) * static_cast<std::size_t>(t.width) +
+                    static_cast<std::size_t>(wrapX(ix))];
+}
+
+double ImageMap::valueAt(const Vec3& p) const {
+    double u = 0, v = 0;
+    if (!texels_ || texels_->values.empty() || !imageCoordinates(p, u, v)) return 0.0;
+    return valueAtImagePoint(u, v);
+}
+
+double ImageMap::valueAtImagePoint(double u, double v) const {
+    const ImageTexels& t = *texels_;
+    return sample<double>(u, v, [&t](int x, int y) {
+        return static_cast<double>(
+            t.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) +
+                     static_cast<std::size_t>(x)]);
+    });
+}
+
+Vec3 bumpMapNormal(const ImageMap& map, double bumpSize, const Vec3& p, const Vec3& n) {
+    double u = 0, v = 0;
+    if (!imageCoordinatesOk(map, p, u, v)) return n;
+    // povray 3.7 (measured): the normal of the triangle through the heights
+    // at this texel (A) and at the texels one row down and one column to
+    // either side (B right, C left), heights scaled by bump_size...
+    const ImageTexels& t = map.texels();
+    double a, b, c;
+    if (map.interpolation() == ImageInterpolation::None) {
+        const int ix = std::clamp(static_cast<int>(std::floor(u * t.width)), 0, t.width - 1);
+        const int iy =
+            t.height - 1 - std::clamp(static_cast<int>(std::floor(v * t.height)), 0, t.height - 1);
+        a = map.texelValue(ix, iy);
+        b = map.texelValue(ix + 1, iy + 1);
+        c = map.texelValue(ix - 1, iy + 1);
+    } else {
+        const double du = 1.0 / t.width, dv = 1.0 / t.height;
+        a = map.valueAtImagePoint(u, v);
+        b = map.valueAtImagePoint(u + du, v - dv);
+        c = map.valueAtImagePoint(u - du, v - dv);
+    }
+    const double across = -bumpSize * (b - c) * 0.5;
+    const double down = -bumpSize * (a - (b + c) * 0.5);
+    // ...set on the surface in a frame built from the normal: across along
+    // n x y (x when the normal is vertical), down along across x n.
+    Vec3 uAxis = cross(n, Vec3(0, 1, 0));
+    const double len = length(uAxis);
+    uAxis = len < 1e-9 ? Vec3(1, 0, 0) : uAxis * (1.0 / len);
+    const Vec3 vAxis = cross(uAxis, n);
+    return normalize(n + uAxis * across + vAxis * down);
+}
+
+}  // namespace frameray::scene

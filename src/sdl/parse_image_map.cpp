@@ -1,0 +1,352 @@
+// Image maps: `image_map { }` in a pigment, `image_pattern { }` as a
+// pattern and `bump_map { }` in a normal (seed 003 §5.4.1.4, §5.4.2.6).
+// The file is read once per frame (the interpreter caches it by path) and
+// turned into texels here, following POV-Ray 3.7 as measured:
+//   - colours are decoded with the file's gamma - the `gamma` given, else
+//     the one a PNG declares, else sRGB for PNG, TGA, GIF, JPEG, IFF and
+//     sys files and linear for PPM, PGM, TIFF, EXR and HDR - and re-encoded
+//     in the scene's working gamma; a scene without assumed_gamma from
+//     before 3.7 uses the file values as they are;
+//   - alpha becomes transmit (1 - alpha) on top of `transmit all`; the
+//     colour is taken as not premultiplied unless `premultiplied` says so;
+//   - `filter N` / `transmit N` set palette entries of palette images (GIF)
+//     and are errors on other images; `filter all` / `transmit all` set
+//     every texel, later items overriding earlier ones;
+//   - the scalar of image_pattern and bump_map is the grey value
+//     0.297 r + 0.589 g + 0.114 b of the file values (no gamma), or with
+//     use_alpha 1 - alpha; bump_map's use_index takes the palette index
+//     itself (0, 1, 2 ..., not scaled to [0,1]).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "image/image_io.h"
+#include "scene/image_map.h"
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+// What the image block is for: it decides which texels are prepared and
+// which items are allowed.
+enum class ImageUse { Pigment, Pattern, Bump };
+
+bool isImageType(Keyword k) {
+    switch (k) {
+        case Keyword::kw_png:
+        case Keyword::kw_tga:
+        case Keyword::kw_gif:
+        case Keyword::kw_iff:
+        case Keyword::kw_ppm:
+        case Keyword::kw_pgm:
+        case Keyword::kw_jpeg:
+        case Keyword::kw_tiff:
+        case Keyword::kw_exr:
+        case Keyword::kw_hdr:
+        case Keyword::kw_sys:
+            return true;
+        default:
+            return false;
+    }
+}
+
+// The gamma a format is read with when neither the scene nor the file
+// says (measured with povray 3.7): 0 stands for sRGB.
+double defaultFileGamma(Keyword type, const std::string& name) {
+    Keyword k = type;
+    if (k == Keyword::None || k == Keyword::kw_sys) {
+        std::string ext = name.substr(name.find_last_of('.') + 1);
+        std::transform(ext.begin(), ext.end(), ext.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (ext == "ppm" || ext == "pgm" || ext == "pnm" || ext == "pbm") k = Keyword::kw_ppm;
+        if (ext == "tif" || ext == "tiff") k = Keyword::kw_tiff;
+        if (ext == "exr") k = Keyword::kw_exr;
+        if (ext == "hdr") k = Keyword::kw_hdr;
+    }
+    switch (k) {
+        case Keyword::kw_ppm:
+        case Keyword::kw_pgm:
+        case Keyword::kw_tiff:
+        case Keyword::kw_exr:
+        case Keyword::kw_hdr:
+            return 1.0;
+        default:
+            return 0.0;
+    }
+}
+
+double srgbDecode(double v) {
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+struct ImageSettings {
+    Keyword type = Keyword::None;
+    std::string name;
+    Token nameAt;
+    std::optional<double> gamma;  // 0 = srgb
+    bool premultiplied = false;
+    scene::ImageMapping mapping = scene::ImageMapping::Planar;
+    bool once = false;
+    scene::ImageInterpolation interpolation = scene::ImageInterpolation::None;
+    // filter / transmit items in the order written: index -1 is `all`.
+    struct Amount {
+        bool filter;
+        int index;
+        double value;
+        Token at;
+    };
+    std::vector<Amount> amounts;
+    bool useIndex = false;
+    bool useAlpha = false;
+    double bumpSize = 0;
+    bool bumpSizeGiven = false;
+};
+
+}  // namespace
+
+const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, const Token& at) {
+    const std::filesystem::path path = findIncludeFile(name);
+    if (path.empty()) fail(at, fmt::format("Cannot open file '{}'.", name));
+    const std::string key = path.lexically_normal().string();
+    auto found = images_.find(key);
+    if (found != images_.end()) return *found->second;
+    std::shared_ptr<const image::SourceImage> img;
+    try {
+        img = std::make_shared<const image::SourceImage>(image::readSource(path));
+    } catch (const std::runtime_error& e) {
+        fail(at, e.what());
+    }
+    if (img->pixels.width <= 0 || img->pixels.height <= 0)
+        fail(at, fmt::format("image '{}' has no pixels", name));
+    return *images_.emplace(key, std::move(img)).first->second;
+}
+
+std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token& keyword,
+                                                                    double* bumpSize) {
+    const ImageUse use = keyword.is(Keyword::kw_image_map)       ? ImageUse::Pigment
+                         : keyword.is(Keyword::kw_image_pattern) ? ImageUse::Pattern
+                                                                 : ImageUse::Bump;
+    expectAfter(Sym::LBrace, "{", keyword.text);
+    ImageSettings s;
+    bool haveFile = false;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token item = peek();
+        if (!haveFile &&
+            (isImageType(item.kw) || item.kind == TokenKind::String || item.isIdentifier())) {
+            if (isImageType(item.kw)) {
+                next();
+                s.type = item.kw;
+            }
+            s.nameAt = peek();
+            s.name = parseString();
+            haveFile = true;
+            continue;
+        }
+        switch (item.kw) {
+            case Keyword::kw_function:
+            case Keyword::kw_pattern:
+                unsupported(item, fmt::format("'{}' images in {}", item.text, keyword.text));
+            case Keyword::kw_gamma: {
+                next();
+                if (accept(Keyword::kw_srgb)) {
+                    s.gamma = 0.0;
+                } else {
+                    const double g = parseFloat();
+                    if (g <= 0) fail(item, "image gamma must be positive");
+                    s.gamma = g;
+                }
+                break;
+            }
+            case Keyword::kw_premultiplied:
+                next();
+                s.premultiplied = parseOptionalBool();
+                break;
+            case Keyword::kw_map_type: {
+                next();
+                const Token at = peek();
+                const int m = static_cast<int>(parseFloat());
+                if (m == 0 || m == 1 || m == 2 || m == 5)
+                    s.mapping = static_cast<scene::ImageMapping>(m);
+                else if (m == 3 || m == 4)
+                    unsupported(at, fmt::format("map_type {}", m));
+                else
+                    fail(at, fmt::format("map_type must be 0, 1, 2 or 5, found {}", m));
+                break;
+            }
+            case Keyword::kw_once:
+                next();
+                s.once = true;
+                break;
+            case Keyword::kw_interpolate: {
+                next();
+                const Token at = peek();
+                const int i = static_cast<int>(parseFloat());
+                if (i == 2)
+                    s.interpolation = scene::ImageInterpolation::Bilinear;
+                else if (i == 4)
+                    s.interpolation = scene::ImageInterpolation::NormalizedDistance;
+                else if (i == 3)
+                    unsupported(at, "interpolate 3");
+                else
+                    fail(at, "Invalid interpolate value.");
+                break;
+            }
+            case Keyword::kw_filter:
+            case Keyword::kw_transmit: {
+                next();
+                if (use == ImageUse::Bump)
+                    fail(item, fmt::format("'{}' is not allowed in bump_map", item.text));
+                ImageSettings::Amount a{item.is(Keyword::kw_filter), -1, 0, item};
+                if (!accept(Keyword::kw_all)) {
+                    const double index = parseFloat();
+                    if (index < 0 || index > 255)
+                        fail(item, fmt::format("palette index {} out of range", index));
+                    a.index = static_cast<int>(index);
+                    accept(Sym::Comma);
+                }
+                a.value = parseFloat();
+                s.amounts.push_back(a);
+                break;
+            }
+            case Keyword::kw_use_index:
+            case Keyword::kw_use_color:
+            case Keyword::kw_use_colour:
+                next();
+                s.useIndex = item.is(Keyword::kw_use_index);
+                break;
+            case Keyword::kw_use_alpha:
+                next();
+                s.useAlpha = true;
+                break;
+            case Keyword::kw_bump_size:
+                if (use != ImageUse::Bump)
+                    fail(item, fmt::format("'bump_size' is not allowed in {}", keyword.text));
+                next();
+                s.bumpSize = parseFloat();
+                s.bumpSizeGiven = true;
+                break;
+            default:
+                if (item.kind == TokenKind::Word && item.kw != Keyword::None)
+                    unsupported(item, fmt::format("'{}' in {}", item.text, keyword.text));
+                fail(item, fmt::format("expected a {} item or '}}', found {}", keyword.text,
+                                       describeToken(item)));
+        }
+    }
+    if (!haveFile) fail(keyword, fmt::format("{} needs an image file", keyword.text));
+    if (s.mapping == scene::ImageMapping::Spherical || s.mapping == scene::ImageMapping::Torus)
+        s.once = false;  // the image covers these exactly once anyway
+
+    const image::SourceImage& src = loadSourceImage(s.name, s.nameAt);
+    const image::EncodedImage& px = src.pixels;
+    for (const auto& a : s.amounts)
+        if (a.index >= 0 && !src.isPalette())
+            fail(a.at, fmt::format("Keyword '{}' cannot be used with non color-mapped image.",
+                                   a.at.text));
+
+    auto texels = std::make_shared<scene::ImageTexels>();
+    texels->width = px.width;
+    texels->height = px.height;
+    const std::size_t count =
+        static_cast<std::size_t>(px.width) * static_cast<std::size_t>(px.height);
+    const int ch = px.channels;
+    const bool grey = ch < 3;
+    const bool hasAlpha = ch == 2 || ch == 4;
+    auto channel = [&](std::size_t p, int c) {
+        return static_cast<double>(
+            px.values[p * static_cast<std::size_t>(ch) + static_cast<std::size_t>(grey ? 0 : c)]);
+    };
+    auto alphaOf = [&](std::size_t p) {
+        return hasAlpha ? static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
+                                                        static_cast<std::size_t>(ch - 1)])
+                        : 1.0;
+    };
+
+    if (use == ImageUse::Pigment) {
+        // File values -> linear light -> the working gamma in force now.
+        const bool legacy = !scene_.globals.assumedGammaSet && version_ < 3.7 - 1e-9;
+        const double working = scene_.globals.assumedGammaSet ? scene_.globals.assumedGamma : 1.0;
+        const double fileGamma = s.gamma                 ? *s.gamma
+                                 : src.declaredGamma > 0 ? src.declaredGamma
+                                                         : defaultFileGamma(s.type, s.name);
+        auto decode = [&](double v) {
+            if (legacy) return v;
+            double linear = fileGamma == 0   ? srgbDecode(v)
+                            : fileGamma == 1 ? v
+                                             : std::pow(v, fileGamma);
+            return working == 1.0 ? linear : std::pow(linear, 1.0 / working);
+        };
+        // Palette images: filter and transmit per palette entry.
+        std::array<double, 256> filter{}, transmit{};
+        double filterAll = 0, transmitAll = 0;
+        for (const auto& a : s.amounts) {
+            auto& table = a.filter ? filter : transmit;
+            if (a.index >= 0) {
+                table[static_cast<std::size_t>(a.index)] = a.value;
+            } else {
+                table.fill(a.value);
+                (a.filter ? filterAll : transmitAll) = a.value;
+            }
+        }
+        texels->colors.resize(count);
+        for (std::size_t p = 0; p < count; ++p) {
+            RGB rgb(decode(channel(p, 0)), decode(channel(p, 1)), decode(channel(p, 2)));
+            const double alpha = alphaOf(p);
+            if (s.premultiplied && alpha > 0) rgb *= 1.0 / alpha;
+            double f = filterAll, t = transmitAll;
+            if (src.isPalette()) {
+                f = filter[src.indices[p]];
+                t = transmit[src.indices[p]];
+            }
+            texels->colors[p] = Color(rgb, f, t + (1.0 - alpha));
+        }
+    } else {
+        texels->values.resize(count);
+        for (std::size_t p = 0; p < count; ++p) {
+            double v;
+            if (use == ImageUse::Bump && s.useIndex && src.isPalette())
+                v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
+            else if (s.useAlpha)
+                v = 1.0 - alphaOf(p);
+            else
+                v = 0.297 * channel(p, 0) + 0.589 * channel(p, 1) + 0.114 * channel(p, 2);
+            texels->values[p] = static_cast<float>(v);
+        }
+    }
+    if (bumpSize && s.bumpSizeGiven) *bumpSize = s.bumpSize;
+    return std::make_shared<const scene::ImageMap>(std::move(texels), s.mapping, s.once,
+                                                   s.interpolation);
+}
+
+bool Interpreter::parseImagePigmentItem(scene::Pigment& pigment) {
+    const Token item = peek();
+    if (item.is(Keyword::kw_image_map)) {
+        next();
+        pigment.setImageMap(parseImageBlock(item, nullptr));
+        return true;
+    }
+    if (item.is(Keyword::kw_image_pattern)) {
+        next();
+        scene::Pattern pattern = pigment.pattern();
+        pattern.kind = scene::PatternKind::Image;
+        pattern.image = parseImageBlock(item, nullptr);
+        pigment.setPattern(pattern);
+        return true;
+    }
+    return false;
+}
+
+bool Interpreter::parseImageNormalItem(scene::Normal& normal, scene::Pigment& holder) {
+    const Token item = peek();
+    if (item.is(Keyword::kw_bump_map)) {
+        next();
+        normal.bumpMap = parseImageBlock(item, &normal.amount);
+        return true;
+    }
+    return item.is(Keyword::kw_image_pattern) && parseImagePigmentItem(holder);
+}
+
+}  // namespace frameray::sdl

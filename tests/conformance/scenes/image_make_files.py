@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+# Writes the small source images of the image_* conformance scenes (pure
+# Python, no libraries): run from this folder, commit the results.
+import math
+import struct
+import zlib
+
+
+def chunk(kind, data):
+    c = struct.pack('>I', len(data)) + kind + data
+    return c + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
+
+
+def write_png(path, w, h, values, channels):
+    """values: flat 8-bit channel values, rows from the top."""
+    ctype = {1: 0, 2: 4, 3: 2, 4: 6}[channels]
+    raw = b''.join(b'\0' + bytes(values[y * w * channels:(y + 1) * w * channels])
+                   for y in range(h))
+    data = b'\x89PNG\r\n\x1a\n'
+    data += chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, ctype, 0, 0, 0))
+    data += chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b'')
+    open(path, 'wb').write(data)
+
+
+def write_ppm(path, w, h, values):
+    open(path, 'wb').write(b'P6\n%d %d\n255\n' % (w, h) + bytes(values))
+
+
+def write_gif(path, w, h, indices, palette):
+    """LZW with 9-bit codes and a clear code every 254 pixels."""
+    pal = list(palette) + [(0, 0, 0)] * (256 - len(palette))
+    out = b'GIF89a' + struct.pack('<HHBBB', w, h, 0xF7, 0, 0)
+    out += bytes(v for p in pal for v in p)
+    out += b',' + struct.pack('<HHHHB', 0, 0, w, h, 0)
+    codes = []
+    for i, v in enumerate(indices):
+        if i % 254 == 0:
+            codes.append(256)
+        codes.append(v)
+    codes.append(257)
+    bits = nbits = 0
+    packed = bytearray()
+    for c in codes:
+        bits |= c << nbits
+        nbits += 9
+        while nbits >= 8:
+            packed.append(bits & 255)
+            bits >>= 8
+            nbits -= 8
+    if nbits:
+        packed.append(bits & 255)
+    out += bytes([8])
+    for i in range(0, len(packed), 255):
+        block = packed[i:i + 255]
+        out += bytes([len(block)]) + bytes(block)
+    open(path, 'wb').write(out + b'\0;')
+
+
+# 16 x 8 colour grid: red across, green down, a blue checker, a white
+# border column and row so orientation is visible.
+grid = []
+for y in range(8):
+    for x in range(16):
+        if x == 0 or y == 0:
+            grid += [255, 255, 255]
+        else:
+            grid += [x * 16 + 8, 255 - y * 32, 200 if (x + y) % 2 else 40]
+write_png('image_grid.png', 16, 8, grid, 3)
+write_ppm('image_grid.ppm', 16, 8, grid)
+
+# 8 x 8 RGBA: colour bands with alpha falling from left to right.
+rgba = []
+for y in range(8):
+    for x in range(8):
+        rgba += [255 - y * 30, 60 + y * 20, 40 + x * 25, 255 - x * 36]
+write_png('image_alpha.png', 8, 8, rgba, 4)
+
+# 8 x 8 palette image: four colours in a ring pattern.
+palette = [(230, 40, 40), (40, 200, 60), (40, 60, 220), (240, 220, 40), (250, 250, 250)]
+idx = []
+for y in range(8):
+    for x in range(8):
+        r = max(abs(x - 3.5), abs(y - 3.5))
+        idx.append(int(r) % 5)
+write_gif('image_palette.gif', 8, 8, idx, palette)
+
+# 32 x 32 grey heights: a dome and a ridge.
+heights = []
+for y in range(32):
+    for x in range(32):
+        d = math.hypot(x - 10.5, y - 12.5) / 9.0
+        v = max(0.0, 1.0 - d * d) * 200
+        if 22 <= x <= 25:
+            v = 255
+        heights.append(int(v))
+write_png('image_heights.png', 32, 32, heights, 1)
