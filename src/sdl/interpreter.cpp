@@ -37,6 +37,7 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const FogPtr&) const { return "fog"; }
         const char* operator()(const SkySpherePtr&) const { return "sky_sphere"; }
         const char* operator()(const InteriorPtr&) const { return "interior"; }
+        const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
     };
     return std::visit(Namer{}, v);
 }
@@ -395,6 +396,9 @@ Value Interpreter::parseRValue() {
         case Keyword::kw_finish: return parseFinish(nullptr);
         case Keyword::kw_interior: return parseInterior(nullptr);
         case Keyword::kw_texture: return parseTexture(nullptr);
+        case Keyword::kw_color_map: case Keyword::kw_colour_map: case Keyword::kw_pigment_map:
+        case Keyword::kw_normal_map: case Keyword::kw_slope_map: case Keyword::kw_texture_map:
+            return parseBlendMapValue();
         case Keyword::kw_camera: return std::make_shared<const scene::Camera>(parseCamera());
         case Keyword::kw_transform: return std::make_shared<const Transform>(parseTransformBlock());
         case Keyword::kw_array: return parseArrayDeclaration();

@@ -57,10 +57,12 @@ struct ArrayValue;
 struct FileHandle;
 struct SplineValue;
 struct FunctionValue;
+struct BlendMapValue;  // blend_map_value.h
 using ArrayPtr = std::shared_ptr<ArrayValue>;
 using FilePtr = std::shared_ptr<FileHandle>;
 using SplinePtr = std::shared_ptr<const SplineValue>;
 using FunctionPtr = std::shared_ptr<const FunctionValue>;
+using BlendMapPtr = std::shared_ptr<const BlendMapValue>;
 
 // A macro parameter passed as a bare identifier: the parameter names the
 // caller's identifier `name` in symbol table `scope` (by reference), so
@@ -73,7 +75,7 @@ struct IdentifierAlias {
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
                            ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr,
-                           InteriorPtr>;
+                           InteriorPtr, BlendMapPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other
