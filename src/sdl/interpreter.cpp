@@ -38,6 +38,7 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const SkySpherePtr&) const { return "sky_sphere"; }
         const char* operator()(const InteriorPtr&) const { return "interior"; }
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
+        const char* operator()(const NormalPtr&) const { return "normal"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -396,6 +397,7 @@ Value Interpreter::parseRValue() {
         case Keyword::kw_finish: return parseFinish(nullptr);
         case Keyword::kw_interior: return parseInterior(nullptr);
         case Keyword::kw_texture: return parseTexture(nullptr);
+        case Keyword::kw_normal: return NormalPtr(parseNormal(nullptr));
         case Keyword::kw_color_map: case Keyword::kw_colour_map: case Keyword::kw_pigment_map:
         case Keyword::kw_normal_map: case Keyword::kw_slope_map: case Keyword::kw_texture_map:
             return parseBlendMapValue();

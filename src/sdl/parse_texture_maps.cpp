@@ -280,8 +280,10 @@ std::vector<scene::Normal::MapEntry> Interpreter::parseNormalMap() {
         expect(Sym::LBracket, "'[' or '}' in normal_map");
         const double v = parseMapValue();
         accept(Sym::Comma);
-        // An entry without a pattern (null) leaves the surface flat.
+        const Token body = peek();
         std::shared_ptr<const scene::Normal> normal = parseNormalBody(nullptr, Sym::RBracket);
+        // povray: "No normal type given."
+        if (!normal) fail(body, "a normal_map entry needs a normal pattern");
         expect(Sym::RBracket, "']' after a normal_map entry");
         entries.push_back({v, std::move(normal)});
     }

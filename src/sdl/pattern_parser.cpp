@@ -318,11 +318,21 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Norma
 std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::Normal* base,
                                                                   Sym closing) {
     scene::Normal normal = base ? *base : scene::Normal{};
+    bool havePattern = base != nullptr;
+    // A declared normal to start from.
+    if (const Token first = peek(); first.isIdentifier()) {
+        const Value* v = lookup(std::string(first.text));
+        if (v && std::holds_alternative<NormalPtr>(*v)) {
+            next();
+            const NormalPtr& declared = std::get<NormalPtr>(*v);
+            normal = declared ? *declared : scene::Normal{};
+            havePattern = declared != nullptr;
+        }
+    }
     // The pattern and its modifiers are parsed like a pigment's; the
     // pigment is a scratch holder for the pattern and its chain.
     scene::Pigment holder;
     holder.setPattern(normal.pattern);
-    bool havePattern = base != nullptr;
     auto bumpSizeFollows = [&] {
         const Token n = peek();
         return n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||

@@ -52,6 +52,7 @@ using TransformPtr = std::shared_ptr<const Transform>;
 using FogPtr = std::shared_ptr<const scene::Fog>;
 using SkySpherePtr = std::shared_ptr<const scene::SkySphere>;
 using InteriorPtr = std::shared_ptr<const scene::Interior>;
+using NormalPtr = std::shared_ptr<const scene::Normal>;  // null: normal { } without a pattern
 
 struct ArrayValue;
 struct FileHandle;
@@ -75,7 +76,7 @@ struct IdentifierAlias {
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
                            ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr,
-                           InteriorPtr, BlendMapPtr>;
+                           InteriorPtr, BlendMapPtr, NormalPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other

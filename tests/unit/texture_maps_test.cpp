@@ -152,3 +152,25 @@ TEST(TextureMaps, Errors) {
                   .find("not supported yet: material_map"),
               std::string::npos);
 }
+
+TEST(TextureMaps, DeclaredNormals) {
+    ParsedScene p(R"(
+#declare N_Bumps = normal { bumps 0.4 scale 0.2 }
+#declare N_Dents = normal { dents 0.4 }
+plane { y, 0 normal { N_Bumps } }
+plane { y, 0 normal { gradient x normal_map { [0 N_Bumps] [1 N_Dents] } } }
+plane { y, 0 texture { normal { N_Bumps bump_size 0.8 } } })");
+    const Normal& plain = *p.scene.objects[0]->texture->normal;
+    EXPECT_EQ(plain.pattern.kind, PatternKind::Bumps);
+    EXPECT_DOUBLE_EQ(plain.amount, 0.4);
+    const Normal& mapped = *p.scene.objects[1]->texture->normal;
+    ASSERT_EQ(mapped.map.size(), 2u);
+    EXPECT_EQ(mapped.map[0].normal->pattern.kind, PatternKind::Bumps);
+    EXPECT_EQ(mapped.map[1].normal->pattern.kind, PatternKind::Dents);
+    EXPECT_DOUBLE_EQ(p.scene.objects[2]->texture->normal->amount, 0.8);
+    // An empty normal is no normal_map entry (povray: "No normal type given").
+    EXPECT_NE(parseErrorOf("#declare N = normal { }\n"
+                           "plane { y, 0 normal { gradient x normal_map { [0 N] [1 bumps] } } }")
+                  .find("needs a normal pattern"),
+              std::string::npos);
+}
