@@ -175,6 +175,26 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     Vec3 geometric = obj.normalAt(p);
     // Shade the side facing the viewer.
     if (dot(geometric, viewDir) > 0) geometric = -geometric;
+    return shadeTexture(obj.texture ? *obj.texture : defaultTexture(), ray, obj, p, p, viewDir,
+                        geometric, state, counts);
+}
+
+RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray,
+                         const scene::Object& obj, const Vec3& p, const Vec3& texP,
+                         const Vec3& viewDir, const Vec3& geometric, const State& state,
+                         RayCounts& counts) const {
+    // A patterned texture: povray 3.7 shades each texture the pattern
+    // picks (with its own reflection and transmission) and blends the
+    // shaded colours by their weights (measured).
+    if (top.map) {
+        RGB color(0.0);
+        const Vec3 q = top.transform.inversePoint(texP);
+        const Vec3 entry = top.map->entryPoint(q);
+        top.map->visit(q, [&](const scene::Texture& t, double w) {
+            color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, state, counts) * w;
+        });
+        return color;
+    }
     const double eps = selfHitEpsilon(p, ray);
     const bool spawns = secondaryRays_ && state.level < scene_.globals.maxTraceLevel;
     const double adcBailout = scene_.globals.adcBailout;
@@ -217,7 +237,6 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // transmit of the layers above it, its reflection is added in full,
     // and a fully opaque layer hides the ones below (all measured with
     // povray 3.7). Whatever all layers let through continues the ray.
-    const scene::Texture& top = obj.texture ? *obj.texture : defaultTexture();
     RGB color(0.0);
     RGB through(1.0);  // what the layers evaluated so far let through
     bool transmits = false;
@@ -228,8 +247,8 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
-        n = tex.perturbNormal(p, geometric);
-        const Color surface = tex.pigment->at(tex.transform.inversePoint(p));
+        n = tex.perturbNormal(texP, geometric);
+        const Color surface = tex.pigment->at(tex.transform.inversePoint(texP));
         pigment = surface.rgb;
         const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, counts);
         color += i == 0 ? local : through * local;

@@ -1,5 +1,6 @@
 #include "scene/normals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -76,11 +77,102 @@ Vec3 normalPatternVector(const Normal& nm, const Vec3& q) {
 
 }  // namespace
 
+Vec3 mapEntryPoint(const Pattern& pattern, const Vec3& p) {
+    const bool ownTurbulence = pattern.kind == PatternKind::Marble ||
+                               pattern.kind == PatternKind::Wood ||
+                               pattern.kind == PatternKind::Agate;
+    bool warped = pattern.turbulence.has_value() && !ownTurbulence;
+    for (const Warp& w : pattern.chain) warped = warped || w.kind != Warp::Kind::Transform;
+    if (!warped) return p;
+    Vec3 q = pattern.patternPoint(p);
+    for (const Warp& w : pattern.chain)
+        if (w.kind == Warp::Kind::Transform) q = w.transform.point(q);
+    return q;
+}
+
+void Normal::transformBy(const Transform& t) {
+    pattern.addTransform(t);
+    for (auto& e : map) {
+        if (!e.normal) continue;
+        auto moved = std::make_shared<Normal>(*e.normal);
+        moved->transformBy(t);
+        e.normal = std::move(moved);
+    }
+}
+
+double Normal::slopeHeight(double v) const {
+    if (slopeMap.empty()) return v;
+    if (v <= slopeMap.front().value) return slopeMap.front().height;
+    std::size_t hi = 1;
+    while (hi < slopeMap.size() && slopeMap[hi].value <= v) ++hi;
+    if (hi == slopeMap.size()) return slopeMap.back().height;
+    const SlopeEntry& a = slopeMap[hi - 1];
+    const SlopeEntry& b = slopeMap[hi];
+    const double span = b.value - a.value;
+    if (span <= 0) return b.height;
+    // Cubic Hermite between the two entries on the interval's own
+    // parameter t in [0, 1]: the slopes are not scaled by the interval's
+    // width (povray's slope_map).
+    const double t = (v - a.value) / span, t2 = t * t, t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * a.height + (t3 - 2 * t2 + t) * a.slope +
+           (-2 * t3 + 3 * t2) * b.height + (t3 - t2) * b.slope;
+}
+
 Vec3 Normal::perturb(const Vec3& p, const Vec3& n) const {
+    const Vec3 m = perturbUnnormalized(p, n);
+    const double len = length(m);
+    return len > 0 ? m * (1.0 / len) : n;
+}
+
+Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n) const {
+    if (mapMode != MapMode::None && !map.empty()) {
+        // The picked normals perturb the surface on their own, at the point
+        // the map's warps displaced; their unit normals are blended by
+        // weight (measured: blending the unnormalised ones does not match).
+        const Vec3 entry = mapEntryPoint(pattern, p);
+        Vec3 sum;
+        auto add = [&](const MapEntry& e, double w) {
+            sum += (e.normal ? e.normal->perturb(entry, n) : n) * w;
+        };
+        switch (mapMode) {
+            case MapMode::List: {
+                const auto i = static_cast<std::size_t>(std::max(0, pattern.index(p)));
+                add(map[std::min(i, map.size() - 1)], 1.0);
+                break;
+            }
+            case MapMode::Average: {
+                double total = 0;
+                for (const MapEntry& e : map) total += e.value;
+                if (total == 0) return n;
+                for (const MapEntry& e : map) add(e, e.value / total);
+                break;
+            }
+            default: {
+                const double v = pattern.value(p);
+                std::size_t hi = 0;
+                while (hi < map.size() && map[hi].value <= v) ++hi;
+                if (hi == 0) {
+                    add(map.front(), 1.0);
+                } else if (hi == map.size()) {
+                    add(map.back(), 1.0);
+                } else {
+                    const MapEntry& a = map[hi - 1];
+                    const MapEntry& b = map[hi];
+                    const double span = b.value - a.value;
+                    const double t = span > 0 ? (v - a.value) / span : 1.0;
+                    add(a, 1.0 - t);
+                    add(b, t);
+                }
+                break;
+            }
+        }
+        return sum;
+    }
     Vec3 m = normalize(normalToPattern(pattern, n));
     if (bumpMap) {
         m = bumpMapNormal(*bumpMap, amount, pattern.patternPoint(p), m);
     } else if (isNormalPattern(pattern.kind)) {
+        // The normal patterns make their own vectors and ignore a slope_map.
         m += normalPatternVector(*this, pattern.patternPoint(p));
     } else {
         // povray's fudge factor: -5 times the bump size per sample, as a
@@ -88,9 +180,9 @@ Vec3 Normal::perturb(const Vec3& p, const Vec3& n) const {
         const double weight = -5.0 * amount * (0.02 / accuracy);
         const Vec3 q = pattern.patternPoint(p);
         for (const Vec3& dir : kTetrahedron)
-            m += dir * (pattern.wave(pattern.raw(q + dir * accuracy)) * weight);
+            m += dir * (slopeHeight(pattern.wave(pattern.raw(q + dir * accuracy))) * weight);
     }
-    return normalize(normalFromPattern(pattern, m));
+    return normalFromPattern(pattern, m);
 }
 
 }  // namespace frameray::scene

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "scene/image_map.h"
 #include "scene/patterns.h"
@@ -14,6 +15,14 @@
 #include "util/vec3.h"
 
 namespace frameray::scene {
+
+// Where the entries of a map (texture_map, normal_map) on `pattern` are
+// evaluated for texture point p: povray evaluates them at the point the
+// pattern's warps (turbulence, warp {}) displaced, so the entries of a
+// turbulent map are turbulent too (measured). The entries carry the map's
+// transformations themselves, so the displaced point is taken back through
+// them; without warps this is p.
+Vec3 mapEntryPoint(const Pattern& pattern, const Vec3& p);
 
 struct Normal {
     // The pattern with its transformations, warps, turbulence, wave type,
@@ -28,9 +37,36 @@ struct Normal {
     // chain still places it).
     std::shared_ptr<const ImageMap> bumpMap;
 
+    // normal_map (the pattern value picks one or two normals), a list
+    // pattern's normals (`checker normal {..} normal {..}`) or `average`:
+    // the picked normals perturb the surface and their results are blended.
+    enum class MapMode { None, Values, List, Average };
+    struct MapEntry {
+        double value;  // map value; the weight under `average`
+        std::shared_ptr<const Normal> normal;
+    };
+    MapMode mapMode = MapMode::None;
+    std::vector<MapEntry> map;
+
+    // slope_map: the pattern value becomes a height by cubic interpolation
+    // between entries that give a height and a slope at a value.
+    struct SlopeEntry {
+        double value, height, slope;
+    };
+    std::vector<SlopeEntry> slopeMap;
+
     // The perturbed unit normal at texture-space point p, where n is the
     // texture-space unit normal.
     Vec3 perturb(const Vec3& p, const Vec3& n) const;
+
+    // perturb() before the final normalisation.
+    Vec3 perturbUnnormalized(const Vec3& p, const Vec3& n) const;
+
+    // Moves the pattern and the normals of its map by t.
+    void transformBy(const Transform& t);
+
+    // The slope map's height at pattern value v.
+    double slopeHeight(double v) const;
 };
 
 }  // namespace frameray::scene

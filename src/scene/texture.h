@@ -3,6 +3,7 @@
 // maps (color_map.h) or pigment maps.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -54,6 +55,9 @@ class Pigment {
         kind_ = Kind::ImageMapped;
     }
     const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
+    // `average`: the pigment map's entries are averaged, weighted by their
+    // values, instead of picked by the pattern.
+    void setAverage() { average_ = true; }
     // Pigment-local transformation ("this, then t"); composes before the
     // texture's transform.
     // The pattern keeps the same transformation in its own chain, where
@@ -72,6 +76,7 @@ class Pigment {
     ColorMap colorMap_;
     std::vector<MapEntry> pigmentMap_;
     std::shared_ptr<const ImageMap> imageMap_;
+    bool average_ = false;
     bool hasTransform_ = false;
     Transform transform_;
 };
@@ -90,7 +95,9 @@ struct Reflection {
     double exponent = 1.0;
     double metallic = 0.0;
 
-    bool any() const { return max.r > 0 || max.g > 0 || max.b > 0 || min.r > 0 || min.g > 0 || min.b > 0; }
+    bool any() const {
+        return max.r > 0 || max.g > 0 || max.b > 0 || min.r > 0 || min.g > 0 || min.b > 0;
+    }
 };
 
 // Thin-film iridescence (irid { amount thickness turbulence }).
@@ -121,6 +128,35 @@ struct Finish {
     double legacyIor = 0.0;  // 0 = not given
 };
 
+struct Texture;
+
+// A patterned texture: `texture_map { [v texture body] .. }`, a list
+// pattern's textures (`checker texture {..} texture {..}`, `tiles`), or
+// `average` over a texture_map. The pattern lives in a holder pigment (its
+// pattern with its chain of transformations and warps).
+struct TextureMap {
+    enum class Mode { Values, List, Average };
+    struct Entry {
+        double value;  // map value; the weight under `average`
+        std::shared_ptr<const Texture> texture;
+    };
+    Pigment holder;
+    Mode mode = Mode::Values;
+    std::vector<Entry> entries;
+
+    // Calls visit(texture, weight) for each texture that colours texture
+    // point q: one or two for a map (povray 3.7 shades both and blends the
+    // results, measured), one for a list pattern, all for `average`.
+    template <typename Visit>
+    void visit(const Vec3& q, Visit&& visit) const;
+
+    // Moves the pattern and every entry by t.
+    void transformBy(const Transform& t);
+
+    // Where the entries are evaluated for texture point p (mapEntryPoint).
+    Vec3 entryPoint(const Vec3& p) const { return mapEntryPoint(holder.pattern(), p); }
+};
+
 struct Texture {
     std::shared_ptr<const Pigment> pigment = std::make_shared<Pigment>();
     Finish finish;
@@ -145,6 +181,12 @@ struct Texture {
     // after the texture in an object).
     void transformBy(const Transform& t);
 
+    // Set for a patterned texture: its pigment, finish and normal are then
+    // unused; a transformation moves the map's pattern and every entry
+    // (measured: the textures of a map scale with it), so `transform`
+    // stays the identity.
+    std::shared_ptr<const TextureMap> map;
+
     // Normal perturbation (normals.h); none when null.
     std::shared_ptr<const Normal> normal;
     // The shading normal at world point p after the texture's normal, for a
@@ -155,5 +197,39 @@ struct Texture {
         return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn)));
     }
 };
+
+template <typename Visit>
+void TextureMap::visit(const Vec3& q, Visit&& visit) const {
+    if (entries.empty()) return;
+    switch (mode) {
+        case Mode::List: {
+            const auto i = static_cast<std::size_t>(std::max(0, holder.pattern().index(q)));
+            visit(*entries[std::min(i, entries.size() - 1)].texture, 1.0);
+            return;
+        }
+        case Mode::Average: {
+            double total = 0;
+            for (const Entry& e : entries) total += e.value;
+            if (total == 0) return;
+            for (const Entry& e : entries)
+                if (e.value != 0) visit(*e.texture, e.value / total);
+            return;
+        }
+        case Mode::Values:
+            break;
+    }
+    const double v = holder.pattern().value(q);
+    if (v <= entries.front().value) return visit(*entries.front().texture, 1.0);
+    std::size_t hi = 1;
+    while (hi < entries.size() && entries[hi].value <= v) ++hi;
+    if (hi == entries.size()) return visit(*entries.back().texture, 1.0);
+    const Entry& a = entries[hi - 1];
+    const Entry& b = entries[hi];
+    const double span = b.value - a.value;
+    if (span <= 0) return visit(*b.texture, 1.0);
+    const double t = (v - a.value) / span;
+    visit(*a.texture, 1.0 - t);
+    visit(*b.texture, t);
+}
 
 }  // namespace frameray::scene

@@ -39,6 +39,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const FogPtr&) const { return "fog"; }
         const char* operator()(const SkySpherePtr&) const { return "sky_sphere"; }
         const char* operator()(const InteriorPtr&) const { return "interior"; }
+        const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
+        const char* operator()(const NormalPtr&) const { return "normal"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -450,32 +452,23 @@ Value Interpreter::parseRValue() {
     const Token start = peek();
     if (isObjectStart(start)) return parseObject();
     switch (start.kw) {
-        case Keyword::kw_pigment:
-            return parsePigment();
-        case Keyword::kw_finish:
-            return parseFinish(nullptr);
-        case Keyword::kw_interior:
-            return parseInterior(nullptr);
-        case Keyword::kw_texture:
-            return parseTexture(nullptr);
-        case Keyword::kw_camera:
-            return std::make_shared<const scene::Camera>(parseCamera());
-        case Keyword::kw_transform:
-            return std::make_shared<const Transform>(parseTransformBlock());
-        case Keyword::kw_array:
-            return parseArrayDeclaration();
-        case Keyword::kw_spline:
-            return parseSpline();
-        case Keyword::kw_function:
-            return parseFunctionDeclaration();
-        case Keyword::kw_light_source:
-            return std::make_shared<const scene::Light>(parseLightSource());
-        case Keyword::kw_fog:
-            return std::make_shared<const scene::Fog>(parseFog());
-        case Keyword::kw_sky_sphere:
-            return std::make_shared<const scene::SkySphere>(parseSkySphere());
-        default:
-            break;
+        case Keyword::kw_pigment: return parsePigment();
+        case Keyword::kw_finish: return parseFinish(nullptr);
+        case Keyword::kw_interior: return parseInterior(nullptr);
+        case Keyword::kw_texture: return parseTexture(nullptr);
+        case Keyword::kw_normal: return NormalPtr(parseNormal(nullptr));
+        case Keyword::kw_color_map: case Keyword::kw_colour_map: case Keyword::kw_pigment_map:
+        case Keyword::kw_normal_map: case Keyword::kw_slope_map: case Keyword::kw_texture_map:
+            return parseBlendMapValue();
+        case Keyword::kw_camera: return std::make_shared<const scene::Camera>(parseCamera());
+        case Keyword::kw_transform: return std::make_shared<const Transform>(parseTransformBlock());
+        case Keyword::kw_array: return parseArrayDeclaration();
+        case Keyword::kw_spline: return parseSpline();
+        case Keyword::kw_function: return parseFunctionDeclaration();
+        case Keyword::kw_light_source: return std::make_shared<const scene::Light>(parseLightSource());
+        case Keyword::kw_fog: return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_sky_sphere: return std::make_shared<const scene::SkySphere>(parseSkySphere());
+        default: break;
     }
     // A string value is complete without looking further (see parseString).
     if (startsStringExpression(start)) return parseString();

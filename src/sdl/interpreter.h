@@ -22,6 +22,7 @@
 #include "sdl/diagnostics.h"
 #include "sdl/frame_context.h"
 #include "sdl/token_cache.h"
+#include "sdl/blend_map_value.h"
 #include "sdl/value.h"
 
 namespace frameray::scene {
@@ -232,6 +233,25 @@ private:
     bool parseTurbulenceItem(scene::Turbulence& turb);  // turbulence, octaves, omega, lambda
     scene::Warp parseWarp();                             // after the warp keyword
     std::vector<scene::Pigment::MapEntry> parsePigmentMap();
+    // Pigment items up to `closing` (not consumed): pigment { } and map entries.
+    void parsePigmentBody(scene::Pigment& pigment, Sym closing);
+    // A pattern keyword and its arguments (gradient's vector...), without
+    // a colour list; isPatternKeyword tells whether `t` is one.
+    bool isPatternKeyword(const Token& t) const;
+    void parsePatternKeyword(scene::Pigment& holder);
+    std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
+    // --- texture bodies and maps (parse_texture_maps.cpp) ---
+    void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`
+    scene::Texture parseLayeredTextures();  // texture { } texture { }...: one layered texture
+    bool parseTexturePatternItem(scene::Texture& tex, std::shared_ptr<scene::TextureMap>& draft);
+    std::vector<scene::TextureMap::Entry> parseTextureMap();
+    std::vector<scene::Normal::MapEntry> parseNormalMap();
+    std::vector<scene::Normal::SlopeEntry> parseSlopeMap();
+    Value parseBlendMapValue();  // a declared map
+    double parseMapValue();      // an entry's value, ending before a '<'
+
+    // After a map's '{': a declared map of that kind (consumed), or null.
+    const BlendMapValue* blendMapIdentifier(BlendMapValue::Kind kind);
     // --- finish and interior (parse_finish.cpp) ---
     FinishPtr parseFinish(const scene::Finish* base);
     void parseFinishItems(scene::Finish& finish);

@@ -100,20 +100,25 @@ PigmentPtr Interpreter::parsePigment() {
     next();  // pigment
     expect(Sym::LBrace, "'{' after 'pigment'");
     auto result = std::make_shared<scene::Pigment>();
+    parsePigmentBody(*result, Sym::RBrace);
+    expect(Sym::RBrace, "'}' closing 'pigment'");
+    return result;
+}
+
+void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
     const Token t = peek();
     if (t.isIdentifier()) {
         const Value* v = lookup(std::string(t.text));
         if (v && std::holds_alternative<PigmentPtr>(*v)) {
             next();
-            result = std::make_shared<scene::Pigment>(*std::get<PigmentPtr>(*v));
+            result = *std::get<PigmentPtr>(*v);
         }
     }
-    for (;;) {
-        if (accept(Sym::RBrace)) break;
+    while (!peek().is(closing)) {
         const Token item = peek();
         Transform step;
         if (parseTransformation(step)) {
-            result->transform(step);
+            result.transform(step);
             continue;
         }
         if (item.is(Keyword::kw_quick_color) || item.is(Keyword::kw_quick_colour)) {
@@ -121,16 +126,15 @@ PigmentPtr Interpreter::parsePigment() {
             parseColor();
             continue;
         }
-        if (parsePigmentPatternItem(*result)) continue;
+        if (parsePigmentPatternItem(result)) continue;
         if (startsColor(item)) {
-            result->setSolid(parseColor());
+            result.setSolid(parseColor());
             continue;
         }
         if (item.kind == TokenKind::Word && item.kw != Keyword::None)
             unsupported(item, fmt::format("'{}' in pigment", item.text));
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
-    return result;
 }
 
 PigmentPtr Interpreter::parsePigmentListEntry() {
@@ -146,25 +150,34 @@ PigmentPtr Interpreter::parsePigmentListEntry() {
     return std::make_shared<const scene::Pigment>(parseColor());
 }
 
+bool Interpreter::isPatternKeyword(const Token& t) const {
+    return patternKeyword(t.kw).has_value();
+}
+
+void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
+    const Token item = next();
+    const scene::PatternKind kind = *patternKeyword(item.kw);
+    scene::Pattern pattern = pigment.pattern();
+    pattern.kind = kind;
+    if (kind == scene::PatternKind::Gradient) {
+        const Vec3 g = parseVec3();
+        const double len = length(g);
+        if (len == 0) fail(item, "gradient vector is zero");
+        pattern.gradient = g * (1.0 / len);
+    } else if (kind == scene::PatternKind::Spiral1 || kind == scene::PatternKind::Spiral2) {
+        pattern.arms = static_cast<int>(parseFloat());
+    } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
+        pattern.waveType = scene::WaveType::Triangle;  // their default wave
+    }
+    pigment.setPattern(pattern);
+}
+
 bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
     const Token item = peek();
     if (parseImagePigmentItem(pigment)) return true;
     if (const auto kind = patternKeyword(item.kw)) {
-        next();
-        scene::Pattern pattern = pigment.pattern();
-        pattern.kind = *kind;
-        if (*kind == scene::PatternKind::Gradient) {
-            const Vec3 g = parseVec3();
-            const double len = length(g);
-            if (len == 0) fail(item, "gradient vector is zero");
-            pattern.gradient = g * (1.0 / len);
-        } else if (*kind == scene::PatternKind::Spiral1 || *kind == scene::PatternKind::Spiral2) {
-            pattern.arms = static_cast<int>(parseFloat());
-        } else if (*kind == scene::PatternKind::Marble || *kind == scene::PatternKind::Wood) {
-            pattern.waveType = scene::WaveType::Triangle;  // their default wave
-        }
-        pigment.setPattern(pattern);
-        if (pattern.isList()) {
+        parsePatternKeyword(pigment);
+        if (pigment.pattern().isList()) {
             // Up to listSize colours or pigments, optionally comma-separated;
             // missing ones keep the pattern's defaults.
             const std::vector<Color> defaults = defaultListColors(*kind);
@@ -193,6 +206,13 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
         case Keyword::kw_color_map:
         case Keyword::kw_colour_map:
             pigment.setColorMap(parseColorMap());
+            return true;
+        case Keyword::kw_pigment_map:
+            pigment.setPigmentMap(parsePigmentMap());
+            return true;
+        case Keyword::kw_average:
+            next();
+            pigment.setAverage();
             return true;
         case Keyword::kw_brick_size: {
             next();
@@ -291,54 +311,114 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
 std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base) {
     next();  // normal
     expect(Sym::LBrace, "'{' after 'normal'");
+    auto normal = parseNormalBody(base, Sym::RBrace);
+    expect(Sym::RBrace, "'}' closing 'normal'");
+    return normal;
+}
+
+std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::Normal* base,
+                                                                  Sym closing) {
     scene::Normal normal = base ? *base : scene::Normal{};
+    bool havePattern = base != nullptr;
+    // A declared normal to start from.
+    if (const Token first = peek(); first.isIdentifier()) {
+        const Value* v = lookup(std::string(first.text));
+        if (v && std::holds_alternative<NormalPtr>(*v)) {
+            next();
+            const NormalPtr& declared = std::get<NormalPtr>(*v);
+            normal = declared ? *declared : scene::Normal{};
+            havePattern = declared != nullptr;
+        }
+    }
     // The pattern and its modifiers are parsed like a pigment's; the
     // pigment is a scratch holder for the pattern and its chain.
     scene::Pigment holder;
     holder.setPattern(normal.pattern);
-    bool havePattern = base != nullptr;
-    for (;;) {
-        if (accept(Sym::RBrace)) break;
+    auto bumpSizeFollows = [&] {
+        const Token n = peek();
+        return n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
+               (n.isIdentifier() && lookup(std::string(n.text)) &&
+                std::holds_alternative<double>(*lookup(std::string(n.text))));
+    };
+    while (!peek().is(closing)) {
         const Token item = peek();
         Transform step;
         if (parseTransformation(step)) {
             holder.transform(step);
+            // The normals of a map move with it (as a texture map's do).
+            for (auto& e : normal.map) {
+                if (!e.normal) continue;
+                auto moved = std::make_shared<scene::Normal>(*e.normal);
+                moved->transformBy(step);
+                e.normal = std::move(moved);
+            }
             continue;
         }
         if (patternKeyword(item.kw)) {
-            if (scene::Pattern::listSize(*patternKeyword(item.kw)) > 0)
-                unsupported(item, fmt::format("'{}' as a normal", item.text));
-            parsePigmentPatternItem(holder);
+            parsePatternKeyword(holder);
             havePattern = true;
+            if (holder.pattern().isList()) {
+                // A list pattern takes one normal per index.
+                if (!peek().is(Keyword::kw_normal))
+                    unsupported(item, fmt::format("'{}' as a normal", item.text));
+                normal.mapMode = scene::Normal::MapMode::List;
+                normal.map.clear();
+                const int count = scene::Pattern::listSize(holder.pattern().kind);
+                for (int i = 0; i < count; ++i) {
+                    if (i > 0) accept(Sym::Comma);
+                    if (!peek().is(Keyword::kw_normal)) break;
+                    normal.map.push_back({static_cast<double>(i), parseNormal(nullptr)});
+                }
+                while (static_cast<int>(normal.map.size()) < count)
+                    normal.map.push_back({static_cast<double>(normal.map.size()), nullptr});
+                continue;
+            }
+            if (normal.mapMode == scene::Normal::MapMode::List)
+                normal.mapMode = scene::Normal::MapMode::None;
             // An optional bump size follows the pattern.
-            const Token n = peek();
-            if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
-                (n.isIdentifier() && lookup(std::string(n.text)) &&
-                 std::holds_alternative<double>(*lookup(std::string(n.text)))))
-                normal.amount = parseFloat();
+            if (bumpSizeFollows()) normal.amount = parseFloat();
             continue;
+        }
+        switch (item.kw) {
+            case Keyword::kw_bump_size:
+                next();
+                normal.amount = parseFloat();
+                continue;
+            case Keyword::kw_accuracy:
+                next();
+                normal.accuracy = parseFloat();
+                continue;
+            case Keyword::kw_normal_map:
+                if (normal.mapMode == scene::Normal::MapMode::List)
+                    fail(item, "a list pattern takes normals, not a normal_map");
+                normal.map = parseNormalMap();
+                if (normal.mapMode == scene::Normal::MapMode::None)
+                    normal.mapMode = scene::Normal::MapMode::Values;
+                continue;
+            case Keyword::kw_slope_map:
+                normal.slopeMap = parseSlopeMap();
+                continue;
+            case Keyword::kw_average:
+                next();
+                normal.mapMode = scene::Normal::MapMode::Average;
+                havePattern = true;
+                continue;
+            case Keyword::kw_color_map:
+            case Keyword::kw_colour_map:
+            case Keyword::kw_pigment_map:
+                fail(item, fmt::format("'{}' is not allowed in a normal", item.text));
+            default:
+                break;
         }
         if (parseImageNormalItem(normal, holder)) {
             havePattern = true;
             continue;
         }
-        if (item.is(Keyword::kw_bump_size)) {
-            next();
-            normal.amount = parseFloat();
-            continue;
-        }
-        if (item.is(Keyword::kw_accuracy)) {
-            next();
-            normal.accuracy = parseFloat();
-            continue;
-        }
-        if (item.is(Keyword::kw_color_map) || item.is(Keyword::kw_colour_map) ||
-            item.is(Keyword::kw_pigment_map))
-            fail(item, fmt::format("'{}' is not allowed in a normal", item.text));
         if (parsePigmentPatternItem(holder)) continue;
         if (item.kind == TokenKind::Word && item.kw != Keyword::None)
             unsupported(item, fmt::format("'{}' in normal", item.text));
-        fail(item, fmt::format("expected a normal item or '}}', found {}", describeToken(item)));
+        fail(item, fmt::format("expected a normal item or '{}', found {}",
+                               closing == Sym::RBrace ? "}" : "]", describeToken(item)));
     }
     normal.pattern = holder.pattern();
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
@@ -450,12 +530,16 @@ scene::Warp Interpreter::parseWarp() {
 scene::ColorMap Interpreter::parseColorMap() {
     const Token kw = next();  // color_map
     expect(Sym::LBrace, "'{' after 'color_map'");
+    if (const BlendMapValue* m = blendMapIdentifier(BlendMapValue::Kind::Color)) {
+        expect(Sym::RBrace, "'}' after a color_map identifier");
+        return m->colors;
+    }
     std::vector<scene::ColorMap::Entry> entries;
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token open = peek();
         expect(Sym::LBracket, "'[' or '}' in color_map");
-        const double v1 = parseFloat();
+        const double v1 = parseMapValue();
         const bool hadComma = accept(Sym::Comma);
         if (hadComma && peek().kind == TokenKind::Number) {
             // [v1, v2 color C1 color C2]: a band from C1 to C2
@@ -482,22 +566,27 @@ scene::ColorMap Interpreter::parseColorMap() {
 std::vector<scene::Pigment::MapEntry> Interpreter::parsePigmentMap() {
     const Token kw = next();  // pigment_map
     expect(Sym::LBrace, "'{' after 'pigment_map'");
+    if (const BlendMapValue* m = blendMapIdentifier(BlendMapValue::Kind::Pigment)) {
+        expect(Sym::RBrace, "'}' after a pigment_map identifier");
+        return m->pigments;
+    }
     std::vector<scene::Pigment::MapEntry> entries;
     for (;;) {
         if (accept(Sym::RBrace)) break;
         expect(Sym::LBracket, "'[' or '}' in pigment_map");
-        const double v = parseFloat();
+        const double v = parseMapValue();
         accept(Sym::Comma);
-        entries.push_back({v, parsePigmentListEntry()});
+        // [v PIGMENT_BODY]: a colour, a pigment identifier, a pattern...
+        auto entry = std::make_shared<scene::Pigment>();
+        parsePigmentBody(*entry, Sym::RBracket);
+        entries.push_back({v, std::move(entry)});
         expect(Sym::RBracket, "']' after a pigment_map entry");
     }
     if (entries.empty()) fail(kw, "pigment_map needs at least one entry");
     if (entries.size() > scene::ColorMap::kMaxEntries)
         fail(kw,
              fmt::format("a pigment_map holds at most {} entries", scene::ColorMap::kMaxEntries));
-    for (std::size_t i = 1; i < entries.size(); ++i)
-        if (entries[i].value < entries[i - 1].value)
-            fail(kw, "pigment_map entries must be in increasing order");
+    // Not checked for order: under `average` the values are weights.
     return entries;
 }
 

@@ -322,11 +322,15 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         }
         case Keyword::kw_texture: {
             scene::Texture& tx = editTexture();
-            tx = *parseTexture(&tx);
+            // A texture block starts from the object's texture unless that
+            // is a patterned one (its pattern would swallow the new items).
+            tx = tx.map ? *parseTexture(nullptr) : *parseTexture(&tx);
             // Further texture blocks right after it lie on top of it: a
             // layered texture (seed 003 5.4.5).
             while (peek().is(Keyword::kw_texture)) {
+                const Token layer = peek();
                 scene::Texture upper = *parseTexture(nullptr);
+                if (upper.map || tx.map) unsupported(layer, "a patterned texture as a layer");
                 tx.stackOn(upper);
                 tx = std::move(upper);
             }
@@ -431,40 +435,7 @@ Transform Interpreter::parseTransformBlock() {
 
 // --- textures ------------------------------------------------------------------
 
-TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
-    next();  // texture
-    expect(Sym::LBrace, "'{' after 'texture'");
-    scene::Texture tex = base ? *base : scene::Texture{};
-    const Token t = peek();
-    if (t.isIdentifier()) {
-        next();
-        const Value v = identifierValue(t);
-        const auto* tp = std::get_if<TexturePtr>(&v);
-        if (!tp) fail(t, fmt::format("'{}' is a {}, not a texture", t.text, valueKindName(v)));
-        tex = **tp;
-    }
-    for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token item = peek();
-        Transform step;
-        if (parseTransformation(step)) {
-            tex.transform = tex.transform.then(step);
-            continue;
-        }
-        if (item.is(Keyword::kw_pigment)) {
-            tex.pigment = parsePigment();
-        } else if (item.is(Keyword::kw_normal)) {
-            tex.normal = parseNormal(tex.normal.get());
-        } else if (item.is(Keyword::kw_finish)) {
-            tex.finish = *parseFinish(&tex.finish);
-        } else if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
-            unsupported(item, fmt::format("'{}' in texture", item.text));
-        } else {
-            fail(item, fmt::format("expected a texture item or '}}', found {}", describeToken(item)));
-        }
-    }
-    return std::make_shared<const scene::Texture>(tex);
-}
+// parseTexture: parse_texture_maps.cpp
 
 // --- settings (camera: parse_camera.cpp, lights: parse_light.cpp) ------------
 

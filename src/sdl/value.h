@@ -52,15 +52,18 @@ using TransformPtr = std::shared_ptr<const Transform>;
 using FogPtr = std::shared_ptr<const scene::Fog>;
 using SkySpherePtr = std::shared_ptr<const scene::SkySphere>;
 using InteriorPtr = std::shared_ptr<const scene::Interior>;
+using NormalPtr = std::shared_ptr<const scene::Normal>;  // null: normal { } without a pattern
 
 struct ArrayValue;
 struct FileHandle;
 struct SplineValue;
 struct FunctionValue;
+struct BlendMapValue;  // blend_map_value.h
 using ArrayPtr = std::shared_ptr<ArrayValue>;
 using FilePtr = std::shared_ptr<FileHandle>;
 using SplinePtr = std::shared_ptr<const SplineValue>;
 using FunctionPtr = std::shared_ptr<const FunctionValue>;
+using BlendMapPtr = std::shared_ptr<const BlendMapValue>;
 
 // A macro parameter passed as a bare identifier: the parameter names the
 // caller's identifier `name` in symbol table `scope` (by reference), so
@@ -73,7 +76,7 @@ struct IdentifierAlias {
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
                            ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr,
-                           InteriorPtr>;
+                           InteriorPtr, BlendMapPtr, NormalPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other
