@@ -37,11 +37,22 @@ CameraRays::CameraRays(const scene::Camera& camera, int width, int height)
 }
 
 std::optional<scene::Ray> CameraRays::generate(double x, double y) const {
-    using scene::Projection;
-    const scene::Camera& c = camera_;
     // Image-plane position centred on the image: [-0.5, 0.5], y up.
     const double cx = x / width_ - 0.5;
     const double cy = 0.5 - y / height_;
+    std::optional<scene::Ray> ray = project(cx, cy);
+    if (ray && camera_.normal) {
+        // povray perturbs the unit ray direction like a surface normal, with
+        // the normal pattern evaluated at the image-plane point (cx, cy, 0).
+        const Vec3 unit = normalize(ray->direction);
+        ray->direction = camera_.normal->perturb(Vec3{cx, cy, 0}, unit);
+    }
+    return ray;
+}
+
+std::optional<scene::Ray> CameraRays::project(double cx, double cy) const {
+    using scene::Projection;
+    const scene::Camera& c = camera_;
     const Vec3 &d = unitDirection_, &r = unitRight_, &u = unitUp_;
     switch (c.projection) {
         case Projection::Perspective:

@@ -24,6 +24,10 @@ class CameraRays {
     const scene::Camera& camera() const { return camera_; }
 
   private:
+    // The projection's ray, before a camera normal bends it; (cx, cy) is
+    // the image-plane position centred on the image, in [-0.5, 0.5], y up.
+    std::optional<scene::Ray> project(double cx, double cy) const;
+
     scene::Camera camera_;
     double width_, height_;
     // Unit direction, right and up; and |right| / |up|, the image aspect

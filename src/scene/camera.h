@@ -3,8 +3,10 @@
 // frame of vectors that primary rays are built from (render/camera_rays.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 
+#include "scene/normals.h"
 #include "util/matrix.h"
 #include "util/vec3.h"
 
@@ -51,6 +53,9 @@ struct Camera {
     double angle = 90;
     double verticalAngle = 0;  // spherical only; 0 means half of `angle`
     FocalBlur blur;
+    // `normal { }` in the camera: bends every primary ray as a surface
+    // normal is bent, with the pattern evaluated on the image plane.
+    std::shared_ptr<const Normal> normal;
 };
 
 // What a camera { } block set, beyond the plain vectors stored directly.

@@ -160,6 +160,9 @@ scene::Camera Interpreter::parseCamera() {
             case Keyword::kw_variance:
                 cam.blur.variance = parseFloat();
                 break;
+            case Keyword::kw_normal:
+                cam.normal = parseNormal(cam.normal.get());
+                break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                     unsupported(t, fmt::format("'{}' in camera", t.text));

@@ -219,10 +219,9 @@ std::vector<scene::TextureMap::Entry> Interpreter::parseTextureMap() {
 }
 
 double Interpreter::parseMapValue() {
-    // `[0 <1, 0, 0>]`: the value ends before a '<' (povray reads no
-    // comparison there).
-    const Token at = peek();
-    return toFloat(parseAdditive(false), at);
+    // `[0 <1, 0, 0>]`: the value ends before the '<', as every expression
+    // outside parentheses does.
+    return parseFloat();
 }
 
 const BlendMapValue* Interpreter::blendMapIdentifier(BlendMapValue::Kind kind) {
