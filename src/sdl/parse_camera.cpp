@@ -98,6 +98,10 @@ scene::Camera Interpreter::parseCamera() {
             continue;
         }
         if (isUnsupportedCameraWord(t)) unsupported(t, fmt::format("{} in camera", t.text));
+        if (t.is(Keyword::kw_normal)) {
+            cam.normal = parseNormal(cam.normal.get());
+            continue;
+        }
         next();
         if (projectionKeyword(t.kw)) fail(t, "the camera type must come first in the camera block");
         switch (t.kw) {
@@ -159,9 +163,6 @@ scene::Camera Interpreter::parseCamera() {
                 break;
             case Keyword::kw_variance:
                 cam.blur.variance = parseFloat();
-                break;
-            case Keyword::kw_normal:
-                cam.normal = parseNormal(cam.normal.get());
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
