@@ -127,14 +127,19 @@ Value* Interpreter::find(std::string_view name) {
     return const_cast<Value*>(std::as_const(*this).lookup(name));
 }
 
-void Interpreter::declare(const std::string& name, Value value, bool local) {
+void Interpreter::declare(const std::string& name, Value value, bool local, size_t scopeCount) {
+    // Only the scopes that existed when the directive began count: a macro
+    // that produced the value (`#local M = MakeTransform()`) may still have
+    // its own scope open when a value ending in '}' is complete.
+    const size_t visible = std::min(scopeCount, scopes_.size());
     if (local) {
-        scopes_.back()[name] = std::move(value);
+        scopes_[visible - 1][name] = std::move(value);
         return;
     }
     // #declare assigns the most local existing version, or creates a global;
     // through a by-reference macro parameter it assigns the caller's.
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+    for (auto it = scopes_.rend() - static_cast<std::ptrdiff_t>(visible); it != scopes_.rend();
+         ++it) {
         auto found = it->find(name);
         if (found == it->end()) continue;
         if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
@@ -422,6 +427,7 @@ void Interpreter::directiveDeclare(bool local) {
         return;
     }
     expect(Sym::Equal, "'='");
+    const size_t scopeCount = scopes_.size();
     // The value is ordinary scene text again: objects hold directives, and
     // so may expressions (`(1 + #if (A) 2 #else 3 #end)`).
     cursors_.back().inDirective = false;
@@ -435,7 +441,7 @@ void Interpreter::directiveDeclare(bool local) {
                              deprecatedOnce, false};
     // Bind before looking for the optional ';': that look-ahead may run the
     // next line's directive, which may use this identifier.
-    declare(name, std::move(value), local);
+    declare(name, std::move(value), local, scopeCount);
     // povray 3.7: an error from language version 3.5 on, a warning before.
     if (needsSemicolon && !peek().is(Sym::Semicolon)) {
         const std::string message = fmt::format(
@@ -452,23 +458,41 @@ Value Interpreter::parseRValue() {
     const Token start = peek();
     if (isObjectStart(start)) return parseObject();
     switch (start.kw) {
-        case Keyword::kw_pigment: return parsePigment();
-        case Keyword::kw_finish: return parseFinish(nullptr);
-        case Keyword::kw_interior: return parseInterior(nullptr);
-        case Keyword::kw_texture: return parseTexture(nullptr);
-        case Keyword::kw_normal: return NormalPtr(parseNormal(nullptr));
-        case Keyword::kw_color_map: case Keyword::kw_colour_map: case Keyword::kw_pigment_map:
-        case Keyword::kw_normal_map: case Keyword::kw_slope_map: case Keyword::kw_texture_map:
+        case Keyword::kw_pigment:
+            return parsePigment();
+        case Keyword::kw_finish:
+            return parseFinish(nullptr);
+        case Keyword::kw_interior:
+            return parseInterior(nullptr);
+        case Keyword::kw_texture:
+            return std::make_shared<const scene::Texture>(parseLayeredTextures(nullptr, true));
+        case Keyword::kw_normal:
+            return NormalPtr(parseNormal(nullptr));
+        case Keyword::kw_color_map:
+        case Keyword::kw_colour_map:
+        case Keyword::kw_pigment_map:
+        case Keyword::kw_normal_map:
+        case Keyword::kw_slope_map:
+        case Keyword::kw_texture_map:
             return parseBlendMapValue();
-        case Keyword::kw_camera: return std::make_shared<const scene::Camera>(parseCamera());
-        case Keyword::kw_transform: return std::make_shared<const Transform>(parseTransformBlock());
-        case Keyword::kw_array: return parseArrayDeclaration();
-        case Keyword::kw_spline: return parseSpline();
-        case Keyword::kw_function: return parseFunctionDeclaration();
-        case Keyword::kw_light_source: return std::make_shared<const scene::Light>(parseLightSource());
-        case Keyword::kw_fog: return std::make_shared<const scene::Fog>(parseFog());
-        case Keyword::kw_sky_sphere: return std::make_shared<const scene::SkySphere>(parseSkySphere());
-        default: break;
+        case Keyword::kw_camera:
+            return std::make_shared<const scene::Camera>(parseCamera());
+        case Keyword::kw_transform:
+            return std::make_shared<const Transform>(parseTransformBlock());
+        case Keyword::kw_array:
+            return parseArrayDeclaration();
+        case Keyword::kw_spline:
+            return parseSpline();
+        case Keyword::kw_function:
+            return parseFunctionDeclaration();
+        case Keyword::kw_light_source:
+            return std::make_shared<const scene::Light>(parseLightSource());
+        case Keyword::kw_fog:
+            return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_sky_sphere:
+            return std::make_shared<const scene::SkySphere>(parseSkySphere());
+        default:
+            break;
     }
     // A string value is complete without looking further (see parseString).
     if (startsStringExpression(start)) return parseString();

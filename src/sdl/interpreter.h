@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -19,10 +20,10 @@
 
 #include "scene/scene.h"
 #include "scene/ttf_font.h"
+#include "sdl/blend_map_value.h"
 #include "sdl/diagnostics.h"
 #include "sdl/frame_context.h"
 #include "sdl/token_cache.h"
-#include "sdl/blend_map_value.h"
 #include "sdl/value.h"
 
 namespace frameray::scene {
@@ -37,7 +38,7 @@ namespace frameray::sdl {
 struct MeshParts;  // parse_mesh.cpp
 
 class Interpreter {
-public:
+  public:
     Interpreter(const FrameContext& frame, TokenCache& cache, MessageSink& messages);
 
     // Parses a scene file into a Scene. Throws SdlError on the first error.
@@ -48,7 +49,7 @@ public:
     // Identifier lookup after parsing (tests).
     const Value* lookup(std::string_view name) const;
 
-private:
+  private:
     friend class FunctionCompiler;  // compiles function bodies from this token stream
 
     // --- token stream (interpreter.cpp) ---
@@ -57,8 +58,8 @@ private:
         std::shared_ptr<const TokenizedFile> file;
         size_t pos = 0;
         CursorKind kind = CursorKind::File;
-        size_t scopeCount = 0;    // scopes_ size to restore when it ends
-        size_t blockCount = 0;    // blocks_ size to restore when it ends
+        size_t scopeCount = 0;  // scopes_ size to restore when it ends
+        size_t blockCount = 0;  // blocks_ size to restore when it ends
         // True while a directive's own arguments are read from this cursor:
         // a '#' met then ends the argument instead of starting a directive
         // (the expression parser's one-token lookahead must not run the
@@ -82,8 +83,8 @@ private:
         Block(BlockKind k, const SourceLoc& l) : kind(k), loc(l) {}
         BlockKind kind = BlockKind::If;
         SourceLoc loc;
-        size_t restartPos = 0;   // While: the '#' of the directive; For: after the header
-        std::string loopVar;     // For
+        size_t restartPos = 0;  // While: the '#' of the directive; For: after the header
+        std::string loopVar;    // For
         double loopEnd = 0, loopStep = 1;
         double switchValue = 0;  // Switch
     };
@@ -97,19 +98,20 @@ private:
 
     scene::Scene run(std::shared_ptr<const TokenizedFile> file);
 
-    const Token& rawPeek();        // current token, no directive processing
+    const Token& rawPeek();  // current token, no directive processing
     // Current token after directives/macros; the fast path answers repeated
     // peeks at the same place.
     const Token& peek() {
         const Cursor& c = cursors_.back();
-        if (peekCache_.file == c.file.get() && peekCache_.pos == c.pos && peekCache_.depth == cursors_.size())
+        if (peekCache_.file == c.file.get() && peekCache_.pos == c.pos &&
+            peekCache_.depth == cursors_.size())
             return c.file->tokens[c.pos];
         return resolvePeek();
     }
     const Token& resolvePeek();
-    Token next();                  // consume peek()
+    Token next();  // consume peek()
     SourceLoc loc(const Token& t) const;
-    SourceLoc here();              // location of peek()
+    SourceLoc here();  // location of peek()
     [[noreturn]] void fail(const Token& at, const std::string& message);
     [[noreturn]] void failHere(const std::string& message);
     void warn(const Token& at, const std::string& message);
@@ -123,9 +125,9 @@ private:
     bool accept(Keyword k);
     std::string expectIdentifier();
 
-    void runDirective();           // at '#'
+    void runDirective();  // at '#'
     void directiveDeclare(bool local);
-    Value parseRValue();           // anything #declare or a macro argument accepts
+    Value parseRValue();  // anything #declare or a macro argument accepts
     void directiveInclude(const Token& at);
     void directiveIf(const Token& at, bool (Interpreter::*condition)());
     void directiveElse(const Token& at);
@@ -149,7 +151,10 @@ private:
 
     // --- identifiers ---
     Value* find(std::string_view name);
-    void declare(const std::string& name, Value value, bool local);
+    // Binds name in the innermost of the first scopeCount scopes (#local) or
+    // assigns or creates it as #declare does.
+    void declare(const std::string& name, Value value, bool local,
+                 size_t scopeCount = std::numeric_limits<size_t>::max());
 
     // --- arrays (arrays.cpp) ---
     Value parseArrayDeclaration();
@@ -173,12 +178,12 @@ private:
     Value callFunction(const FunctionValue& function, const Token& at);
 
     // --- expressions (expressions.cpp) ---
-    Value parseExpression();                    // float, vector, colour or string
+    Value parseExpression();  // float, vector, colour or string
     double parseFloat();
     double parseParenthesizedFloat();  // ( full expression ): #if, #while, #switch, #case
-    VectorValue parseVector();                  // float promoted to <f,f,f>
+    VectorValue parseVector();         // float promoted to <f,f,f>
     Vec3 parseVec3();
-    Color parseColor();                         // with optional color/colour keyword
+    Color parseColor();  // with optional color/colour keyword
     std::string parseString();
     bool startsStringExpression(const Token& t);
     Value parseTernary();
@@ -200,12 +205,12 @@ private:
     VectorValue toVector(const Value& v, const Token& at, int size = 3);
 
     // --- scene statements (scene_parser.cpp) ---
-    bool parseStatement();         // a top-level item; false at end of file
+    bool parseStatement();  // a top-level item; false at end of file
     bool isObjectStart(const Token& t) const;
-    ObjectPtr parseObject();       // sphere { }, box { }, object { }...
+    ObjectPtr parseObject();  // sphere { }, box { }, object { }...
     bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
     std::shared_ptr<const scene::Shape> parseShape(const Token& kind);  // after '{'
-    void parseCsgChildren(const Token& kind, scene::Object& csg);     // union/merge/... objects
+    void parseCsgChildren(const Token& kind, scene::Object& csg);       // union/merge/... objects
     // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
@@ -213,8 +218,9 @@ private:
     void applySturm(scene::Object& obj, const Token& at);  // after `sturm`
     // clipped_by { objects } / bounded_by { objects }, or the other list
     // when the block names `alternative`.
-    std::vector<scene::ObjectRef> parseObjectList(const Token& modifier, Keyword alternative,
-                                                  const std::vector<scene::ObjectRef>& alternativeList);
+    std::vector<scene::ObjectRef> parseObjectList(
+        const Token& modifier, Keyword alternative,
+        const std::vector<scene::ObjectRef>& alternativeList);
     bool parseTransformation(Transform& transform);
     Transform parseTransformBlock();
     scene::Camera parseCamera();      // parse_camera.cpp
@@ -231,7 +237,7 @@ private:
     std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
     scene::NoiseGenerator parseNoiseGenerator(const Token& at);
     bool parseTurbulenceItem(scene::Turbulence& turb);  // turbulence, octaves, omega, lambda
-    scene::Warp parseWarp();                             // after the warp keyword
+    scene::Warp parseWarp();                            // after the warp keyword
     std::vector<scene::Pigment::MapEntry> parsePigmentMap();
     // Pigment items up to `closing` (not consumed): pigment { } and map entries.
     void parsePigmentBody(scene::Pigment& pigment, Sym closing);
@@ -242,7 +248,10 @@ private:
     std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
     // --- texture bodies and maps (parse_texture_maps.cpp) ---
     void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`
-    scene::Texture parseLayeredTextures();  // texture { } texture { }...: one layered texture
+    // texture { } texture { }...: one layered texture, the first block
+    // starting from `base` when given.
+    scene::Texture parseLayeredTextures(const scene::Texture* base = nullptr,
+                                        bool inDeclaration = false);
     bool parseTexturePatternItem(scene::Texture& tex, std::shared_ptr<scene::TextureMap>& draft);
     std::vector<scene::TextureMap::Entry> parseTextureMap();
     std::vector<scene::Normal::MapEntry> parseNormalMap();
@@ -276,9 +285,9 @@ private:
     std::u32string decodeTextString(const std::string& bytes, const Token& at);
 
     // --- meshes, height fields, bicubic patches (parse_mesh.cpp) ---
-    void parseMesh(scene::Object& obj);   // after 'mesh {'
-    void parseMesh2(scene::Object& obj);  // after 'mesh2 {'
-    void parseHeightField(scene::Object& obj);                  // after 'height_field {'
+    void parseMesh(scene::Object& obj);                       // after 'mesh {'
+    void parseMesh2(scene::Object& obj);                      // after 'mesh2 {'
+    void parseHeightField(scene::Object& obj);                // after 'height_field {'
     std::shared_ptr<const scene::Shape> parseBicubicPatch();  // after 'bicubic_patch {'
     void parseMeshTriangleItems(MeshParts& parts, scene::MeshTriangle& tri);
     bool parseMeshSetting(MeshParts& parts);  // inside_vector, hierarchy

@@ -50,10 +50,15 @@ TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
     return std::make_shared<const scene::Texture>(std::move(tex));
 }
 
-scene::Texture Interpreter::parseLayeredTextures() {
-    scene::Texture tex = *parseTexture(nullptr);
-    // Further texture blocks right after it lie on top of it (seed 003 5.4.5).
-    while (peek().is(Keyword::kw_texture)) {
+scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, bool inDeclaration) {
+    scene::Texture tex = *parseTexture(base);
+    // Further texture blocks right after it lie on top of it (seed 003
+    // 5.4.5). In a #declare the look-ahead must not run the next line's
+    // directive before the texture is bound, so it reads the raw token.
+    auto layerFollows = [&] {
+        return inDeclaration ? rawPeek().is(Keyword::kw_texture) : peek().is(Keyword::kw_texture);
+    };
+    while (layerFollows()) {
         const Token layer = peek();
         scene::Texture upper = *parseTexture(nullptr);
         if (upper.map || tex.map) unsupported(layer, "a patterned texture as a layer");

@@ -1,11 +1,11 @@
 // Scene statements: objects and their modifiers, camera, lights, textures,
 // global settings. Builds scene:: values from the token stream.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "scene/csg.h"
 #include "scene/flat_shapes.h"
@@ -23,23 +23,40 @@ struct ObjectKeyword {
     bool supported;
 };
 constexpr ObjectKeyword kObjectKeywords[] = {
-    {Keyword::kw_sphere, true},         {Keyword::kw_box, true},
-    {Keyword::kw_plane, true},          {Keyword::kw_object, true},
-    {Keyword::kw_cylinder, true},       {Keyword::kw_cone, true},
-    {Keyword::kw_torus, true},          {Keyword::kw_disc, true},
-    {Keyword::kw_triangle, true},       {Keyword::kw_smooth_triangle, true},
-    {Keyword::kw_quadric, true},        {Keyword::kw_quartic, true},
-    {Keyword::kw_cubic, true},          {Keyword::kw_poly, true},
-    {Keyword::kw_union, true},          {Keyword::kw_merge, true},
-    {Keyword::kw_intersection, true},   {Keyword::kw_difference, true},
-    {Keyword::kw_blob, true},           {Keyword::kw_lathe, true},
-    {Keyword::kw_sor, true},            {Keyword::kw_prism, true},
-    {Keyword::kw_superellipsoid, true}, {Keyword::kw_sphere_sweep, true},
-    {Keyword::kw_isosurface, true},     {Keyword::kw_parametric, false},
-    {Keyword::kw_mesh, true},           {Keyword::kw_mesh2, true},
-    {Keyword::kw_height_field, true},   {Keyword::kw_bicubic_patch, true},
-    {Keyword::kw_text, true},          {Keyword::kw_julia_fractal, false},
-    {Keyword::kw_polygon, false},       {Keyword::kw_ovus, false},
+    {Keyword::kw_sphere, true},
+    {Keyword::kw_box, true},
+    {Keyword::kw_plane, true},
+    {Keyword::kw_object, true},
+    {Keyword::kw_cylinder, true},
+    {Keyword::kw_cone, true},
+    {Keyword::kw_torus, true},
+    {Keyword::kw_disc, true},
+    {Keyword::kw_triangle, true},
+    {Keyword::kw_smooth_triangle, true},
+    {Keyword::kw_quadric, true},
+    {Keyword::kw_quartic, true},
+    {Keyword::kw_cubic, true},
+    {Keyword::kw_poly, true},
+    {Keyword::kw_union, true},
+    {Keyword::kw_merge, true},
+    {Keyword::kw_intersection, true},
+    {Keyword::kw_difference, true},
+    {Keyword::kw_blob, true},
+    {Keyword::kw_lathe, true},
+    {Keyword::kw_sor, true},
+    {Keyword::kw_prism, true},
+    {Keyword::kw_superellipsoid, true},
+    {Keyword::kw_sphere_sweep, true},
+    {Keyword::kw_isosurface, true},
+    {Keyword::kw_parametric, false},
+    {Keyword::kw_mesh, true},
+    {Keyword::kw_mesh2, true},
+    {Keyword::kw_height_field, true},
+    {Keyword::kw_bicubic_patch, true},
+    {Keyword::kw_text, true},
+    {Keyword::kw_julia_fractal, false},
+    {Keyword::kw_polygon, false},
+    {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, false},
 };
 
@@ -64,21 +81,37 @@ bool Interpreter::parseStatement() {
         return true;
     }
     switch (t.kw) {
-        case Keyword::kw_camera: scene_.camera = parseCamera(); return true;
-        case Keyword::kw_light_source: placeLight(parseLightSource()); return true;
-        case Keyword::kw_global_settings: parseGlobalSettings(); return true;
-        case Keyword::kw_background: parseBackground(); return true;
-        case Keyword::kw_fog: scene_.atmosphere.fogs.push_back(parseFog()); return true;
+        case Keyword::kw_camera:
+            scene_.camera = parseCamera();
+            return true;
+        case Keyword::kw_light_source:
+            placeLight(parseLightSource());
+            return true;
+        case Keyword::kw_global_settings:
+            parseGlobalSettings();
+            return true;
+        case Keyword::kw_background:
+            parseBackground();
+            return true;
+        case Keyword::kw_fog:
+            scene_.atmosphere.fogs.push_back(parseFog());
+            return true;
         case Keyword::kw_sky_sphere: {
             scene::SkySphere sky = parseSkySphere();
-            if (scene_.atmosphere.skySphere) warn(t, "Only one sky-sphere allowed (last one will be used).");
+            if (scene_.atmosphere.skySphere)
+                warn(t, "Only one sky-sphere allowed (last one will be used).");
             scene_.atmosphere.skySphere = std::move(sky);
             return true;
         }
-        case Keyword::kw_rainbow: parseRainbow(); return true;
-        case Keyword::kw_media: case Keyword::kw_photons: case Keyword::kw_radiosity:
+        case Keyword::kw_rainbow:
+            parseRainbow();
+            return true;
+        case Keyword::kw_media:
+        case Keyword::kw_photons:
+        case Keyword::kw_radiosity:
             unsupported(t, std::string(t.text));
-        default: break;
+        default:
+            break;
     }
     if (t.is(Sym::Semicolon)) {  // stray semicolons are harmless
         next();
@@ -103,25 +136,41 @@ ObjectPtr Interpreter::parseObject() {
     switch (kind.kw) {
         case Keyword::kw_object: {
             const Token id = next();
-            if (!id.isIdentifier()) fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
+            if (!id.isIdentifier())
+                fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
             const Value v = identifierValue(id);
             const auto* src = std::get_if<ObjectPtr>(&v);
-            if (!src) fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
+            if (!src)
+                fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
             *obj = **src;
             if (obj->texture) texture = *obj->texture;
             obj->texture.reset();
             break;
         }
-        case Keyword::kw_union: case Keyword::kw_merge: case Keyword::kw_intersection:
+        case Keyword::kw_union:
+        case Keyword::kw_merge:
+        case Keyword::kw_intersection:
         case Keyword::kw_difference:
             parseCsgChildren(kind, *obj);
             break;
-        case Keyword::kw_text: parseTextObject(*obj); break;
-        case Keyword::kw_mesh: parseMesh(*obj); break;
-        case Keyword::kw_mesh2: parseMesh2(*obj); break;
-        case Keyword::kw_height_field: parseHeightField(*obj); break;
-        case Keyword::kw_bicubic_patch: obj->shape = parseBicubicPatch(); break;
-        default: obj->shape = parseShape(kind); break;
+        case Keyword::kw_text:
+            parseTextObject(*obj);
+            break;
+        case Keyword::kw_mesh:
+            parseMesh(*obj);
+            break;
+        case Keyword::kw_mesh2:
+            parseMesh2(*obj);
+            break;
+        case Keyword::kw_height_field:
+            parseHeightField(*obj);
+            break;
+        case Keyword::kw_bicubic_patch:
+            obj->shape = parseBicubicPatch();
+            break;
+        default:
+            obj->shape = parseShape(kind);
+            break;
     }
 
     for (;;) {
@@ -130,9 +179,10 @@ ObjectPtr Interpreter::parseObject() {
             const Token t = peek();
             // povray reads a CSG's objects before its modifiers.
             if (obj->isCsg() && isObjectStart(t))
-                fail(t, fmt::format("No matching }} in '{}', {} found instead: a CSG's objects come before "
-                                    "its modifiers",
-                                    kind.text, t.text));
+                fail(t, fmt::format(
+                            "No matching }} in '{}', {} found instead: a CSG's objects come before "
+                            "its modifiers",
+                            kind.text, t.text));
             if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                 unsupported(t, fmt::format("'{}' in {}", t.text, kind.text));
             fail(t, fmt::format("expected an object modifier or '}}', found {}", describeToken(t)));
@@ -150,17 +200,26 @@ ObjectPtr Interpreter::parseObject() {
 
 void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
     switch (kind.kw) {
-        case Keyword::kw_merge: csg.op = scene::CsgOp::Merge; break;
-        case Keyword::kw_intersection: csg.op = scene::CsgOp::Intersection; break;
-        case Keyword::kw_difference: csg.op = scene::CsgOp::Difference; break;
-        default: csg.op = scene::CsgOp::Union; break;
+        case Keyword::kw_merge:
+            csg.op = scene::CsgOp::Merge;
+            break;
+        case Keyword::kw_intersection:
+            csg.op = scene::CsgOp::Intersection;
+            break;
+        case Keyword::kw_difference:
+            csg.op = scene::CsgOp::Difference;
+            break;
+        default:
+            csg.op = scene::CsgOp::Union;
+            break;
     }
     while (isObjectStart(peek())) {
         const Token at = peek();
         csg.children.push_back(parseObject());
         // povray's warning (its wording, for difference too); the triangle
         // still takes part, enclosing nothing.
-        if (csg.op != scene::CsgOp::Union && csg.op != scene::CsgOp::Merge && csg.children.back()->isPatch())
+        if (csg.op != scene::CsgOp::Union && csg.op != scene::CsgOp::Merge &&
+            csg.children.back()->isPatch())
             warn(at, "Patch objects not allowed in intersection.");
     }
     if (csg.children.size() < 2) warn(kind, "Should have at least 2 objects in csg.");
@@ -208,7 +267,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             const Vec3 cap = parseVec3();
             comma("',' between the cap point and its radius");
             const double r2 = parseFloat();
-            if (base.x == cap.x && base.y == cap.y && base.z == cap.z) fail(kind, "Degenerate cone/cylinder.");
+            if (base.x == cap.x && base.y == cap.y && base.z == cap.z)
+                fail(kind, "Degenerate cone/cylinder.");
             const bool open = parseOpen();
             if (r1 == r2) return std::make_shared<scene::Cylinder>(base, cap, std::fabs(r1), open);
             return std::make_shared<scene::Cone>(base, std::fabs(r1), cap, std::fabs(r2), open);
@@ -255,29 +315,42 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             const Vec3 lin = parseVec3();
             comma("',' after the linear terms <G,H,I>");
             const double j = parseFloat();
-            return std::make_shared<scene::Quadric>(
-                scene::Quadric::Coefficients{sq.x, sq.y, sq.z, mixed.x, mixed.y, mixed.z, lin.x, lin.y, lin.z, j});
+            return std::make_shared<scene::Quadric>(scene::Quadric::Coefficients{
+                sq.x, sq.y, sq.z, mixed.x, mixed.y, mixed.z, lin.x, lin.y, lin.z, j});
         }
-        case Keyword::kw_torus: case Keyword::kw_poly: case Keyword::kw_cubic: case Keyword::kw_quartic:
-        case Keyword::kw_blob: return parsePolynomialShape(kind);
-        case Keyword::kw_superellipsoid: return parseSuperellipsoid(kind);
-        case Keyword::kw_isosurface: return parseIsosurface(kind);
-        case Keyword::kw_sphere_sweep: return parseSphereSweep(kind);
-        case Keyword::kw_lathe: return parseLathe(kind);
-        case Keyword::kw_sor: return parseSor(kind);
-        case Keyword::kw_prism: return parsePrism(kind);
-        default: unsupported(kind, std::string(kind.text));
+        case Keyword::kw_torus:
+        case Keyword::kw_poly:
+        case Keyword::kw_cubic:
+        case Keyword::kw_quartic:
+        case Keyword::kw_blob:
+            return parsePolynomialShape(kind);
+        case Keyword::kw_superellipsoid:
+            return parseSuperellipsoid(kind);
+        case Keyword::kw_isosurface:
+            return parseIsosurface(kind);
+        case Keyword::kw_sphere_sweep:
+            return parseSphereSweep(kind);
+        case Keyword::kw_lathe:
+            return parseLathe(kind);
+        case Keyword::kw_sor:
+            return parseSor(kind);
+        case Keyword::kw_prism:
+            return parsePrism(kind);
+        default:
+            unsupported(kind, std::string(kind.text));
     }
 }
 
-void Interpreter::addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const {
+void Interpreter::addTransform(scene::Object& obj, scene::Texture* texture,
+                               const Transform& t) const {
     obj.transformBy(t);
     // A transformation after the texture moves the texture too (seed 003 B.3).
     if (texture) texture->transformBy(t);
 }
 
-std::vector<scene::ObjectRef> Interpreter::parseObjectList(const Token& modifier, Keyword alternative,
-                                                           const std::vector<scene::ObjectRef>& alternativeList) {
+std::vector<scene::ObjectRef> Interpreter::parseObjectList(
+    const Token& modifier, Keyword alternative,
+    const std::vector<scene::ObjectRef>& alternativeList) {
     expect(Sym::LBrace, fmt::format("'{{' after '{}'", modifier.text).c_str());
     // clipped_by { bounded_by } and bounded_by { clipped_by } reuse the
     // other list.
@@ -289,7 +362,8 @@ std::vector<scene::ObjectRef> Interpreter::parseObjectList(const Token& modifier
     while (isObjectStart(peek())) list.push_back(parseObject());
     if (list.empty()) {
         const Token t = peek();
-        fail(t, fmt::format("expected an object in '{}', found {}", modifier.text, describeToken(t)));
+        fail(t,
+             fmt::format("expected an object in '{}', found {}", modifier.text, describeToken(t)));
     }
     expect(Sym::RBrace, fmt::format("'}}' closing '{}'", modifier.text).c_str());
     return list;
@@ -309,7 +383,9 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         return *texture;
     };
     switch (tok.kw) {
-        case Keyword::kw_pigment: editTexture().pigment = parsePigment(); return true;
+        case Keyword::kw_pigment:
+            editTexture().pigment = parsePigment();
+            return true;
         case Keyword::kw_normal: {
             scene::Texture& tx = editTexture();
             tx.normal = parseNormal(tx.normal.get());
@@ -324,20 +400,16 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             scene::Texture& tx = editTexture();
             // A texture block starts from the object's texture unless that
             // is a patterned one (its pattern would swallow the new items).
-            tx = tx.map ? *parseTexture(nullptr) : *parseTexture(&tx);
-            // Further texture blocks right after it lie on top of it: a
-            // layered texture (seed 003 5.4.5).
-            while (peek().is(Keyword::kw_texture)) {
-                const Token layer = peek();
-                scene::Texture upper = *parseTexture(nullptr);
-                if (upper.map || tx.map) unsupported(layer, "a patterned texture as a layer");
-                tx.stackOn(upper);
-                tx = std::move(upper);
-            }
+            tx = parseLayeredTextures(tx.map ? nullptr : &tx);
             return true;
         }
-        case Keyword::kw_interior: obj.interior = parseInterior(obj.interior.get()); return true;
-        case Keyword::kw_inverse: next(); obj.inverse = !obj.inverse; return true;
+        case Keyword::kw_interior:
+            obj.interior = parseInterior(obj.interior.get());
+            return true;
+        case Keyword::kw_inverse:
+            next();
+            obj.inverse = !obj.inverse;
+            return true;
         case Keyword::kw_clipped_by:
             next();
             obj.clippedBy = parseObjectList(tok, Keyword::kw_bounded_by, obj.boundedBy);
@@ -346,28 +418,54 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             next();
             obj.boundedBy = parseObjectList(tok, Keyword::kw_clipped_by, obj.clippedBy);
             return true;
-        case Keyword::kw_double_illuminate: next(); obj.doubleIlluminate = true; return true;
-        case Keyword::kw_no_shadow: next(); obj.noShadow = true; return true;
-        case Keyword::kw_no_image: next(); obj.noImage = true; return true;
-        case Keyword::kw_no_reflection: next(); obj.noReflection = true; return true;
-        case Keyword::kw_hierarchy: next(); parseOptionalBool(); return true;  // a BVH is always built
-        case Keyword::kw_sturm: next(); applySturm(obj, tok); return true;
+        case Keyword::kw_double_illuminate:
+            next();
+            obj.doubleIlluminate = true;
+            return true;
+        case Keyword::kw_no_shadow:
+            next();
+            obj.noShadow = true;
+            return true;
+        case Keyword::kw_no_image:
+            next();
+            obj.noImage = true;
+            return true;
+        case Keyword::kw_no_reflection:
+            next();
+            obj.noReflection = true;
+            return true;
+        case Keyword::kw_hierarchy:
+            next();
+            parseOptionalBool();
+            return true;  // a BVH is always built
+        case Keyword::kw_sturm:
+            next();
+            applySturm(obj, tok);
+            return true;
         case Keyword::kw_hollow:
             // Only changes media and fog inside the object; neither exists yet.
             next();
-            if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) || peek().is(Keyword::kw_off) ||
-                peek().is(Keyword::kw_true) || peek().is(Keyword::kw_false))
+            if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) ||
+                peek().is(Keyword::kw_off) || peek().is(Keyword::kw_true) ||
+                peek().is(Keyword::kw_false))
                 parseFloat();
             return true;
-        default: return false;
+        default:
+            return false;
     }
 }
 
 bool Interpreter::parseTransformation(Transform& out) {
     const Token t = peek();
     switch (t.kw) {
-        case Keyword::kw_translate: next(); out = Transform::translate(parseVec3()); return true;
-        case Keyword::kw_rotate: next(); out = Transform::rotate(parseVec3()); return true;
+        case Keyword::kw_translate:
+            next();
+            out = Transform::translate(parseVec3());
+            return true;
+        case Keyword::kw_rotate:
+            next();
+            out = Transform::rotate(parseVec3());
+            return true;
         case Keyword::kw_scale: {
             next();
             const Token at = peek();
@@ -393,8 +491,11 @@ bool Interpreter::parseTransformation(Transform& out) {
                 fail(t, "this matrix is singular and cannot be used as a transformation");
             return true;
         }
-        case Keyword::kw_transform: out = parseTransformBlock(); return true;
-        default: return false;
+        case Keyword::kw_transform:
+            out = parseTransformBlock();
+            return true;
+        default:
+            return false;
     }
 }
 
@@ -421,13 +522,15 @@ Transform Interpreter::parseTransformBlock() {
             next();
             const Value v = identifierValue(t);
             const auto* tp = std::get_if<TransformPtr>(&v);
-            if (!tp) fail(t, fmt::format("'{}' is a {}, not a transform", t.text, valueKindName(v)));
+            if (!tp)
+                fail(t, fmt::format("'{}' is a {}, not a transform", t.text, valueKindName(v)));
             result = result.then(**tp);
             continue;
         }
         Transform step;
         if (!parseTransformation(step))
-            fail(t, fmt::format("expected a transformation in 'transform', found {}", describeToken(t)));
+            fail(t, fmt::format("expected a transformation in 'transform', found {}",
+                                describeToken(t)));
         result = result.then(step);
     }
     return result;
@@ -447,29 +550,46 @@ void Interpreter::parseGlobalSettings() {
         if (accept(Sym::RBrace)) break;
         const Token t = next();
         switch (t.kw) {
-            case Keyword::kw_assumed_gamma: g.assumedGamma = parseFloat(); g.assumedGammaSet = true; break;
-            case Keyword::kw_max_trace_level: g.maxTraceLevel = static_cast<int>(parseFloat()); break;
-            case Keyword::kw_adc_bailout: g.adcBailout = parseFloat(); break;
-            case Keyword::kw_ambient_light: g.ambientLight = parseColor().rgb; break;
-            case Keyword::kw_number_of_waves: case Keyword::kw_noise_generator: parseFloat(); break;
+            case Keyword::kw_assumed_gamma:
+                g.assumedGamma = parseFloat();
+                g.assumedGammaSet = true;
+                break;
+            case Keyword::kw_max_trace_level:
+                g.maxTraceLevel = static_cast<int>(parseFloat());
+                break;
+            case Keyword::kw_adc_bailout:
+                g.adcBailout = parseFloat();
+                break;
+            case Keyword::kw_ambient_light:
+                g.ambientLight = parseColor().rgb;
+                break;
+            case Keyword::kw_number_of_waves:
+            case Keyword::kw_noise_generator:
+                parseFloat();
+                break;
             case Keyword::kw_charset: {
                 static constexpr std::pair<Keyword, scene::TextCharset> kCharsets[] = {
                     {Keyword::kw_ascii, scene::TextCharset::Ascii},
                     {Keyword::kw_utf8, scene::TextCharset::Utf8},
                     {Keyword::kw_sys, scene::TextCharset::System}};
                 const Token c = next();
-                const auto* found = std::find_if(std::begin(kCharsets), std::end(kCharsets),
-                                                 [&](const auto& entry) { return c.is(entry.first); });
+                const auto* found =
+                    std::find_if(std::begin(kCharsets), std::end(kCharsets),
+                                 [&](const auto& entry) { return c.is(entry.first); });
                 if (found == std::end(kCharsets))
-                    fail(c, fmt::format("expected a charset type (ascii, utf8 or sys), found {}", describeToken(c)));
+                    fail(c, fmt::format("expected a charset type (ascii, utf8 or sys), found {}",
+                                        describeToken(c)));
                 textCharset_ = found->second;
                 break;
             }
-            case Keyword::kw_hf_gray_16: if (peek().kind == TokenKind::Number) parseFloat(); break;
+            case Keyword::kw_hf_gray_16:
+                if (peek().kind == TokenKind::Number) parseFloat();
+                break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                     unsupported(t, fmt::format("'{}' in global_settings", t.text));
-                fail(t, fmt::format("expected a global setting or '}}', found {}", describeToken(t)));
+                fail(t,
+                     fmt::format("expected a global setting or '}}', found {}", describeToken(t)));
         }
     }
 }
