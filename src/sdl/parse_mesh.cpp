@@ -349,11 +349,11 @@ void Interpreter::parseHeightField(scene::Object& obj) {
             case Keyword::kw_exr:
             case Keyword::kw_hdr:
             case Keyword::kw_sys:
+            case Keyword::kw_gif:
                 next();
                 break;
-            case Keyword::kw_gif:
             case Keyword::kw_iff:
-                unsupported(source, fmt::format("{} height fields (palette images)", source.text));
+                unsupported(source, "iff height fields");
             default:
                 fail(source,
                      fmt::format("expected an image type or 'function' in height_field, found {}",
@@ -362,12 +362,21 @@ void Interpreter::parseHeightField(scene::Object& obj) {
         const Token nameAt = peek();
         const std::string name = parseString();
         // The same per-frame image cache as image maps (parse_image_map.cpp).
-        const image::EncodedImage& img = loadSourceImage(name, nameAt).pixels;
+        const image::SourceImage& source = loadSourceImage(name, nameAt);
+        const image::EncodedImage& img = source.pixels;
         if (img.width < 2 || img.height < 2)
             fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
         width = img.width;
         height = img.height;
-        heights = heightsFromImage(img);
+        if (source.isPalette()) {
+            // Palette images (GIF): the colour index is the height, as the
+            // high byte (seed 003: index 0 lowest, 255 highest).
+            heights.resize(source.indices.size());
+            for (size_t p = 0; p < heights.size(); ++p)
+                heights[p] = static_cast<uint16_t>(source.indices[p] * 256);
+        } else {
+            heights = heightsFromImage(img);
+        }
     }
     bool smooth = false;
     double waterLevel = 0;

@@ -94,3 +94,15 @@ for y in range(32):
             v = 255
         heights.append(int(v))
 write_png('image_heights.png', 32, 32, heights, 1)
+
+# 32 x 32 palette heights for mesh_hf_gif.pov: a dome of indices 0..250
+# with a ridge; the palette's colours are unrelated to the index (povray
+# takes the index as the height).
+hf_palette = [((i * 97) % 256, (i * 57) % 256, (i * 31) % 256) for i in range(256)]
+hf_idx = []
+for y in range(32):
+    for x in range(32):
+        d = math.hypot(x - 15.5, y - 15.5) / 22.0
+        v = max(0.0, 1.0 - d * d) * 200 + (50 if abs(x - y) < 2 else 0)
+        hf_idx.append(min(250, int(v)))
+write_gif('mesh_hf_heights.gif', 32, 32, hf_idx, hf_palette)
