@@ -167,14 +167,7 @@ void Prism::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
             }
         }
     }
-    std::sort(found.begin(), found.end());
-    double last = -kInfinity;
-    for (const double t : found) {
-        if (!(t > tMin && t < tMax)) continue;
-        if (t - last <= 1e-12 * std::max(1.0, std::fabs(t))) continue;
-        ts.push_back(t);
-        last = t;
-    }
+    detail::appendDistinctHits(found, tMin, tMax, ts);
 }
 
 Vec3 Prism::normal(const Vec3& p) const {

@@ -2,13 +2,29 @@
 // scene/; not part of any shape's interface).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
 #include "scene/ray.h"
 
 namespace frameray::scene::detail {
+
+// Sorts the hits found, drops near-duplicates (a ray through a joint of two
+// pieces finds it twice) and appends those in (tMin, tMax) to ts.
+inline void appendDistinctHits(std::vector<double>& found, double tMin, double tMax,
+                               std::vector<double>& ts) {
+    std::sort(found.begin(), found.end());
+    double last = -std::numeric_limits<double>::infinity();
+    for (const double t : found) {
+        if (!(t > tMin && t < tMax)) continue;
+        if (t - last <= 1e-12 * std::max(1.0, std::fabs(t))) continue;
+        ts.push_back(t);
+        last = t;
+    }
+}
 
 // Real roots of a t^2 + b t + c = 0 in increasing order; returns how many
 // (0, 1 or 2). Uses the cancellation-free form (q = -(b + sign(b) sqrt(D))/2,

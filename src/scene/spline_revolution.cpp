@@ -49,19 +49,6 @@ void multiply(const double* p, int np, const double* q, int nq, double* out) {
         for (int j = 0; j < nq; ++j) out[i + j] += p[i] * q[j];
 }
 
-// Sorts the hits found, drops near-duplicates (a ray through a joint of
-// two pieces finds it twice) and keeps those in (tMin, tMax).
-void finish(std::vector<double>& found, double tMin, double tMax, std::vector<double>& ts) {
-    std::sort(found.begin(), found.end());
-    double last = -kInfinity;
-    for (const double t : found) {
-        if (!(t > tMin && t < tMax)) continue;
-        if (t - last <= 1e-12 * std::max(1.0, std::fabs(t))) continue;
-        ts.push_back(t);
-        last = t;
-    }
-}
-
 double poly3(const double c[4], double s) {
     return ((c[3] * s + c[2]) * s + c[1]) * s + c[0];
 }
@@ -181,7 +168,7 @@ void Lathe::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
             found.push_back(t);
         }
     }
-    finish(found, tMin, tMax, ts);
+    detail::appendDistinctHits(found, tMin, tMax, ts);
 }
 
 Vec3 Lathe::normal(const Vec3& p) const {
@@ -317,7 +304,7 @@ void Sor::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>&
             if (rho.at(t) <= (h == bottom_ ? bottomR2_ : topR2_)) found.push_back(t);
         }
     }
-    finish(found, tMin, tMax, ts);
+    detail::appendDistinctHits(found, tMin, tMax, ts);
 }
 
 Vec3 Sor::normal(const Vec3& p) const {
