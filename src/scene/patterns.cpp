@@ -238,13 +238,21 @@ int Pattern::index(const Vec3& point) const {
     }
 }
 
+namespace {
+// gradient and function patterns wrap values above one into [0, 1) before
+// frequency and phase, but leave negative ones alone (measured).
+double wrapAboveOne(double v) {
+    return v > 1.0 ? std::fmod(v, 1.0) : v;
+}
+}  // namespace
+
 double Pattern::raw(const Vec3& p) const {
     switch (kind) {
-        case PatternKind::Gradient: {
-            // povray wraps values above one into [0, 1) before frequency
-            // and phase, but leaves negative ones alone (measured).
-            const double g = dot(p, gradient);
-            return g > 1.0 ? std::fmod(g, 1.0) : g;
+        case PatternKind::Gradient:
+            return wrapAboveOne(dot(p, gradient));
+        case PatternKind::Function: {
+            const double args[3] = {p.x, p.y, p.z};
+            return wrapAboveOne(function->eval(args));
         }
         case PatternKind::Onion:
             return length(p);
@@ -294,6 +302,10 @@ double Pattern::raw(const Vec3& p) const {
             return waves(p, frequency, phase);
         case PatternKind::Image:
             return image ? image->valueAt(p) : 0.0;
+        case PatternKind::Crackle:
+            return scene::crackle(p, crackle, noiseGenerator);
+        case PatternKind::Fractal:
+            return fractalValue(p.x, p.y, fractal);
         default:
             return 0;
     }
@@ -326,6 +338,11 @@ double Pattern::wave(double rawValue) const {
             return std::pow(v, exponent);
     }
     return v;
+}
+
+double PatternFunction::eval(const double* args) const {
+    const Vec3 p{args[0], args[1], args[2]};
+    return pattern_.isList() ? pattern_.index(p) : pattern_.value(p);
 }
 
 }  // namespace frameray::scene

@@ -9,9 +9,12 @@
 #include <optional>
 #include <vector>
 
+#include "scene/crackle.h"
+#include "scene/fractals.h"
 #include "scene/image_map.h"
 #include "scene/noise.h"
 #include "scene/warps.h"
+#include "util/function_vm.h"
 #include "util/vec3.h"
 
 namespace frameray::scene {
@@ -48,6 +51,12 @@ enum class PatternKind {
     Waves,
     // image_pattern: the image's grey value or alpha (image_map.h)
     Image,
+    // function { ... }: a user function of x, y, z
+    Function,
+    // crackle (crackle.h)
+    Crackle,
+    // mandel and julia (fractals.h)
+    Fractal,
 };
 
 // The sources of ripples and waves (shared with their normals).
@@ -71,7 +80,10 @@ struct Pattern {
     double frequency = 1, phase = 0;
     NoiseGenerator noiseGenerator = NoiseGenerator::RangeCorrected;
     double agateTurb = 1.0;
-    std::shared_ptr<const ImageMap> image;  // image_pattern
+    std::shared_ptr<const ImageMap> image;             // image_pattern
+    std::shared_ptr<const CompiledFunction> function;  // function { ... }
+    CrackleSettings crackle;                           // crackle's form, metric, offset, solid
+    FractalSettings fractal;                           // mandel and julia
     // The pattern's own `turbulence`: applied after every warp and
     // transformation, or used inside marble, wood and agate.
     std::optional<Turbulence> turbulence;
@@ -99,6 +111,18 @@ struct Pattern {
     double value(const Vec3& p) const;
     // Applies frequency, phase and the wave type to a raw value.
     double wave(double raw) const;
+};
+
+// `function { pattern { ... } }`: a pattern's value as a function of x, y,
+// z — the colour-list index for checker, hexagon and brick, otherwise the
+// value after frequency, phase and the wave (measured against povray).
+class PatternFunction final : public NativeFunction {
+  public:
+    explicit PatternFunction(Pattern pattern) : pattern_(std::move(pattern)) {}
+    double eval(const double* args) const override;
+
+  private:
+    Pattern pattern_;
 };
 
 }  // namespace frameray::scene

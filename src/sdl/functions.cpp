@@ -4,6 +4,9 @@
 
 #include <algorithm>
 
+#include "scene/internal_functions.h"
+#include "scene/patterns.h"
+#include "scene/texture.h"
 #include "sdl/float_functions.h"
 #include "sdl/function_value.h"
 #include "sdl/interpreter.h"
@@ -13,8 +16,9 @@ namespace frameray::sdl {
 // Recursive-descent compiler over the interpreter's token stream, with the
 // same precedence as parse-time expressions.
 class FunctionCompiler {
-public:
-    FunctionCompiler(Interpreter& in, std::vector<std::string> params) : in_(in), params_(std::move(params)) {
+  public:
+    FunctionCompiler(Interpreter& in, std::vector<std::string> params)
+        : in_(in), params_(std::move(params)) {
         fn_->paramCount = static_cast<int>(params_.size());
     }
 
@@ -24,11 +28,12 @@ public:
         return fn_;
     }
 
-private:
+  private:
     size_t emit(FnInstr i, int stackEffect) {
         depth_ += stackEffect;
         maxDepth_ = std::max(maxDepth_, depth_);
-        if (maxDepth_ > CompiledFunction::kMaxStack) in_.failHere("function expression is too deeply nested");
+        if (maxDepth_ > CompiledFunction::kMaxStack)
+            in_.failHere("function expression is too deeply nested");
         fn_->code.push_back(i);
         return fn_->code.size() - 1;
     }
@@ -73,13 +78,26 @@ private:
             const Token op = in_.peek();
             FnOp code;
             switch (op.sym) {
-                case Sym::Less: code = FnOp::Lt; break;
-                case Sym::LessEq: code = FnOp::Le; break;
-                case Sym::Equal: code = FnOp::Eq; break;
-                case Sym::NotEq: code = FnOp::Ne; break;
-                case Sym::GreaterEq: code = FnOp::Ge; break;
-                case Sym::Greater: code = FnOp::Gt; break;
-                default: return;
+                case Sym::Less:
+                    code = FnOp::Lt;
+                    break;
+                case Sym::LessEq:
+                    code = FnOp::Le;
+                    break;
+                case Sym::Equal:
+                    code = FnOp::Eq;
+                    break;
+                case Sym::NotEq:
+                    code = FnOp::Ne;
+                    break;
+                case Sym::GreaterEq:
+                    code = FnOp::Ge;
+                    break;
+                case Sym::Greater:
+                    code = FnOp::Gt;
+                    break;
+                default:
+                    return;
             }
             if (op.kind != TokenKind::Symbol) return;
             in_.next();
@@ -140,8 +158,10 @@ private:
 
     void requireArgs(const Token& fn, int n, int min, int max) {
         if (n < min || n > max)
-            in_.fail(fn, min == max ? fmt::format("'{}' takes {} argument{}, {} given", fn.text, min, min == 1 ? "" : "s", n)
-                                    : fmt::format("'{}' takes {} to {} arguments, {} given", fn.text, min, max, n));
+            in_.fail(fn, min == max ? fmt::format("'{}' takes {} argument{}, {} given", fn.text,
+                                                  min, min == 1 ? "" : "s", n)
+                                    : fmt::format("'{}' takes {} to {} arguments, {} given",
+                                                  fn.text, min, max, n));
     }
 
     // x and u name the same parameter, as do y and v (povray 3.7).
@@ -169,7 +189,8 @@ private:
             in_.expect(Sym::RParen, "')'");
             return;
         }
-        if (t.kind != TokenKind::Word) in_.fail(t, fmt::format("expected a function expression, found {}", describeToken(t)));
+        if (t.kind != TokenKind::Word)
+            in_.fail(t, fmt::format("expected a function expression, found {}", describeToken(t)));
         if (const int p = paramIndex(t.text); p >= 0) {
             in_.next();
             emit({FnOp::Param, p}, +1);
@@ -196,10 +217,13 @@ private:
             const int n = arguments(t);
             if (!callee->unsupported.empty()) {
                 // Calling it compiles an instruction that fails when run.
+                if (fn_->unavailable.empty()) fn_->unavailable = callee->unsupported;
                 emit({FnOp::Internal, -1, n}, 1 - n);
                 return;
             }
-            if (!callee->variadic) requireArgs(t, n, callee->compiled->paramCount, callee->compiled->paramCount);
+            if (!callee->variadic)
+                requireArgs(t, n, callee->compiled->paramCount, callee->compiled->paramCount);
+            if (fn_->unavailable.empty()) fn_->unavailable = callee->compiled->unavailable;
             fn_->callees.push_back(callee->compiled);
             emit({FnOp::Call, static_cast<int32_t>(fn_->callees.size() - 1), n}, 1 - n);
             return;
@@ -208,7 +232,9 @@ private:
         const Token at = in_.peek();
         const Value value = in_.parsePostfix();
         const double* f = std::get_if<double>(&value);
-        if (!f) in_.fail(at, fmt::format("'{}' is a {}; a function body needs floats", at.text, valueKindName(value)));
+        if (!f)
+            in_.fail(at, fmt::format("'{}' is a {}; a function body needs floats", at.text,
+                                     valueKindName(value)));
         constant(*f);
     }
 
@@ -228,9 +254,14 @@ private:
             return;
         }
         switch (t.kw) {
-            case Keyword::kw_x: case Keyword::kw_u: case Keyword::kw_y: case Keyword::kw_v: case Keyword::kw_z:
+            case Keyword::kw_x:
+            case Keyword::kw_u:
+            case Keyword::kw_y:
+            case Keyword::kw_v:
+            case Keyword::kw_z:
                 in_.fail(t, fmt::format("'{}' is not a parameter of this function", t.text));
-            case Keyword::kw_min: case Keyword::kw_max: {
+            case Keyword::kw_min:
+            case Keyword::kw_max: {
                 in_.next();
                 const int n = arguments(t);
                 requireArgs(t, n, 1, 64);
@@ -244,16 +275,14 @@ private:
                 emit({n == 3 ? FnOp::Select3 : FnOp::Select4}, 1 - n);
                 return;
             }
-            case Keyword::kw_sum: case Keyword::kw_prod: loop(t); return;
-            case Keyword::kw_internal: {
-                in_.next();
-                in_.expect(Sym::LParen, "'(' after 'internal'");
-                const double n = in_.parseFloat();
-                in_.expect(Sym::RParen, "')'");
-                emit({FnOp::Internal, static_cast<int32_t>(n)}, +1);
+            case Keyword::kw_sum:
+            case Keyword::kw_prod:
+                loop(t);
                 return;
-            }
-            default: break;
+            case Keyword::kw_internal:
+                in_.fail(t, "'internal' must be a function's whole body");
+            default:
+                break;
         }
         // Constant keywords (pi, clock, image_width, true...) evaluate now.
         const Value value = in_.parsePostfix();
@@ -303,7 +332,8 @@ Value Interpreter::parseFunctionDeclaration() {
     if (accept(Sym::LParen)) {
         do {
             const Token p = next();
-            if (p.kind != TokenKind::Word) fail(p, fmt::format("expected a parameter name, found {}", describeToken(p)));
+            if (p.kind != TokenKind::Word)
+                fail(p, fmt::format("expected a parameter name, found {}", describeToken(p)));
             params.emplace_back(p.text);
         } while (accept(Sym::Comma));
         expect(Sym::RParen, "')'");
@@ -317,21 +347,18 @@ Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
     expect(Sym::LBrace, "'{' starting the function body");
     auto value = std::make_shared<FunctionValue>();
     const Token first = peek();
-    static constexpr Keyword kOtherBodies[] = {Keyword::kw_pattern, Keyword::kw_pigment, Keyword::kw_transform,
+    if (first.is(Keyword::kw_internal)) return parseInternalFunctionBody();
+    if (first.is(Keyword::kw_pattern)) return parsePatternFunctionBody();
+    static constexpr Keyword kOtherBodies[] = {Keyword::kw_pigment, Keyword::kw_transform,
                                                Keyword::kw_spline};
-    if (std::find(std::begin(kOtherBodies), std::end(kOtherBodies), first.kw) != std::end(kOtherBodies) &&
+    if (std::find(std::begin(kOtherBodies), std::end(kOtherBodies), first.kw) !=
+            std::end(kOtherBodies) &&
         first.kind == TokenKind::Word) {
         // Not built yet: keep the declaration, fail on use.
         value->unsupported = fmt::format("function {{ {} }}", first.text);
-        for (int depth = 1; depth > 0;) {
-            const Token t = next();
-            if (t.kind == TokenKind::End) fail(first, "function body is never closed");
-            if (t.is(Sym::LBrace)) ++depth;
-            if (t.is(Sym::RBrace)) --depth;
-        }
+        skipToClosingBrace(first, 1);
         return FunctionPtr(value);
     }
-    value->variadic = first.is(Keyword::kw_internal);
     FunctionCompiler compiler(*this, std::move(params));
     auto compiled = compiler.compileBody();
     compiled->name = "function";
@@ -340,13 +367,108 @@ Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
     return FunctionPtr(value);
 }
 
+// Skips tokens until `depth` open braces have closed.
+void Interpreter::skipToClosingBrace(const Token& from, int depth) {
+    while (depth > 0) {
+        const Token t = next();
+        if (t.kind == TokenKind::End) fail(from, "function body is never closed");
+        if (t.is(Sym::LBrace)) ++depth;
+        if (t.is(Sym::RBrace)) --depth;
+    }
+}
+
+namespace {
+
+// A compiled function whose whole body is one native function reading the
+// function's own `paramCount` arguments.
+std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
+                                             std::shared_ptr<const NativeFunction> native) {
+    auto fn = std::make_shared<CompiledFunction>();
+    fn->name = std::move(name);
+    fn->paramCount = paramCount;
+    fn->natives.push_back(std::move(native));
+    fn->code.push_back({FnOp::Native, 0});
+    return fn;
+}
+
+}  // namespace
+
+// function { internal(N) }: functions.inc's built-ins, taking x, y, z and
+// their own extra parameters.
+Value Interpreter::parseInternalFunctionBody() {
+    FunctionValue value;
+    const Token at = next();  // internal
+    expect(Sym::LParen, "'(' after 'internal'");
+    const double n = parseFloat();
+    expect(Sym::RParen, "')'");
+    expect(Sym::RBrace, "'}' closing the function body");
+    const scene::InternalFunction internal = scene::internalFunction(static_cast<int>(n));
+    if (internal.name.empty()) fail(at, fmt::format("there is no internal function {}", n));
+    if (!internal.function) {
+        // Declaring it is fine (functions.inc declares them all); using it
+        // stops with `not supported yet`.
+        value.unsupported = fmt::format("functions.inc function {}", internal.name);
+        value.variadic = true;
+        return FunctionPtr(std::make_shared<FunctionValue>(value));
+    }
+    value.compiled = nativeBody(internal.name, 3 + internal.extraParams, internal.function);
+    return FunctionPtr(std::make_shared<FunctionValue>(value));
+}
+
+// function { pattern { PATTERN MODIFIERS } }: the pattern's value at x, y, z.
+Value Interpreter::parsePatternFunctionBody() {
+    FunctionValue value;
+    const Token at = next();  // pattern
+    expect(Sym::LBrace, "'{' after 'pattern'");
+    scene::Pigment holder;  // holds the pattern and its chain, as normals do
+    bool havePattern = false;
+    while (!peek().is(Sym::RBrace)) {
+        const Token item = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            holder.transform(step);
+            continue;
+        }
+        if (isPatternKeyword(item)) havePattern = true;
+        if (parsePigmentPatternItem(holder)) continue;
+        if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
+            // functions.inc declares pattern functions for every pattern:
+            // declaring one frameray lacks is fine, using it is not.
+            value.unsupported = fmt::format("'{}' in a pattern function", item.text);
+            skipToClosingBrace(at, 2);
+            return FunctionPtr(std::make_shared<FunctionValue>(value));
+        }
+        fail(item, fmt::format("expected a pattern or '}}', found {}", describeToken(item)));
+    }
+    next();  // }
+    expect(Sym::RBrace, "'}' closing the function body");
+    if (!havePattern) fail(at, "a pattern function needs a pattern");
+    value.compiled = nativeBody("pattern function", 3,
+                                std::make_shared<scene::PatternFunction>(holder.pattern()));
+    return FunctionPtr(std::make_shared<FunctionValue>(value));
+}
+
+// A `function { ... }` of x, y, z that the renderer will evaluate (patterns,
+// isosurfaces, height fields): a body frameray cannot run yet stops here
+// rather than mid-render.
+std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Token& at) {
+    const Value body = parseFunctionBody({"x", "y", "z"});
+    const FunctionValue& fn = *std::get<FunctionPtr>(body);
+    if (!fn.unsupported.empty()) unsupported(at, fn.unsupported);
+    if (!fn.compiled->unavailable.empty()) unsupported(at, fn.compiled->unavailable);
+    if (fn.compiled->paramCount > 3)
+        fail(at, fmt::format("{} takes {} parameters; here it is given only x, y, z",
+                             fn.compiled->name, fn.compiled->paramCount));
+    return fn.compiled;
+}
+
 Value Interpreter::callFunction(const FunctionValue& function, const Token& at) {
     if (!function.unsupported.empty()) unsupported(at, function.unsupported);
     const std::vector<Value> args = parseArguments(0, 64, at);
     const int expected = function.compiled->paramCount;
     if (!function.variadic && static_cast<int>(args.size()) != expected)
-        fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, expected, expected == 1 ? "" : "s",
-                             args.size()));
+        fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, expected,
+                             expected == 1 ? "" : "s", args.size()));
     std::vector<double> values;
     for (const Value& v : args) values.push_back(toFloat(v, at));
     values.resize(std::max<size_t>(values.size(), static_cast<size_t>(expected)), 0.0);

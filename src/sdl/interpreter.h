@@ -174,6 +174,10 @@ class Interpreter {
     Value parseFunctionDeclaration();
     // `{ body }` of a function with these parameters (also height_field's).
     Value parseFunctionBody(std::vector<std::string> params);
+    Value parseInternalFunctionBody();
+    Value parsePatternFunctionBody();
+    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at);
+    void skipToClosingBrace(const Token& from, int depth);
     Value callSpline(const SplineValue& spline, const Token& at);
     Value callFunction(const FunctionValue& function, const Token& at);
 
@@ -235,6 +239,8 @@ class Interpreter {
     scene::ColorMap parseColorMap();
     // --- patterns (pattern_parser.cpp) ---
     std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
+    void parseFractalHead(const Token& kind, scene::FractalSettings& f);
+    void parseFractalItem(const Token& item, scene::FractalSettings& f);
     scene::NoiseGenerator parseNoiseGenerator(const Token& at);
     bool parseTurbulenceItem(scene::Turbulence& turb);  // turbulence, octaves, omega, lambda
     scene::Warp parseWarp();                            // after the warp keyword

@@ -316,9 +316,7 @@ void Interpreter::parseHeightField(scene::Object& obj) {
             fail(sizeAt, "height_field function needs a resolution of at least 2 x 2");
         width = static_cast<int>(w);
         height = static_cast<int>(h);
-        const Value body = parseFunctionBody({"x", "y", "z"});
-        const auto& fn = *std::get<FunctionPtr>(body);
-        if (!fn.unsupported.empty()) unsupported(source, fn.unsupported);
+        const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(source);
         heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
         // Sample (i, j) sees x = i / (W - 1), y = j / (H - 1) (j = 0 is the
         // row at z = 1, as an image's top row); the value is kept as povray
@@ -329,7 +327,7 @@ void Interpreter::parseHeightField(scene::Object& obj) {
                                   static_cast<double>(j) / (height - 1), 0.0};
                 double value;
                 try {
-                    value = fn.compiled->eval(args);
+                    value = fn->eval(args);
                 } catch (const std::runtime_error& e) {
                     fail(source, e.what());
                 }

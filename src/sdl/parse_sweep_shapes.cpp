@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <unordered_set>
 
 #include "scene/isosurface.h"
 #include "scene/prism.h"
@@ -15,28 +14,6 @@
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
-
-namespace {
-
-// Whether `fn` or a function it calls uses a functions.inc internal or a
-// kind of function the VM cannot run; returns that instruction's
-// description. Rendering must not meet one (it would stop mid-frame).
-std::string unavailableIn(const CompiledFunction& fn,
-                          std::unordered_set<const CompiledFunction*>& seen) {
-    if (!seen.insert(&fn).second) return {};
-    for (const FnInstr& in : fn.code)
-        if (in.op == FnOp::Internal)
-            return in.a < 0
-                       ? "calling a pattern, pigment, transform or spline function from a function"
-                       : fmt::format("functions.inc internal function {}", in.a);
-    for (const auto& callee : fn.callees) {
-        std::string what = unavailableIn(*callee, seen);
-        if (!what.empty()) return what;
-    }
-    return {};
-}
-
-}  // namespace
 
 // The optional spline kind of a lathe or prism; linear when absent.
 static bool acceptSplineKind(Keyword kw, scene::SplineKind& kind) {
@@ -166,13 +143,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseIsosurface(const Token& ki
     const Token fnAt = peek();
     if (!accept(Keyword::kw_function))
         fail(fnAt, fmt::format("expected 'function' in isosurface, found {}", describeToken(fnAt)));
-    const Value body = parseFunctionBody({"x", "y", "z"});
-    const FunctionValue& fn = *std::get<FunctionPtr>(body);
-    if (!fn.unsupported.empty()) unsupported(fnAt, fn.unsupported);
-    std::unordered_set<const CompiledFunction*> seen;
-    if (const std::string what = unavailableIn(*fn.compiled, seen); !what.empty())
-        unsupported(fnAt, what);
-    s.function = fn.compiled;
+    s.function = parseXyzFunction(fnAt);
 
     for (;;) {
         const Token t = peek();

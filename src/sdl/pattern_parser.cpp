@@ -72,6 +72,13 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Ripples;
         case Keyword::kw_waves:
             return PatternKind::Waves;
+        case Keyword::kw_function:
+            return PatternKind::Function;
+        case Keyword::kw_crackle:
+            return PatternKind::Crackle;
+        case Keyword::kw_mandel:
+        case Keyword::kw_julia:
+            return PatternKind::Fractal;
         // quilted, spiral1 and spiral2 do not match povray yet: they stay
         // "not supported yet" until they do.
         default:
@@ -166,6 +173,10 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
         pattern.gradient = g * (1.0 / len);
     } else if (kind == scene::PatternKind::Spiral1 || kind == scene::PatternKind::Spiral2) {
         pattern.arms = static_cast<int>(parseFloat());
+    } else if (kind == scene::PatternKind::Fractal) {
+        parseFractalHead(item, pattern.fractal);
+    } else if (kind == scene::PatternKind::Function) {
+        pattern.function = parseXyzFunction(item);
     } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
         pattern.waveType = scene::WaveType::Triangle;  // their default wave
     }
@@ -279,6 +290,38 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             });
             return true;
         }
+        case Keyword::kw_exponent:
+        case Keyword::kw_interior:
+        case Keyword::kw_exterior: {
+            if (pigment.pattern().kind != scene::PatternKind::Fractal) return false;
+            next();
+            scene::FractalSettings f = pigment.pattern().fractal;
+            parseFractalItem(item, f);
+            editPattern([&](scene::Pattern& p) { p.fractal = f; });
+            return true;
+        }
+        case Keyword::kw_form: {
+            next();
+            const Vec3 f = parseVec3();
+            editPattern([&](scene::Pattern& p) { p.crackle.form = f; });
+            return true;
+        }
+        case Keyword::kw_metric: {
+            next();
+            const double m = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.crackle.metric = m; });
+            return true;
+        }
+        case Keyword::kw_offset: {
+            next();
+            const double o = parseFloat();
+            editPattern([&](scene::Pattern& p) { p.crackle.offset = o; });
+            return true;
+        }
+        case Keyword::kw_solid:
+            next();
+            editPattern([&](scene::Pattern& p) { p.crackle.solid = true; });
+            return true;
         case Keyword::kw_agate_turb: {
             next();
             const double a = parseFloat();
@@ -423,6 +466,49 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     normal.pattern = holder.pattern();
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
+}
+
+// mandel ITERATIONS | julia <C>, ITERATIONS
+void Interpreter::parseFractalHead(const Token& kind, scene::FractalSettings& f) {
+    f = scene::FractalSettings{};
+    if (kind.is(Keyword::kw_julia)) {
+        f.julia = true;
+        const VectorValue c = parseVector();
+        f.cx = c.v[0];
+        f.cy = c.v[1];
+        accept(Sym::Comma);
+    }
+    const Token at = peek();
+    const double n = parseFloat();
+    if (n < 1) fail(at, fmt::format("{} needs at least one iteration, found {}", kind.text, n));
+    f.iterations = static_cast<int>(n);
+}
+
+// exponent N | interior TYPE, FACTOR | exterior TYPE, FACTOR (after the
+// keyword). Only the types frameray matches to povray are accepted.
+void Interpreter::parseFractalItem(const Token& item, scene::FractalSettings& f) {
+    if (item.is(Keyword::kw_exponent)) {
+        const Token at = peek();
+        const double e = parseFloat();
+        if (e < 2 || e > 33 || e != std::floor(e))
+            fail(at,
+                 fmt::format("fractal exponent must be a whole number from 2 to 33, found {}", e));
+        f.exponent = static_cast<int>(e);
+        return;
+    }
+    const Token at = peek();
+    const int type = static_cast<int>(parseFloat());
+    accept(Sym::Comma);
+    const double factor = parseFloat();
+    if (item.is(Keyword::kw_interior)) {
+        if (type != 0) unsupported(at, fmt::format("fractal interior type {}", type));
+        f.interiorType = type;
+        f.interiorFactor = factor;
+    } else {
+        if (type != 0 && type != 1) unsupported(at, fmt::format("fractal exterior type {}", type));
+        f.exteriorType = type;
+        f.exteriorFactor = factor;
+    }
 }
 
 scene::NoiseGenerator Interpreter::parseNoiseGenerator(const Token& at) {

@@ -9,7 +9,9 @@ namespace frameray {
 
 namespace {
 // Unlike parse-time expressions, function comparisons are exact (povray 3.7).
-bool truth(double v) { return v != 0.0; }
+bool truth(double v) {
+    return v != 0.0;
+}
 }  // namespace
 
 double CompiledFunction::eval(const double* args) const {
@@ -20,25 +22,76 @@ double CompiledFunction::eval(const double* args) const {
     for (size_t pc = 0; pc < n; ++pc) {
         const FnInstr& in = code[pc];
         switch (in.op) {
-            case FnOp::Const: stack[sp++] = in.value; break;
-            case FnOp::Param: stack[sp++] = args[in.a]; break;
-            case FnOp::Slot: stack[sp++] = slots[in.a]; break;
-            case FnOp::Add: --sp; stack[sp - 1] += stack[sp]; break;
-            case FnOp::Sub: --sp; stack[sp - 1] -= stack[sp]; break;
-            case FnOp::Mul: --sp; stack[sp - 1] *= stack[sp]; break;
-            case FnOp::Div: --sp; stack[sp - 1] /= stack[sp]; break;
-            case FnOp::Neg: stack[sp - 1] = -stack[sp - 1]; break;
-            case FnOp::Not: stack[sp - 1] = truth(stack[sp - 1]) ? 0.0 : 1.0; break;
-            case FnOp::Lt: --sp; stack[sp - 1] = stack[sp - 1] < stack[sp]; break;
-            case FnOp::Le: --sp; stack[sp - 1] = stack[sp - 1] <= stack[sp]; break;
-            case FnOp::Eq: --sp; stack[sp - 1] = stack[sp - 1] == stack[sp]; break;
-            case FnOp::Ne: --sp; stack[sp - 1] = stack[sp - 1] != stack[sp]; break;
-            case FnOp::Ge: --sp; stack[sp - 1] = stack[sp - 1] >= stack[sp]; break;
-            case FnOp::Gt: --sp; stack[sp - 1] = stack[sp - 1] > stack[sp]; break;
-            case FnOp::And: --sp; stack[sp - 1] = truth(stack[sp - 1]) && truth(stack[sp]); break;
-            case FnOp::Or: --sp; stack[sp - 1] = truth(stack[sp - 1]) || truth(stack[sp]); break;
-            case FnOp::Unary: stack[sp - 1] = in.unary(stack[sp - 1]); break;
-            case FnOp::Binary: --sp; stack[sp - 1] = in.binary(stack[sp - 1], stack[sp]); break;
+            case FnOp::Const:
+                stack[sp++] = in.value;
+                break;
+            case FnOp::Param:
+                stack[sp++] = args[in.a];
+                break;
+            case FnOp::Slot:
+                stack[sp++] = slots[in.a];
+                break;
+            case FnOp::Add:
+                --sp;
+                stack[sp - 1] += stack[sp];
+                break;
+            case FnOp::Sub:
+                --sp;
+                stack[sp - 1] -= stack[sp];
+                break;
+            case FnOp::Mul:
+                --sp;
+                stack[sp - 1] *= stack[sp];
+                break;
+            case FnOp::Div:
+                --sp;
+                stack[sp - 1] /= stack[sp];
+                break;
+            case FnOp::Neg:
+                stack[sp - 1] = -stack[sp - 1];
+                break;
+            case FnOp::Not:
+                stack[sp - 1] = truth(stack[sp - 1]) ? 0.0 : 1.0;
+                break;
+            case FnOp::Lt:
+                --sp;
+                stack[sp - 1] = stack[sp - 1] < stack[sp];
+                break;
+            case FnOp::Le:
+                --sp;
+                stack[sp - 1] = stack[sp - 1] <= stack[sp];
+                break;
+            case FnOp::Eq:
+                --sp;
+                stack[sp - 1] = stack[sp - 1] == stack[sp];
+                break;
+            case FnOp::Ne:
+                --sp;
+                stack[sp - 1] = stack[sp - 1] != stack[sp];
+                break;
+            case FnOp::Ge:
+                --sp;
+                stack[sp - 1] = stack[sp - 1] >= stack[sp];
+                break;
+            case FnOp::Gt:
+                --sp;
+                stack[sp - 1] = stack[sp - 1] > stack[sp];
+                break;
+            case FnOp::And:
+                --sp;
+                stack[sp - 1] = truth(stack[sp - 1]) && truth(stack[sp]);
+                break;
+            case FnOp::Or:
+                --sp;
+                stack[sp - 1] = truth(stack[sp - 1]) || truth(stack[sp]);
+                break;
+            case FnOp::Unary:
+                stack[sp - 1] = in.unary(stack[sp - 1]);
+                break;
+            case FnOp::Binary:
+                --sp;
+                stack[sp - 1] = in.binary(stack[sp - 1], stack[sp]);
+                break;
             case FnOp::Call: {
                 sp -= in.b;
                 stack[sp] = callees[static_cast<size_t>(in.a)]->eval(&stack[sp]);
@@ -61,14 +114,17 @@ double CompiledFunction::eval(const double* args) const {
                 sp -= in.a;
                 double r = stack[sp];
                 for (int i = 1; i < in.a; ++i)
-                    r = in.op == FnOp::MinN ? std::min(r, stack[sp + i]) : std::max(r, stack[sp + i]);
+                    r = in.op == FnOp::MinN ? std::min(r, stack[sp + i])
+                                            : std::max(r, stack[sp + i]);
                 stack[sp++] = r;
                 break;
             }
             case FnOp::JumpIfFalse:
                 if (!truth(stack[--sp])) pc = static_cast<size_t>(in.a) - 1;
                 break;
-            case FnOp::Jump: pc = static_cast<size_t>(in.a) - 1; break;
+            case FnOp::Jump:
+                pc = static_cast<size_t>(in.a) - 1;
+                break;
             case FnOp::LoopInit:
                 slots[in.a + 1] = stack[--sp];
                 slots[in.a] = stack[--sp];
@@ -77,17 +133,23 @@ double CompiledFunction::eval(const double* args) const {
             case FnOp::LoopTest:
                 if (slots[in.a] > slots[in.a + 1]) pc = static_cast<size_t>(in.b) - 1;
                 break;
-            case FnOp::LoopSum: --sp; stack[sp - 1] += stack[sp]; break;
-            case FnOp::LoopProd: --sp; stack[sp - 1] *= stack[sp]; break;
+            case FnOp::LoopSum:
+                --sp;
+                stack[sp - 1] += stack[sp];
+                break;
+            case FnOp::LoopProd:
+                --sp;
+                stack[sp - 1] *= stack[sp];
+                break;
             case FnOp::LoopNext:
                 slots[in.a] += 1;
                 pc = static_cast<size_t>(in.b) - 1;
                 break;
+            case FnOp::Native:
+                stack[sp++] = natives[static_cast<size_t>(in.a)]->eval(args);
+                break;
             case FnOp::Internal:
-                throw std::runtime_error(in.a < 0 ? "not supported yet: calling a pattern, pigment, transform or "
-                                                    "spline function from a function"
-                                                  : "not supported yet: functions.inc internal function " +
-                                                        std::to_string(in.a));
+                throw std::runtime_error("not supported yet: " + unavailable);
         }
     }
     return sp > 0 ? stack[sp - 1] : 0.0;

@@ -13,25 +13,39 @@
 namespace frameray {
 
 enum class FnOp : uint8_t {
-    Const,        // push value
-    Param,        // push parameter a
-    Slot,         // push loop variable in slot a
-    Add, Sub, Mul, Div, Neg, Not,
-    Lt, Le, Eq, Ne, Ge, Gt, And, Or,
-    Unary,        // replace top by unary(top)
-    Binary,       // pop b, a; push binary(a, b)
-    Call,         // pop b arguments; push callees[a](args)
-    Select3,      // pop c, b, a: a < 0 ? b : c
-    Select4,      // pop d, c, b, a: a < 0 ? b : (a == 0 ? c : d)
-    MinN, MaxN,   // pop a values, push their min/max
+    Const,  // push value
+    Param,  // push parameter a
+    Slot,   // push loop variable in slot a
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Neg,
+    Not,
+    Lt,
+    Le,
+    Eq,
+    Ne,
+    Ge,
+    Gt,
+    And,
+    Or,
+    Unary,    // replace top by unary(top)
+    Binary,   // pop b, a; push binary(a, b)
+    Call,     // pop b arguments; push callees[a](args)
+    Select3,  // pop c, b, a: a < 0 ? b : c
+    Select4,  // pop d, c, b, a: a < 0 ? b : (a == 0 ? c : d)
+    MinN,
+    MaxN,         // pop a values, push their min/max
     JumpIfFalse,  // pop; jump to a when zero
     Jump,         // jump to a
-    LoopInit,     // pop end, start into slots a (variable) and a+1 (end); push b (0 sum / 1 product)
-    LoopTest,     // jump to b when slot a > slot a+1
-    LoopSum,      // pop v; top += v
-    LoopProd,     // pop v; top *= v
-    LoopNext,     // slot a += 1; jump to b
-    Internal,     // a built-in function of functions.inc, number a, with b arguments
+    LoopInit,  // pop end, start into slots a (variable) and a+1 (end); push b (0 sum / 1 product)
+    LoopTest,  // jump to b when slot a > slot a+1
+    LoopSum,   // pop v; top += v
+    LoopProd,  // pop v; top *= v
+    LoopNext,  // slot a += 1; jump to b
+    Native,    // push natives[a](the running function's own arguments)
+    Internal,  // a function that cannot run yet (throws); b arguments were pushed
 };
 
 struct FnInstr {
@@ -43,8 +57,17 @@ struct FnInstr {
     double (*binary)(double, double) = nullptr;
 };
 
+// A function written in C++ rather than compiled from the language: the
+// functions.inc internals and `function { pattern { ... } }`. It reads the
+// arguments of the compiled function whose body it is.
+class NativeFunction {
+  public:
+    virtual ~NativeFunction() = default;
+    virtual double eval(const double* args) const = 0;
+};
+
 class CompiledFunction {
-public:
+  public:
     static constexpr int kMaxStack = 256;
     static constexpr int kMaxSlots = 64;
 
@@ -53,9 +76,13 @@ public:
     int slotCount = 0;
     std::vector<FnInstr> code;
     std::vector<std::shared_ptr<const CompiledFunction>> callees;
+    std::vector<std::shared_ptr<const NativeFunction>> natives;
+    // Why this function (or one it calls) cannot run yet: empty when it
+    // can. Shapes check it before rendering so no frame stops midway.
+    std::string unavailable;
 
     // Evaluates with `paramCount` arguments. Throws std::runtime_error for
-    // an internal function that is not available.
+    // a call of a function that cannot run yet.
     double eval(const double* args) const;
 };
 
