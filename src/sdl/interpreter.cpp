@@ -359,6 +359,9 @@ void Interpreter::runDirective() {
                 if (it->erase(name)) break;
             break;
         }
+        case Keyword::kw_default:
+            directiveDefault();
+            break;
         case Keyword::kw_fopen:
             directiveFopen(word);
             break;

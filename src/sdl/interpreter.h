@@ -239,6 +239,7 @@ class Interpreter {
     scene::ColorMap parseColorMap();
     // --- patterns (pattern_parser.cpp) ---
     std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
+    void directiveDefault();
     void parseFractalHead(const Token& kind, scene::FractalSettings& f);
     void parseFractalItem(const Token& item, scene::FractalSettings& f);
     scene::NoiseGenerator parseNoiseGenerator(const Token& at);
@@ -333,6 +334,10 @@ class Interpreter {
     scene::Scene scene_;
     double version_ = 3.7;
     bool versionSeen_ = false;
+    // #default { texture | pigment | normal | finish }: where new textures,
+    // pigments and finishes start, and what objects without a texture get.
+    scene::Texture defaultTexture_;
+    bool defaultTextureSet_ = false;
     bool declarationBeforeVersion_ = false;
     int includeDepth_ = 0;
     // Random number streams made by seed(); the float seed() returns is

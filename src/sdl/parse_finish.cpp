@@ -176,7 +176,7 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
 FinishPtr Interpreter::parseFinish(const scene::Finish* base) {
     next();  // finish
     expect(Sym::LBrace, "'{' after 'finish'");
-    scene::Finish f = base ? *base : scene::Finish{};
+    scene::Finish f = base ? *base : defaultTexture_.finish;
     const Token t = peek();
     if (t.isIdentifier()) {
         next();

@@ -433,7 +433,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
     vSteps = std::clamp(vSteps, 0, 10);
     std::array<Vec3, 16> points;
     for (size_t i = 0; i < 16; ++i) {
-        if (i) accept(Sym::Comma);
+        accept(Sym::Comma);  // commas are optional, also before the first point (povray)
         points[i] = parseVec3();
     }
     return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness);

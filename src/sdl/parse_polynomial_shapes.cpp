@@ -26,10 +26,12 @@ std::vector<double> Interpreter::parseCoefficientVector(int count, const Token& 
            fmt::format("'<' starting the {} coefficients of '{}'", count, kind.text).c_str());
     std::vector<double> values;
     values.reserve(count);
-    for (;;) {
+    // Commas between coefficients are optional (povray reads them as a
+    // list of floats, not as a vector literal).
+    while (!peek().is(Sym::Greater) && peek().kind != TokenKind::End) {
         const Token at = peek();
         values.push_back(toFloat(parseAdditive(), at));
-        if (!accept(Sym::Comma)) break;
+        accept(Sym::Comma);
     }
     const Token close = peek();
     expect(Sym::Greater, "'>' closing the coefficients");
@@ -53,7 +55,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parsePolynomialShape(const Toke
             if (order < 2 || order > kMaxPolynomialDegree)
                 fail(at, "Order of poly is out of range.");
             const int n = static_cast<int>(order);
-            expect(Sym::Comma, "',' after the order of the poly");
+            accept(Sym::Comma);  // optional, as between any parameters (povray)
             const std::vector<double> coefficients =
                 parseCoefficientVector(scene::PolynomialSurface::coefficientCount(n), kind);
             return std::make_shared<scene::PolynomialSurface>(n, coefficients, false, "poly");

@@ -44,7 +44,7 @@ void checkMapEntries(const Entries& entries, const Token& kw, Fail&& fail) {
 TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
     next();  // texture
     expect(Sym::LBrace, "'{' after 'texture'");
-    scene::Texture tex = base ? *base : scene::Texture{};
+    scene::Texture tex = base ? *base : defaultTexture_;
     parseTextureBody(tex, Sym::RBrace);
     expect(Sym::RBrace, "'}' closing 'texture'");
     return std::make_shared<const scene::Texture>(std::move(tex));
@@ -214,7 +214,7 @@ std::vector<scene::TextureMap::Entry> Interpreter::parseTextureMap() {
         expect(Sym::LBracket, "'[' or '}' in texture_map");
         const double v = parseMapValue();
         accept(Sym::Comma);
-        scene::Texture tex;
+        scene::Texture tex = defaultTexture_;
         parseTextureBody(tex, Sym::RBracket);
         expect(Sym::RBracket, "']' after a texture_map entry");
         entries.push_back({v, std::make_shared<const scene::Texture>(std::move(tex))});
@@ -316,6 +316,34 @@ std::vector<scene::Normal::SlopeEntry> Interpreter::parseSlopeMap() {
     }
     checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { fail(at, m); });
     return entries;
+}
+
+// #default { texture { } | pigment { } | normal { } | finish { } ... }:
+// each block edits the default texture from its current state.
+void Interpreter::directiveDefault() {
+    expect(Sym::LBrace, "'{' after '#default'");
+    while (!accept(Sym::RBrace)) {
+        const Token t = peek();
+        switch (t.kw) {
+            case Keyword::kw_texture:
+                defaultTexture_ = *parseTexture(&defaultTexture_);
+                break;
+            case Keyword::kw_pigment:
+                defaultTexture_.pigment = parsePigment();
+                break;
+            case Keyword::kw_normal:
+                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get());
+                break;
+            case Keyword::kw_finish:
+                defaultTexture_.finish = *parseFinish(&defaultTexture_.finish);
+                break;
+            default:
+                fail(t, fmt::format(
+                            "expected texture, pigment, normal or finish in #default, found {}",
+                            describeToken(t)));
+        }
+        defaultTextureSet_ = true;
+    }
 }
 
 }  // namespace frameray::sdl

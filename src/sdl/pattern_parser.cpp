@@ -106,7 +106,7 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
 PigmentPtr Interpreter::parsePigment() {
     next();  // pigment
     expect(Sym::LBrace, "'{' after 'pigment'");
-    auto result = std::make_shared<scene::Pigment>();
+    auto result = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
     parsePigmentBody(*result, Sym::RBrace);
     expect(Sym::RBrace, "'}' closing 'pigment'");
     return result;

@@ -76,8 +76,15 @@ bool Interpreter::parseStatement() {
     const Token t = peek();
     if (t.kind == TokenKind::End) return false;
     if (isObjectStart(t)) {
-        // Placing the object settles what its CSG children inherit.
-        scene_.objects.push_back(scene::csg::resolveInheritance(parseObject()));
+        // Placing the object settles what its CSG children inherit; an
+        // object without a texture takes the #default texture in force.
+        scene::ObjectRef obj = parseObject();
+        if (defaultTextureSet_ && !obj->texture) {
+            auto textured = std::make_shared<scene::Object>(*obj);
+            textured->texture = std::make_shared<const scene::Texture>(defaultTexture_);
+            obj = std::move(textured);
+        }
+        scene_.objects.push_back(scene::csg::resolveInheritance(obj));
         return true;
     }
     switch (t.kw) {
@@ -379,7 +386,7 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
     // Texture items edit the object's texture, creating it from the
     // default texture on first use.
     auto editTexture = [&]() -> scene::Texture& {
-        if (!texture) texture = obj.texture ? *obj.texture : scene::Texture{};
+        if (!texture) texture = obj.texture ? *obj.texture : defaultTexture_;
         return *texture;
     };
     switch (tok.kw) {
