@@ -2,7 +2,7 @@
 // reflections that fade by 0.8 per bounce; polished spheres and a glass
 // sphere (reflection + refraction: two children per hit) sit between them.
 // max_trace_level cuts the corridor short, adc_bailout prunes faint rays.
-// study-knobs: max_trace adc_bailout quality
+// study-knobs: max_trace adc_bailout aa_threshold quality
 // study-baseline: +A0.3 +R3 -J Declare=MaxTrace=5 Declare=AdcBailout=0.0039
 // study-reference: +A0.0 +R4 -J Declare=MaxTrace=40 Declare=AdcBailout=0.00001
 #version 3.7;

@@ -1,7 +1,7 @@
 // Accuracy study: root finding. Thin tori seen edge-on (quartic roots that
 // the closed-form solver loses at grazing angles unless `sturm` is on) and
 // two isosurfaces whose surface position is found to within IsoAccuracy.
-// study-knobs: sturm iso_accuracy quality
+// study-knobs: sturm iso_accuracy aa_threshold quality
 // study-baseline: +A0.3 +R3 -J Declare=Sturm=0 Declare=IsoAccuracy=0.001
 // study-reference: +A0.02 +R4 -J Declare=Sturm=1 Declare=IsoAccuracy=0.000001
 #version 3.7;

@@ -1,7 +1,7 @@
 // Accuracy study: soft shadows. One large area light over a few objects:
 // the grid size (AreaSize x AreaSize lights) sets how smooth the penumbra
 // is, the adaptive level how many grid points are actually shadow-tested.
-// study-knobs: area_size area_adaptive quality
+// study-knobs: area_size area_adaptive aa_threshold quality
 // study-baseline: +A0.3 +R3 -J Declare=AreaSize=5 Declare=AreaAdaptive=1
 // study-reference: +A0.05 +R3 -J Declare=AreaSize=17 Declare=AreaAdaptive=4
 #version 3.7;
