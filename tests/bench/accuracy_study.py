@@ -414,7 +414,7 @@ def write_csv(study, path):
                     "frameray_process_cpu_s", "frameray_process_wall_s", "povray_render_cpu_s",
                     "povray_render_wall_s", "rmse", "psnr_db", "within_4_255",
                     "isolated_psnr_db", "povray_psnr_db", "povray_within_4_255", "error"])
-        for p in study.points:
+        for p in study.points + [point for _, point in study.presets]:
             pov = p.povray or Render()
             w.writerow([study.scene.stem, p.knob, p.label, " ".join(p.switches),
                         fmt(p.frameray.time, "{:.3f}", ""), fmt(p.frameray.frame_wall, "{:.3f}", ""),
