@@ -2,7 +2,8 @@
 """What accuracy costs in time: sweeps frameray's accuracy knobs on a scene.
 
     tests/bench/accuracy_study.py SCENE.pov [--knobs K1,K2,...] [--out DIR]
-                                  [--reps N] [--no-povray] [--width W --height H]
+                                  [--frames N] [--reps N] [--threads N] [--no-povray]
+                                  [--width W --height H]
     tests/bench/accuracy_study.py --run-all [--out DIR]   # every scene in
                                   # tests/bench/accuracy/, into
                                   # tests/bench/results/accuracy/ by default
@@ -19,10 +20,10 @@ adaptive level, isosurface accuracy, sturm) are `#declare`d by the scene
 behind `#ifndef` and set with Declare=NAME=VALUE, which both programs take.
 
 Each knob is swept one at a time from the baseline (the other switches stay
-at the baseline). For every setting: frameray's render time (the best of
---reps runs; the time frameray reports for the frame, i.e. parse + render,
-without the process start-up that does not depend on the knob), povray 3.7's
-time at the same switches (its parse + bounding + trace times, one run), and
+at the baseline). For every setting: frameray's render time (CPU seconds per
+frame of a run that renders the same frame --frames times, less frameray's
+start-up CPU; the best of --reps runs), povray 3.7's time at the same
+switches (the CPU-seconds it reports for parse + bounding + trace), and
 the error of frameray's image against the reference rendered by frameray:
 RMSE (0..255 scale), PSNR over R, G, B, and the fraction of pixels within
 4/255 on every channel (the conformance metric, tests/bench/png_compare.py).
@@ -30,9 +31,11 @@ Also recorded: the "isolated" PSNR against the sweep's own most accurate
 setting (the knob's effect alone, without the baseline's other errors) and
 povray's PSNR against the same reference (how far the two programs agree).
 
-Writes DIR/SCENE.csv, DIR/SCENE.png (PSNR against time, one curve per knob,
-the Pareto front marked) and DIR/SCENE.md (tables and the cheapest measured
-settings for the draft / preview / final error budgets); --run-all also
+Then, per error budget (draft / preview / final), a preset combining every
+knob at its cheapest setting whose isolated error clears the budget is
+rendered and measured. Writes DIR/SCENE.csv, DIR/SCENE.png (PSNR against
+time, one curve per knob, the presets and the Pareto front marked) and
+DIR/SCENE.md (presets, tables, findings); --run-all also
 writes DIR/README.md, a summary across scenes. Needs numpy and matplotlib
 for the plot (Debian python3-numpy, python3-matplotlib; scripts/setup.sh).
 """
