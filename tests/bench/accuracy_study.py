@@ -517,8 +517,9 @@ def write_report(study, path, plot_name, args, started, load):
         f"{ref.time:.2f} CPU s",
         "- error of each frameray image against the reference: RMSE (0..255), PSNR (dB, "
         f"{PSNR_CAP:.0f} = identical), fraction of pixels within 4/255; *isolated* PSNR is "
-        "against the sweep's own most accurate setting (the one closest to the reference: the knob's effect alone); *povray "
-        "PSNR* compares povray's image at the same setting with frameray's reference",
+        "against the sweep's own most accurate setting (the one closest to the "
+        "reference: the knob's effect alone); *povray PSNR* compares povray's image at "
+        "the same setting with frameray's reference",
         "",
         f"![time vs error]({plot_name})",
         "",
