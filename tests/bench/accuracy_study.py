@@ -343,7 +343,7 @@ def run_study(scene, args, scratch):
     # budget or every knob is at its most accurate setting.
     for name, budget in BUDGETS:
         for margin in (3.0, 10.0, 1000.0):
-            switches, picks = list(baseline), []
+            switches, picks, changes_so_far = list(baseline), [], []
             for knob_name in knobs:
                 sweep = [p for p in study.points if p.knob == knob_name]
                 ok = [p for p in sweep if p.isolated_psnr is not None
@@ -351,7 +351,13 @@ def run_study(scene, args, scratch):
                 best = max((p for p in reversed(sweep) if p.psnr is not None),
                            key=lambda p: psnr_value(p.psnr), default=sweep[-1])
                 pick = ok[0] if ok else best
-                changes = dict(KNOBS[knob_name].values)[pick.label]
+                # A knob's changes may carry a setting an earlier knob already
+                # picked (area_adaptive sweeps on a 17x17 grid): the earlier pick
+                # stays.
+                taken = {switch_key(x) for x in changes_so_far}
+                changes = [x for x in dict(KNOBS[knob_name].values)[pick.label]
+                           if switch_key(x) not in taken]
+                changes_so_far += changes
                 switches = merge(switches, changes)
                 picks.append(f"{knob_name}={pick.label}")
             point = measure(f"preset:{name}", ", ".join(picks), switches)
