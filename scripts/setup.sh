@@ -11,7 +11,7 @@ packages=(
     libspdlog-dev libfmt-dev libfreetype-dev
     googletest libgtest-dev
     povray povray-includes povray-examples
-    python3
+    python3 python3-numpy python3-matplotlib
 )
 
 missing=()
