@@ -66,6 +66,17 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
         ctx.libraryPaths.push_back(kDefaultLibrary);
     ctx.declares = o.declares;
     ctx.version = o.version;
+    if (o.fileRestrictions) {
+        sdl::FileAccessFolders folders;
+        std::error_code ec;
+        folders.working = fs::current_path(ec);
+        folders.scene = fs::absolute(o.inputFile, ec).parent_path();
+        folders.output = f.output.parent_path().empty() ? folders.working : f.output.parent_path();
+        folders.library = ctx.libraryPaths;
+        folders.extraRead = o.readPaths;
+        folders.extraWrite = o.writePaths;
+        ctx.fileAccess = sdl::FileAccessPolicy::restrictedTo(folders);
+    }
     if (seq.shardCount > 1)
         ctx.refuseFileWrites = fmt::format(
             "frames that pass state through files must be rendered in order by one process, so "
@@ -733,6 +744,11 @@ int runSequence(const options::RenderOptions& o, const Sequence& seq) {
             std::fprintf(stderr, "frameray: shard %d of %d has no frames of the %zu in the sequence\n", seq.shardIndex,
                          seq.shardCount, seq.framesInAllShards);
         return 0;
+    }
+    // Shell-outs are refused before anything runs unless allowed.
+    if (const std::string refusal = shellCommandRefusal(o); !refusal.empty()) {
+        std::fprintf(stderr, "frameray: error: %s\n", refusal.c_str());
+        return 2;
     }
     try {
         Run run(o, seq);

@@ -13,10 +13,10 @@ namespace frameray::anim {
 enum class HookAction { Continue, SkipFrame, SkipAll, Quit, UserAbort, Fatal };
 
 struct HookValues {
-    std::string output;  // %o
-    std::string scene;   // %s: scene file name without folder and extension
-    int frame = 0;       // %n
-    double clock = 0;    // %k
+    std::string output;         // %o
+    std::string scene;          // %s: scene file name without folder and extension
+    int frame = 0;              // %n
+    double clock = 0;           // %k
     int width = 0, height = 0;  // %w %h
 };
 
@@ -26,6 +26,11 @@ std::string substituteCommand(const std::string& command, const HookValues& valu
 // The action a *_Return value asks for given the command's exit code: a
 // letter (I S A Q U F) acts on a non-zero code, after '-' or '!' on zero.
 HookAction returnAction(const std::string& actionText, int exitCode);
+
+// Empty when the options may run their shell-outs: none is set, or
+// Allow_Shell_Commands is on. Otherwise the error naming the first
+// command set and the option that would allow it.
+std::string shellCommandRefusal(const options::RenderOptions& options);
 
 // Runs the hook's command through /bin/sh (nothing when it has none) and
 // returns what to do next.

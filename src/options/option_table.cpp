@@ -185,6 +185,12 @@ Lines writeReturn(const RenderOptions& o) { return {o.commands[static_cast<int>(
 // In the order POV-Ray 3.7's Create_Ini writes options.
 const OptionSpec kOptions[] = {
     FR_STREAM(TextStream::All, "All", "A", "all-text"),
+    {"Allow_Shell_Commands", "", OptionType::Bool, "off",
+     "Run the *_Command shell-outs; while off, a run that sets one stops with an error before anything is run "
+     "(see Restrictions). Only from the command line, POVRAYOPT, povray.ini or frameray.conf, not from INI files "
+     "named on the command line.",
+     [](RenderOptions& o, const OptionInput& in) { o.allowShellCommands = toBool(in); },
+     FR_WRITE(onOff(o.allowShellCommands)), nullptr},
     {"Antialias_Depth", "R", OptionType::Int, "3", "Maximum recursion depth of adaptive anti-aliasing (1..9).",
      [](RenderOptions& o, const OptionInput& in) { o.antialiasDepth = std::clamp(toInt(in.value), 1, 9); },
      FR_WRITE(num(o.antialiasDepth)), nullptr},
@@ -281,6 +287,12 @@ const OptionSpec kOptions[] = {
      "Field rendering for interlaced video (accepted; POV-Ray 3.7 writes the same full frames with it on).",
      [](RenderOptions& o, const OptionInput& in) { o.fieldRender = toBool(in); }, FR_WRITE(onOff(o.fieldRender)),
      nullptr},
+    {"File_Restrictions", "", OptionType::Bool, "on",
+     "Limit the files a scene reads (working, scene and library folders, Read_Path) and writes (working, scene and "
+     "output folders, Write_Path); off lifts the limits (see Restrictions). Not from INI files named on the command "
+     "line.",
+     [](RenderOptions& o, const OptionInput& in) { o.fileRestrictions = toBool(in); },
+     FR_WRITE(onOff(o.fileRestrictions)), nullptr},
     {"File_Gamma", "", OptionType::Float, "sRGB", "Gamma of the output file: a number or sRGB.",
      [](RenderOptions& o, const OptionInput& in) {
          o.fileGamma = iequals(trimQuotes(in.value), "srgb") ? 0 : toFloat(in.value);
@@ -383,6 +395,16 @@ const OptionSpec kOptions[] = {
      [](const RenderOptions& o) -> const char* {
          return o.quality < 2 ? "Quality below 2 (+Q0, +Q1 show quick colours only)" : nullptr;
      }},
+    {"Read_Path", "", OptionType::PathList, "",
+     "Another folder (with its subfolders) scenes may read from; accumulates. Not from INI files named on the "
+     "command line.",
+     [](RenderOptions& o, const OptionInput& in) { o.readPaths.emplace_back(trimQuotes(in.value)); },
+     [](const RenderOptions& o) {
+         Lines lines;
+         for (const auto& p : o.readPaths) lines.push_back(quoted(p.string()));
+         return lines;
+     },
+     nullptr},
     FR_STREAM(TextStream::Render, "Render", "R", "render progress"),
     {"Render_Block_Size", "BS", OptionType::Int, "32",
      "Side of the square pixel blocks rendered at once; anti-aliasing depends on it as in povray (4..).",
@@ -452,6 +474,16 @@ const OptionSpec kOptions[] = {
     {"Work_Threads", "WT", OptionType::Int, "cores", "Render threads (default: every core).",
      [](RenderOptions& o, const OptionInput& in) { o.workThreads = toPositiveInt(in.value); },
      FR_WRITE(num(o.workThreads)), nullptr},
+    {"Write_Path", "", OptionType::PathList, "",
+     "Another folder (with its subfolders) scenes may write to (#fopen write/append); accumulates. Not from INI "
+     "files named on the command line.",
+     [](RenderOptions& o, const OptionInput& in) { o.writePaths.emplace_back(trimQuotes(in.value)); },
+     [](const RenderOptions& o) {
+         Lines lines;
+         for (const auto& p : o.writePaths) lines.push_back(quoted(p.string()));
+         return lines;
+     },
+     nullptr},
 };
 
 #undef FR_WRITE

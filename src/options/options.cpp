@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "options/option_table.h"
+#include "util/spelling.h"
 
 namespace frameray::options {
 
@@ -30,13 +31,29 @@ std::string lower(std::string_view s) {
 
 bool endsWithIni(std::string_view name) { return name.size() >= 4 && lower(name.substr(name.size() - 4)) == ".ini"; }
 
+// Options that widen the restrictions on scenes (sdl/file_access.h): a
+// stranger's INI file, shipped with a scene, must not lift them.
+bool widensRestrictions(std::string_view key) {
+    return key == "Allow_Shell_Commands" || key == "File_Restrictions" || key == "Read_Path" || key == "Write_Path";
+}
+
 struct Applier {
     RenderOptions& options;
     std::vector<std::string> warnings;
     int depth = 0;
+    // INI files named on the command line (and those they name) may not
+    // widen the restrictions; the startup sources and arguments may.
+    bool namedIniUntrusted = false;
+    bool inUntrustedIni = false;
 
     void apply(const OptionSpec& spec, const OptionInput& input, const std::string& where,
                std::string_view shownAs) {
+        if (inUntrustedIni && widensRestrictions(spec.iniKey))
+            throw OptionError(fmt::format(
+                "{}: option '{}' widens the restrictions on scenes, so it is read only from the command line, "
+                "POVRAYOPT, a povray.ini outside the working folder or frameray.conf, not from an INI file "
+                "named on the command line",
+                where, shownAs));
         try {
             spec.apply(options, input);
         } catch (const std::invalid_argument& e) {
@@ -55,7 +72,13 @@ struct Applier {
 
     void applyKeyValue(std::string_view key, std::string_view value, const std::string& where) {
         const OptionSpec* spec = findIniKey(trim(key));
-        if (!spec) throw OptionError(fmt::format("{}: unknown option '{}'", where, trim(key)));
+        if (!spec) {
+            std::vector<std::string_view> keys;
+            for (const OptionSpec& o : optionTable()) keys.push_back(o.iniKey);
+            const std::string best = util::closestSpelling(trim(key), keys, true);
+            throw OptionError(fmt::format("{}: unknown option '{}'{}", where, trim(key),
+                                          best.empty() ? "" : fmt::format("; did you mean '{}'?", best)));
+        }
         apply(*spec, {trim(value), false, true}, where, trim(key));
     }
 
@@ -84,7 +107,10 @@ struct Applier {
         }
         if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
         if (endsWithIni(name)) {
+            const bool outer = inUntrustedIni;
+            inUntrustedIni = inUntrustedIni || namedIniUntrusted;
             readIni(locateIni(name, base), section, where);
+            inUntrustedIni = outer;
         } else {
             options.inputFile = name;
             options.explicitlySet.emplace("Input_File_Name");
@@ -198,6 +224,7 @@ std::vector<std::string> splitOptionString(const std::string& text) {
 
 std::vector<std::string> applyArguments(RenderOptions& options, const std::vector<std::string>& args) {
     Applier a{options, {}};
+    a.namedIniUntrusted = true;
     for (const std::string& arg : args) a.applyToken(arg, "command line", fs::path());
     return a.warnings;
 }
@@ -231,13 +258,30 @@ fs::path findStartupIni(const StartupEnvironment& env) {
     return {};
 }
 
+fs::path findConfigFile(const StartupEnvironment& env) {
+    fs::path config;
+    if (const char* xdg = env.getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+        config = fs::path(xdg) / "frameray" / "frameray.conf";
+    else if (const char* home = env.getenv("HOME"); home && *home)
+        config = fs::path(home) / ".config" / "frameray" / "frameray.conf";
+    std::error_code ec;
+    return !config.empty() && fs::is_regular_file(config, ec) ? config : fs::path();
+}
+
 std::vector<std::string> applyStartupOptions(RenderOptions& options, const StartupEnvironment& env) {
     std::vector<std::string> warnings;
     Applier a{options, {}};
+    // frameray.conf first: the user's standing policy, INI syntax.
+    if (const fs::path config = findConfigFile(env); !config.empty()) a.readIni(config, "", "frameray.conf");
     if (const char* opt = env.getenv("POVRAYOPT"); opt && *opt)
         for (const std::string& tok : splitOptionString(opt)) a.applyToken(tok, "POVRAYOPT", fs::path());
     const fs::path ini = findStartupIni(env);
+    // ./povray.ini may have come with a scene: it cannot widen the
+    // restrictions; the others are the user's own.
+    std::error_code ec;
+    a.inUntrustedIni = !ini.empty() && fs::equivalent(ini, env.workingDir / "povray.ini", ec);
     if (!ini.empty()) a.readIni(ini, "", "startup");
+    a.inUntrustedIni = false;
     return a.warnings;
 }
 

@@ -48,7 +48,13 @@ StartupEnvironment processEnvironment();
 // Empty when there is none.
 std::filesystem::path findStartupIni(const StartupEnvironment& env);
 
+// frameray's own configuration file, INI syntax (sdl/file_access.h's
+// restrictions are usually widened there): $XDG_CONFIG_HOME/frameray/
+// frameray.conf, else ~/.config/frameray/frameray.conf. Empty when absent.
+std::filesystem::path findConfigFile(const StartupEnvironment& env);
+
 // Applies the startup sources that come before the command line:
+// frameray.conf,
 // POVRAYOPT (switches, as in POV-Ray 2.0 - povray 3.7 for Unix ignores it)
 // and then the povray.ini found above.
 std::vector<std::string> applyStartupOptions(RenderOptions& options, const StartupEnvironment& env);

@@ -99,6 +99,12 @@ struct RenderOptions {
     std::array<StreamOptions, kTextStreams> streams;
     std::array<ShellCommand, kShellHooks> commands;
 
+    // Restrictions (sdl/file_access.h): on by default, as povray.conf's.
+    bool fileRestrictions = true;
+    std::vector<std::filesystem::path> readPaths;   // Read_Path: more folders scenes may read
+    std::vector<std::filesystem::path> writePaths;  // Write_Path: more folders scenes may write
+    bool allowShellCommands = false;                // the *_Command options run only when on
+
     // INI keys set by any source so far, for Create_Ini.
     std::set<std::string> explicitlySet;
 };

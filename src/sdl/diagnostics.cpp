@@ -21,4 +21,10 @@ std::string formatDiagnostic(Severity severity, const SourceLoc& loc, const std:
     return out;
 }
 
+std::string formatNotes(const std::vector<std::string>& notes) {
+    std::string out;
+    for (const std::string& note : notes) out += "\nnote: " + note;
+    return out;
+}
+
 }  // namespace frameray::sdl

@@ -1,11 +1,15 @@
 // Compiler-style diagnostics for scene files: "file:line:col: error: ...",
-// the source line, and a caret under the column.
+// the source line, a caret under the column, then notes (the include and
+// macro chain that led there); and "did you mean" spelling suggestions.
 #pragma once
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "sdl/source.h"
+#include "util/spelling.h"
 
 namespace frameray::sdl {
 
@@ -15,21 +19,31 @@ enum class Severity { Warning, Error };
 // newline). A location without a file prints the message alone.
 std::string formatDiagnostic(Severity severity, const SourceLoc& loc, const std::string& message);
 
+// "note: in file included from a.pov:3:2" style lines, one per element.
+std::string formatNotes(const std::vector<std::string>& notes);
+
 // Thrown for any error in a scene file; what() is the full formatted
-// diagnostic. One error ends the frame's parse.
+// diagnostic followed by its notes. One error ends the frame's parse.
 class SdlError : public std::runtime_error {
-public:
-    SdlError(const SourceLoc& loc, const std::string& message)
-        : std::runtime_error(formatDiagnostic(Severity::Error, loc, message)),
+  public:
+    SdlError(const SourceLoc& loc, const std::string& message, std::vector<std::string> notes = {})
+        : std::runtime_error(formatDiagnostic(Severity::Error, loc, message) + formatNotes(notes)),
           loc_(loc),
-          message_(message) {}
+          message_(message),
+          notes_(std::move(notes)) {}
 
     const SourceLoc& loc() const { return loc_; }
     const std::string& message() const { return message_; }
+    const std::vector<std::string>& notes() const { return notes_; }
 
-private:
+  private:
     SourceLoc loc_;
     std::string message_;
+    std::vector<std::string> notes_;
 };
+
+// Spelling suggestions come from util/spelling.h.
+using util::closestSpelling;
+using util::spellingDistance;
 
 }  // namespace frameray::sdl

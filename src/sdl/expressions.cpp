@@ -798,7 +798,10 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         }
         case Keyword::kw_file_exists: {
             const std::string name = str(parseArguments(1, 1, fn)[0]);
-            return double(!findIncludeFile(name).empty());
+            // A file the scene may not read is reported missing: its
+            // existence is what the restrictions keep from the scene.
+            const std::filesystem::path path = findIncludeFile(name);
+            return double(!path.empty() && frame_.fileAccess.checkRead(path, name).empty());
         }
         case Keyword::kw_min_extent:
         case Keyword::kw_max_extent: {

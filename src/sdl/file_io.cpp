@@ -116,6 +116,14 @@ void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
 
 }  // namespace
 
+void Interpreter::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
+    if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty()) fail(at, refusal);
+}
+
+void Interpreter::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
+    if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty()) fail(at, refusal);
+}
+
 void Interpreter::directiveFopen(const Token& at) {
     const std::string id = expectIdentifier();
     const std::string name = parseString();
@@ -125,8 +133,9 @@ void Interpreter::directiveFopen(const Token& at) {
     switch (mode.kw) {
         case Keyword::kw_read: {
             const fs::path path = findIncludeFile(name);
+            if (!path.empty()) checkReadable(path, name, at);
             std::ifstream in(path.empty() ? fs::path(name) : path, std::ios::binary);
-            if (!in)
+            if (path.empty() || !in)
                 fail(at, frame_.refuseFileWrites.empty()
                              ? fmt::format("cannot open '{}' for reading", name)
                              : fmt::format("cannot open '{}' for reading; if an earlier frame writes it, {}", name,
@@ -141,6 +150,7 @@ void Interpreter::directiveFopen(const Token& at) {
             if (!frame_.refuseFileWrites.empty())
                 fail(at, fmt::format("'{}' is opened for {}: {}", name, mode.kw == Keyword::kw_append ? "append" : "write",
                                      frame_.refuseFileWrites));
+            checkWritable(name, name, at);
             handle->writing = true;
             handle->out.open(name, std::ios::binary | (mode.kw == Keyword::kw_append ? std::ios::app : std::ios::trunc));
             if (!handle->out) fail(at, fmt::format("cannot open '{}' for writing", name));
@@ -170,7 +180,11 @@ void Interpreter::directiveRead(const Token& at) {
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
     Value* v = find(id);
-    if (!v || !std::holds_alternative<FilePtr>(*v))
+    if (!v)
+        fail(idToken, fmt::format("'{}' is not an open file: a file read to its end is closed and its identifier "
+                                  "undefined (test defined({}) before #read)",
+                                  id, id));
+    if (!std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("expected a file identifier opened for reading, found '{}'", id));
     const FilePtr file = std::get<FilePtr>(*v);
     if (file->writing) fail(idToken, fmt::format("file '{}' was opened for writing, not reading", file->name));

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "sdl/file_access.h"
+
 namespace frameray::sdl {
 
 struct FrameContext {
@@ -27,6 +29,9 @@ struct FrameContext {
     // through files cannot be rendered apart). A file that cannot be
     // opened for reading adds it to its message too.
     std::string refuseFileWrites;
+    // The files the scene may read and write (unrestricted by default;
+    // the frame loop restricts it unless File_Restrictions=off).
+    FileAccessPolicy fileAccess;
 };
 
 // The text streams of a frame (debug, warning...), routed by the frame

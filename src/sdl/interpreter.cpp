@@ -74,7 +74,13 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
             scopes_[0][name] = value;
     }
     cursors_.push_back({file, 0, CursorKind::File, 1, 0, false});
-    while (parseStatement()) {
+    try {
+        while (parseStatement()) {
+        }
+    } catch (const SdlError& e) {
+        // The cursors still show how the parse got there.
+        if (!e.notes().empty()) throw;
+        throw SdlError(e.loc(), e.message(), includeChain(e.loc()));
     }
     closeAllFiles();
     if (!blocks_.empty()) {
@@ -217,7 +223,7 @@ SourceLoc Interpreter::here() {
 }
 
 void Interpreter::fail(const Token& at, const std::string& message) {
-    throw SdlError(loc(at), message);
+    throw SdlError(loc(at), withSpellingSuggestion(at, message));
 }
 
 void Interpreter::failHere(const std::string& message) {
@@ -528,11 +534,14 @@ void Interpreter::directiveInclude(const Token& at) {
         fail(at, fmt::format("#include nested more than {} levels deep", kMaxIncludeDepth));
     const fs::path path = findIncludeFile(name);
     if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
+    checkReadable(path, name, at);
     auto file = cache_.get(path);
     if (!file) fail(at, fmt::format("cannot read include file '{}'", path.string()));
     // A new symbol table for the file's #local identifiers.
     scopes_.emplace_back();
+    const SourceLoc callSite = loc(at);
     cursors_.push_back({file, 0, CursorKind::File, scopes_.size() - 1, blocks_.size(), false});
+    cursors_.back().callSite = callSite;
     ++includeDepth_;
 }
 
@@ -584,6 +593,7 @@ void Interpreter::directiveIf(const Token& at, bool (Interpreter::*condition)())
         const Keyword found = skipBranch(true, false);
         if (found == Keyword::kw_else) {
             blocks_.push_back({BlockKind::If, loc(at)});
+            blocks_.back().elseTaken = true;
             return;
         }
         if (found != Keyword::kw_elseif) return;  // #end
@@ -595,8 +605,21 @@ void Interpreter::directiveElse(const Token& at) {
         return;  // falling through into a switch's #else
     if (blocks_.empty() || blocks_.back().kind != BlockKind::If)
         fail(at, fmt::format("#{} without a matching #if", at.text));
-    // The taken branch ends here; skip every later branch.
-    skipBranch(false, false);
+    if (blocks_.back().elseTaken)
+        fail(at, fmt::format("#{} after the #else of the #if at line {}", at.text,
+                             blocks_.back().loc.line));
+    // The taken branch ends here; skip every later branch (an #else after
+    // an #else is an error there too).
+    bool elseSeen = at.kw == Keyword::kw_else;
+    for (Keyword found; (found = skipBranch(true, false)) != Keyword::kw_end;) {
+        if (elseSeen) {
+            const Cursor& c = cursors_.back();
+            fail(c.file->tokens[c.pos - 1],
+                 fmt::format("#{} after the #else of the #if at line {}", keywordName(found),
+                             blocks_.back().loc.line));
+        }
+        elseSeen = found == Keyword::kw_else;
+    }
     blocks_.pop_back();
 }
 
@@ -759,8 +782,11 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
         fail(nameToken,
              fmt::format("macro '{}' takes {} parameter{}, {} given", macro.name,
                          macro.params.size(), macro.params.size() == 1 ? "" : "s", count));
+    const SourceLoc callSite = loc(nameToken);
     cursors_.push_back(
         {macro.file, macro.bodyStart, CursorKind::Macro, scopes_.size(), blocks_.size(), false});
+    cursors_.back().callSite = callSite;
+    cursors_.back().macroName = macro.name;
     scopes_.push_back(std::move(args));
     blocks_.push_back({BlockKind::Macro, macro.loc});
 }

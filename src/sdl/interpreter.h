@@ -65,6 +65,10 @@ class Interpreter {
         // (the expression parser's one-token lookahead must not run the
         // next line's directive before this one is done).
         bool inDirective = false;
+        // Where the #include or the macro call that opened this cursor
+        // stands, and the macro's name, for the chain in diagnostics.
+        SourceLoc callSite{};
+        std::string macroName{};
     };
     // Where peek() last resolved the stream to a plain token, so repeated
     // peeks at the same place (every precedence level looks) skip the
@@ -87,6 +91,7 @@ class Interpreter {
         std::string loopVar;    // For
         double loopEnd = 0, loopStep = 1;
         double switchValue = 0;  // Switch
+        bool elseTaken = false;  // If: running its #else branch (a second #else is an error)
     };
     // Heterogeneous lookup: identifiers are looked up by the string_view of
     // their token, without building a std::string each time.
@@ -113,6 +118,14 @@ class Interpreter {
     SourceLoc loc(const Token& t) const;
     SourceLoc here();  // location of peek()
     [[noreturn]] void fail(const Token& at, const std::string& message);
+    // --- diagnostics (suggestions.cpp) ---
+    // `message` with "; did you mean 'x'?" added when it names `at`, an
+    // undeclared identifier that is one or two edits from a keyword or a
+    // declared identifier.
+    std::string withSpellingSuggestion(const Token& at, const std::string& message) const;
+    // The includes and macro calls that lead to `loc`, innermost first,
+    // as diagnostic notes.
+    std::vector<std::string> includeChain(const SourceLoc& loc) const;
     [[noreturn]] void failHere(const std::string& message);
     void warn(const Token& at, const std::string& message);
     [[noreturn]] void unsupported(const Token& at, const std::string& feature);
@@ -148,6 +161,10 @@ class Interpreter {
     void invokeMacro(const Token& nameToken, const Macro& macro);
     Value bareIdentifierArgument();  // monostate when the argument is not one
     std::filesystem::path findIncludeFile(const std::string& name) const;
+    // Fails at `at` when the frame's FileAccessPolicy refuses the file
+    // (file_io.cpp); `name` is how the scene named it.
+    void checkReadable(const std::filesystem::path& path, const std::string& name, const Token& at);
+    void checkWritable(const std::filesystem::path& path, const std::string& name, const Token& at);
 
     // --- identifiers ---
     Value* find(std::string_view name);

@@ -89,11 +89,19 @@ class Lexer {
             t.column = column_;
             if (pos_ >= text_.size()) {
                 t.kind = TokenKind::End;
+                // "found end of file" points just after the last token,
+                // on a line that shows what is unfinished.
+                if (!out_->tokens.empty()) {
+                    t.line = lastEndLine_;
+                    t.column = lastEndColumn_;
+                }
                 out_->tokens.push_back(t);
                 break;
             }
             lexOne(t);
             out_->tokens.push_back(t);
+            lastEndLine_ = line_;
+            lastEndColumn_ = column_;
         }
         return out_;
     }
@@ -196,6 +204,15 @@ class Lexer {
             advance(2);
             while (isDigit(peek())) advance();
         }
+        // "1.2.3" is a typo, not the number 1.2 followed by .3.
+        if (peek() == '.' && isDigit(peek(1)) &&
+            text_.substr(begin, pos_ - begin).find('.') != std::string_view::npos) {
+            size_t end = pos_;
+            while (end < text_.size() && (isDigit(text_[end]) || text_[end] == '.')) ++end;
+            fail(t.line, t.column,
+                 fmt::format("malformed number '{}': a second '.'",
+                             text_.substr(begin, end - begin)));
+        }
         t.kind = TokenKind::Number;
         t.text = std::string_view(text_).substr(begin, pos_ - begin);
         std::from_chars(t.text.data(), t.text.data() + t.text.size(), t.number);
@@ -286,6 +303,7 @@ class Lexer {
     std::string_view text_;
     size_t pos_ = 0;
     uint32_t line_ = 1, column_ = 1;
+    uint32_t lastEndLine_ = 1, lastEndColumn_ = 1;  // just after the last token
 };
 
 }  // namespace

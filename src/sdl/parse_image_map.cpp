@@ -110,6 +110,7 @@ struct ImageSettings {
 const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, const Token& at) {
     const std::filesystem::path path = findIncludeFile(name);
     if (path.empty()) fail(at, fmt::format("Cannot open file '{}'.", name));
+    checkReadable(path, name, at);
     const std::string key = path.lexically_normal().string();
     auto found = images_.find(key);
     if (found != images_.end()) return *found->second;

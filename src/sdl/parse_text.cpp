@@ -96,6 +96,7 @@ std::shared_ptr<scene::TtfFont> Interpreter::openFont(const std::string& name, c
     if (path.empty() && std::filesystem::path(name).extension().empty())
         path = findIncludeFile(name + ".ttf");
     if (path.empty()) fail(at, fmt::format("Cannot open font file '{}'.", name));
+    checkReadable(path, name, at);
     std::shared_ptr<scene::TtfFont> font;
     try {
         font = std::make_shared<scene::TtfFont>(path, textCharset_);
@@ -129,6 +130,7 @@ void Interpreter::parseTextObject(scene::Object& obj) {
             const std::filesystem::path path = findIncludeFile(file);
             if (path.empty())
                 fail(fontAt, fmt::format("Cannot find the built-in font {} ('{}').", id, file));
+            checkReadable(path, file, fontAt);
             try {
                 font = std::make_shared<scene::TtfFont>(path, textCharset_);
             } catch (const std::runtime_error& e) {

@@ -143,7 +143,7 @@ def main():
         f.write("User_Abort_Command=touch %s\n" % flag)
     stopped = os.path.join(work, "stopped")
     os.makedirs(stopped)
-    p = subprocess.Popen([frameray, ini, abort_ini, "+O%s/" % stopped], cwd=work, env=env,
+    p = subprocess.Popen([frameray, ini, abort_ini, "Allow_Shell_Commands=on", "+O%s/" % stopped], cwd=work, env=env,
                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     # Once frames are being written (the handler is installed in main).
     deadline = time.monotonic() + 60

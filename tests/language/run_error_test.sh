@@ -11,7 +11,8 @@
 # is removed as well. The test passes when frameray exits with a non-zero
 # status below 128 (an error, not a crash or a signal) and the first three
 # lines of its standard error (path:line:col: error: message, the source
-# line, the caret line) equal EXPECTED.
+# line, the caret line) equal EXPECTED (or as many lines as EXPECTED has,
+# when that is more: the notes giving the include and macro chain).
 set -uo pipefail
 
 if [ $# -ne 3 ]; then
@@ -53,11 +54,23 @@ elif [ $status -ge 128 ]; then
     result=1
 fi
 
-actual="$(head -n 3 "$stderr_file" | sed "s|$scene_dir/||g")"
+# An EXPECTED of more than three lines also checks the notes that follow
+# (the include and macro chain). Paths in the folder above the scene's
+# (a refused '../x') are shown as '..'.
+lines="$(wc -l < "$expected")"
+[ "$lines" -lt 3 ] && lines=3
+actual="$(head -n "$lines" "$stderr_file" | sed "s|$scene_dir/||g; s|$(dirname "$scene_dir")|..|g")"
 if ! diff -u --label "$(basename "$expected") (expected)" --label "stderr of frameray (first 3 lines)" \
     "$expected" <(printf '%s\n' "$actual"); then
     echo "language_error: $name: the diagnostic differs from the expected one" >&2
     result=1
+fi
+# A refused write must not have happened (restrict_write_* tests).
+if [ -e /tmp/frameray_restrict_test.txt ] || [ -e "$(dirname "$scene_dir")/frameray_restrict_test.txt" ]; then
+    case "$name" in restrict_write_*)
+        echo "language_error: $name: the refused file was written" >&2
+        result=1 ;;
+    esac
 fi
 [ $result -eq 0 ] && echo "language_error: $name: ok"
 exit $result

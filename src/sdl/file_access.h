@@ -1,0 +1,64 @@
+// Which files a scene may read and write, like povray.conf's permitted
+// paths: a scene from a stranger must not read ~/.ssh or overwrite files
+// outside its own folders. One immutable policy per frame (it travels in
+// the FrameContext), built by the frame loop from the options; every
+// scene-side open asks it first.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace frameray::sdl {
+
+// The folders a restricted policy opens, as the options give them.
+struct FileAccessFolders {
+    std::filesystem::path working;                  // the working folder
+    std::filesystem::path scene;                    // the scene file's folder
+    std::filesystem::path output;                   // the output images' folder
+    std::vector<std::filesystem::path> library;     // Library_Path and the standard includes
+    std::vector<std::filesystem::path> extraRead;   // Read_Path
+    std::vector<std::filesystem::path> extraWrite;  // Write_Path
+};
+
+class FileAccessPolicy {
+  public:
+    // Unrestricted: every path is allowed (File_Restrictions=off, and
+    // parsing outside the frame loop, as in unit tests).
+    FileAccessPolicy() = default;
+
+    // Reads limited to the working, scene, library, Read_Path and write
+    // folders; writes to the working, scene, output and Write_Path folders.
+    // Subfolders count; paths are compared after resolving '..' and
+    // symbolic links (a link in the scene's folder cannot lead out of it),
+    // except that links inside library and Read_Path folders are followed
+    // by name.
+    static FileAccessPolicy restrictedTo(const FileAccessFolders& folders);
+
+    bool restricted() const { return restricted_; }
+
+    // Empty when `file` (relative names are taken from the working folder)
+    // may be read / written; otherwise the refusal, naming the file and the
+    // option that would allow it. `shownAs` is the name the scene used.
+    std::string checkRead(const std::filesystem::path& file, const std::string& shownAs) const;
+    std::string checkWrite(const std::filesystem::path& file, const std::string& shownAs) const;
+
+  private:
+    bool restricted_ = false;
+    // Canonical (symbolic links resolved) folders.
+    std::vector<std::filesystem::path> readFolders_;
+    // The library and Read_Path folders as given, made absolute: the
+    // user's or the system's own, so links inside them may point anywhere
+    // (povray's include folder links its fonts from /usr/share/fonts).
+    std::vector<std::filesystem::path> linkTrustedFolders_;
+    std::vector<std::filesystem::path> writeFolders_;
+};
+
+// `path` made absolute (from the working folder) with '..', '.' and
+// symbolic links of its existing part resolved.
+std::filesystem::path resolvedPath(const std::filesystem::path& path);
+
+// Whether `path` is `folder` or inside it; both already resolved.
+bool isInsideFolder(const std::filesystem::path& path, const std::filesystem::path& folder);
+
+}  // namespace frameray::sdl

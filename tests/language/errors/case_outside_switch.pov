@@ -1,0 +1,3 @@
+// #case outside any #switch.
+#version 3.7;
+#case (1)

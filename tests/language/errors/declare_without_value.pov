@@ -1,0 +1,3 @@
+// #declare with nothing after the equals sign.
+#version 3.7;
+#declare A = ;

@@ -1,0 +1,3 @@
+// A reserved word cannot be declared.
+#version 3.7;
+#declare sphere = 1;

@@ -1,0 +1,2 @@
+// #version needs a number.
+#version "3.7";

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# The restrictions on scenes (README "Restrictions"), end to end: each
+# forbidden read, write and shell-out is refused by default, and allowed by
+# the option (or the frameray.conf line) that the refusal names.
+#
+#     run_restriction_test.sh FRAMERAY
+set -uo pipefail
+frameray="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/scenes" "$work/outside" "$work/out" "$work/home"
+echo '42' > "$work/outside/data.txt"
+echo '#declare FromOutside = 7;' > "$work/outside/outside.inc"
+failures=0
+
+# run EXPECT NAME SCENE-TEXT [OPTIONS...]: EXPECT is "ok" or "refused".
+run() {
+    local expect="$1" name="$2" text="$3"
+    shift 3
+    printf '#version 3.7;\nglobal_settings { assumed_gamma 1 }\n%s\nsphere { 0, 1 pigment { rgb 1 } }\n' "$text" \
+        > "$work/scenes/$name.pov"
+    (cd "$work/scenes" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" ${CONFIG:+XDG_CONFIG_HOME="$CONFIG"} \
+        "$frameray" "$name.pov" +W8 +H8 -D -GR -GS "+O$work/out/$name.png" "$@" > "$work/stdout" 2> "$work/stderr")
+    local status=$?
+    if [ "$expect" = ok ] && [ $status -ne 0 ]; then
+        echo "restrictions: $name: expected success, got exit status $status:" >&2
+        cat "$work/stderr" >&2
+        failures=$((failures + 1))
+    elif [ "$expect" = refused ] && { [ $status -eq 0 ] || [ $status -ge 128 ] || ! grep -q "not allowed\|is refused" "$work/stderr"; }; then
+        echo "restrictions: $name: expected a refusal, got exit status $status:" >&2
+        cat "$work/stderr" >&2
+        failures=$((failures + 1))
+    else
+        echo "restrictions: $name: $expect"
+    fi
+}
+check_file() {  # check_file yes|no PATH WHAT
+    if [ "$1" = yes ] && [ ! -e "$2" ]; then
+        echo "restrictions: $3: $2 was not written" >&2
+        failures=$((failures + 1))
+    elif [ "$1" = no ] && [ -e "$2" ]; then
+        echo "restrictions: $3: $2 was written although refused" >&2
+        failures=$((failures + 1))
+    fi
+}
+
+# Writing outside the scene's, working and output folders.
+write_outside="#fopen F \"$work/outside/w.txt\" write #write (F, \"x\") #fclose F"
+run refused write_outside "$write_outside"
+check_file no "$work/outside/w.txt" write_outside
+run ok write_outside_allowed "$write_outside" "Write_Path=$work/outside"
+check_file yes "$work/outside/w.txt" write_outside_allowed
+
+# Writing through '..'.
+write_up='#fopen F "../up.txt" write #write (F, "x") #fclose F'
+run refused write_parent "$write_up"
+check_file no "$work/up.txt" write_parent
+run ok write_parent_allowed "$write_up" "Write_Path=$work"
+check_file yes "$work/up.txt" write_parent_allowed
+
+# Writing into the output folder and the scene's folder is fine.
+run ok write_output_folder "#fopen F \"$work/out/state.txt\" write #fclose F"
+run ok write_scene_folder '#fopen F "state.txt" write #write (F, "1") #fclose F #fopen G "state.txt" read #read (G, V)'
+
+# Reading /etc/passwd with #fopen, and an include outside.
+read_passwd='#fopen F "/etc/passwd" read #fclose F'
+run refused read_passwd "$read_passwd"
+run ok read_passwd_read_path "$read_passwd" "Read_Path=/etc"
+run ok read_passwd_no_restrictions "$read_passwd" "File_Restrictions=off"
+include_outside="#include \"$work/outside/outside.inc\" #if (FromOutside != 7) #error \"wrong value\" #end"
+run refused include_outside "$include_outside"
+run ok include_outside_allowed "$include_outside" "Read_Path=$work/outside"
+# A folder allowed for writing may be read back.
+run ok read_from_write_path "#fopen F \"$work/outside/data.txt\" read #read (F, V)" "Write_Path=$work/outside"
+# file_exists() does not reveal files the scene may not read.
+run ok file_exists_hidden '#if (file_exists("/etc/passwd")) #error "file_exists saw /etc/passwd" #end'
+
+# An image map outside the allowed folders (the image made by frameray).
+(cd "$work" && "$frameray" "$work/scenes/read_passwd_read_path.pov" +W4 +H4 -D -GA "+O$work/outside/img.png" Read_Path=/etc)
+image_map="plane { z, 2 pigment { image_map { png \"$work/outside/img.png\" } } }"
+run refused image_outside "$image_map"
+run ok image_outside_allowed "$image_map" "Read_Path=$work/outside"
+
+# Shell commands.
+run refused shell_command '' "Pre_Frame_Command=touch $work/ran"
+check_file no "$work/ran" shell_command
+run ok shell_command_allowed '' "Pre_Frame_Command=touch $work/ran" "Allow_Shell_Commands=on"
+check_file yes "$work/ran" shell_command_allowed
+
+# frameray.conf widens the restrictions too.
+mkdir -p "$work/config/frameray"
+printf '; the user policy\nRead_Path=/etc\nAllow_Shell_Commands=on\n' > "$work/config/frameray/frameray.conf"
+CONFIG="$work/config" run ok config_read_path "$read_passwd" "Post_Scene_Command=touch $work/ran2"
+check_file yes "$work/ran2" config_read_path
+
+if [ $failures -ne 0 ]; then
+    echo "restrictions: $failures check(s) failed" >&2
+    exit 1
+fi
+echo "restrictions: all checks passed"

@@ -1,0 +1,165 @@
+// Restrictions on scene files (sdl/file_access.h), spelling suggestions
+// (util/spelling.h) and the include/macro chain of scene errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "anim/hooks.h"
+#include "options/options.h"
+#include "parse_support.h"
+#include "sdl/file_access.h"
+#include "util/spelling.h"
+
+namespace fs = std::filesystem;
+using namespace frameray;
+
+namespace {
+
+struct TempTree {
+    fs::path root;
+    TempTree() {
+        root = fs::temp_directory_path() / ("frameray_access_" + std::to_string(::getpid()));
+        fs::remove_all(root);
+        fs::create_directories(root / "scene/sub");
+        fs::create_directories(root / "lib");
+        fs::create_directories(root / "out");
+        fs::create_directories(root / "other");
+    }
+    ~TempTree() { fs::remove_all(root); }
+};
+
+sdl::FileAccessPolicy policyFor(const TempTree& t) {
+    sdl::FileAccessFolders f;
+    f.working = t.root / "scene";
+    f.scene = t.root / "scene";
+    f.output = t.root / "out/";
+    f.library = {t.root / "lib"};
+    return sdl::FileAccessPolicy::restrictedTo(f);
+}
+
+}  // namespace
+
+TEST(FileAccess, DefaultPolicyAllowsEverything) {
+    const sdl::FileAccessPolicy p;
+    EXPECT_FALSE(p.restricted());
+    EXPECT_EQ(p.checkRead("/etc/passwd", ""), "");
+    EXPECT_EQ(p.checkWrite("/tmp/x", ""), "");
+}
+
+TEST(FileAccess, FoldersAndSubfoldersOnly) {
+    TempTree t;
+    const auto p = policyFor(t);
+    EXPECT_EQ(p.checkRead(t.root / "scene/sub/a.inc", ""), "");
+    EXPECT_EQ(p.checkRead(t.root / "lib/colors.inc", ""), "");
+    EXPECT_EQ(p.checkRead(t.root / "out/frame.png", ""), "");  // written folders are readable
+    EXPECT_NE(p.checkRead(t.root / "other/a.inc", ""), "");
+    EXPECT_NE(p.checkRead("/etc/passwd", ""), "");
+    EXPECT_EQ(p.checkWrite(t.root / "out/state.txt", ""), "");
+    EXPECT_EQ(p.checkWrite(t.root / "scene/sub/state.txt", ""), "");
+    EXPECT_NE(p.checkWrite(t.root / "lib/state.txt", ""), "");  // the library is read-only
+    // '..' is resolved before the check, and a name that only shares a
+    // prefix with a folder is not inside it.
+    EXPECT_NE(p.checkWrite(t.root / "scene/../other/x", ""), "");
+    EXPECT_NE(p.checkWrite(t.root / "scene_evil/x", ""), "");
+    const std::string refusal = p.checkWrite(t.root / "scene/../other/x", "../other/x");
+    EXPECT_NE(refusal.find("'../other/x' (" + (t.root / "other/x").string() + ")"),
+              std::string::npos)
+        << refusal;
+    EXPECT_NE(refusal.find("Write_Path=" + (t.root / "other").string()), std::string::npos)
+        << refusal;
+}
+
+TEST(FileAccess, LinksOutOfTheSceneFolderAreFollowed) {
+    TempTree t;
+    std::ofstream(t.root / "other/secret.txt") << "x";
+    fs::create_symlink(t.root / "other/secret.txt", t.root / "scene/link.txt");
+    fs::create_symlink(t.root / "other/secret.txt", t.root / "lib/font.ttf");
+    const auto p = policyFor(t);
+    // A link in the scene's folder cannot lead out of it; links in the
+    // library (installed fonts) are taken by name.
+    EXPECT_NE(p.checkRead(t.root / "scene/link.txt", ""), "");
+    EXPECT_EQ(p.checkRead(t.root / "lib/font.ttf", ""), "");
+}
+
+TEST(FileAccess, InterpreterRefusesAtTheDirective) {
+    TempTree t;
+    sdl::FrameContext ctx;
+    ctx.fileAccess = policyFor(t);
+    const std::string error =
+        test_support::parseErrorOf("#version 3.7;\n#fopen F \"/etc/passwd\" read\n", ctx);
+    EXPECT_NE(error.find("t.pov:2:2: error: reading '/etc/passwd' is not allowed"),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find("Read_Path=/etc"), std::string::npos) << error;
+    const std::string write = test_support::parseErrorOf(
+        "#fopen F \"" + (t.root / "other/x.txt").string() + "\" write\n", ctx);
+    EXPECT_NE(write.find("is not allowed"), std::string::npos) << write;
+    EXPECT_FALSE(fs::exists(t.root / "other/x.txt"));
+}
+
+TEST(Spelling, DistanceCountsSwapsAsOneEdit) {
+    EXPECT_EQ(util::spellingDistance("delcare", "declare"), 1u);
+    EXPECT_EQ(util::spellingDistance("spher", "sphere"), 1u);
+    EXPECT_EQ(util::spellingDistance("Offset", "offset"), 1u);
+    EXPECT_EQ(util::spellingDistance("Offset", "offset", true), 0u);
+    EXPECT_EQ(util::spellingDistance("", "abc"), 3u);
+}
+
+TEST(Spelling, SuggestsOnlyCloseWords) {
+    EXPECT_EQ(util::closestSpelling("pigmnt", {"finish", "pigment", "normal"}), "pigment");
+    EXPECT_EQ(util::closestSpelling("xyzzy", {"finish", "pigment"}), "");
+    EXPECT_EQ(util::closestSpelling("ab", {"abc"}), "");  // too short to guess
+}
+
+TEST(Diagnostics, UndeclaredIdentifierSuggestsADeclaredOne) {
+    const std::string error =
+        test_support::parseErrorOf("#declare Radius = 1;\nsphere { 0, Raduis }\n");
+    EXPECT_NE(error.find("undeclared identifier 'Raduis'; did you mean 'Radius'?"),
+              std::string::npos)
+        << error;
+}
+
+TEST(Diagnostics, MacroChainFollowsTheCaret) {
+    const std::string error = test_support::parseErrorOf(
+        "#macro Inner(X) (X + Missing) #end\n#macro Outer(Y) Inner(Y) #end\n#declare A = "
+        "Outer(1);\n");
+    EXPECT_NE(
+        error.find(
+            "^\nnote: in macro 'Inner' called from t.pov:2:17\nnote: in macro 'Outer' called from "
+            "t.pov:3:14"),
+        std::string::npos)
+        << error;
+}
+
+TEST(ShellCommands, RefusedUnlessAllowed) {
+    options::RenderOptions o;
+    EXPECT_EQ(anim::shellCommandRefusal(o), "");
+    o.commands[static_cast<int>(options::ShellHook::PostFrame)].command = "echo hi";
+    const std::string refusal = anim::shellCommandRefusal(o);
+    EXPECT_NE(refusal.find("Post_Frame_Command 'echo hi' is refused"), std::string::npos)
+        << refusal;
+    EXPECT_NE(refusal.find("Allow_Shell_Commands=on"), std::string::npos) << refusal;
+    o.allowShellCommands = true;
+    EXPECT_EQ(anim::shellCommandRefusal(o), "");
+}
+
+TEST(ShellCommands, NamedIniFilesCannotWidenTheRestrictions) {
+    const fs::path ini =
+        fs::temp_directory_path() / ("frameray_widen_" + std::to_string(::getpid()) + ".ini");
+    std::ofstream(ini) << "Width=9\nAllow_Shell_Commands=on\n";
+    options::RenderOptions o;
+    try {
+        options::applyArguments(o, {ini.string()});
+        ADD_FAILURE() << "Allow_Shell_Commands accepted from an INI file";
+    } catch (const options::OptionError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find(":2: option 'Allow_Shell_Commands' widens the restrictions"),
+            std::string::npos)
+            << e.what();
+    }
+    // The command line may.
+    options::applyArguments(o, {"Allow_Shell_Commands=on"});
+    EXPECT_TRUE(o.allowShellCommands);
+    fs::remove(ini);
+}
