@@ -608,14 +608,15 @@ void Interpreter::directiveElse(const Token& at) {
     if (blocks_.back().elseTaken)
         fail(at, fmt::format("#{} after the #else of the #if at line {}", at.text,
                              blocks_.back().loc.line));
-    // The taken branch ends here; skip every later branch (an #else after
-    // an #else is an error there too).
+    // The taken branch ends here; skip every later branch. povray 3.7
+    // skips a second #else here without complaint (measured), so this is a
+    // warning, not an error.
     bool elseSeen = at.kw == Keyword::kw_else;
     for (Keyword found; (found = skipBranch(true, false)) != Keyword::kw_end;) {
         if (elseSeen) {
             const Cursor& c = cursors_.back();
-            fail(c.file->tokens[c.pos - 1],
-                 fmt::format("#{} after the #else of the #if at line {}", keywordName(found),
+            warn(c.file->tokens[c.pos - 1],
+                 fmt::format("#{} after the #else of the #if at line {} is never used", keywordName(found),
                              blocks_.back().loc.line));
         }
         elseSeen = found == Keyword::kw_else;
