@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <set>
 #include <thread>
@@ -66,6 +67,7 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
         ctx.libraryPaths.push_back(kDefaultLibrary);
     ctx.declares = o.declares;
     ctx.version = o.version;
+    ctx.limits.parseIterations = static_cast<size_t>(o.maxParseIterations);
     if (seq.shardCount > 1)
         ctx.refuseFileWrites = fmt::format(
             "frames that pass state through files must be rendered in order by one process, so "
@@ -418,6 +420,10 @@ class Run {
             } catch (const sdl::SdlError& e) {
                 job.log->message(sdl::Stream::Fatal, e.what());
                 job.failed = true;
+            } catch (const std::bad_alloc&) {
+                job.log->message(sdl::Stream::Fatal,
+                                 fmt::format("error: frame {}: out of memory while parsing the scene", frame.number));
+                job.failed = true;
             } catch (const std::exception& e) {
                 job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
                 job.failed = true;
@@ -479,6 +485,11 @@ class Run {
             }
         } catch (const sdl::SdlError& e) {
             job.log->message(sdl::Stream::Fatal, e.what());
+            job.failed = true;
+        } catch (const std::bad_alloc&) {
+            job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: out of memory while building or "
+                                                             "rendering the frame",
+                                                             job.frame->number));
             job.failed = true;
         } catch (const std::exception& e) {
             job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", job.frame->number, e.what()));

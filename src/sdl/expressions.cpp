@@ -76,6 +76,20 @@ int colorComponent(Keyword k) {
     }
 }
 
+// A float as a whole number for counts, widths and indexes: truncated,
+// NaN as 0, and clamped to +-2^62 so the conversion is always defined
+// (callers then check their own range).
+int64_t wholeNumber(double v) {
+    if (std::isnan(v)) return 0;
+    constexpr double kBound = 4611686018427387904.0;  // 2^62
+    return static_cast<int64_t>(std::clamp(std::trunc(v), -kBound, kBound));
+}
+
+// The same, clamped to int's range.
+int intNumber(double v) {
+    return static_cast<int>(std::clamp<int64_t>(wholeNumber(v), -2147483647, 2147483647));
+}
+
 // In single precision, as povray computes it (its last digit shows).
 double srgbToLinear(double v) {
     const float x = static_cast<float>(v);
@@ -287,6 +301,7 @@ Value Interpreter::parseMultiplicative() {
 
 Value Interpreter::parseUnary() {
     const Token op = peek();
+    const NestingGuard nesting(*this, op);
     if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
         next();
         const Value v = parseUnary();
@@ -695,11 +710,15 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         }
         case Keyword::kw_concat: {
             std::string out;
-            for (const Value& v : parseArguments(1, 1024, fn)) out += str(v);
+            for (const Value& v : parseArguments(1, 1024, fn)) {
+                const std::string part = str(v);
+                checkStringLength(out.size() + part.size(), fn);
+                out += part;
+            }
             return out;
         }
         case Keyword::kw_chr:
-            return std::string(1, static_cast<char>(f(parseArguments(1, 1, fn)[0])));
+            return std::string(1, static_cast<char>(wholeNumber(f(parseArguments(1, 1, fn)[0]))));
         case Keyword::kw_asc: {
             const std::string s = str(parseArguments(1, 1, fn)[0]);
             return s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0]));
@@ -712,7 +731,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_substr: {
             auto a = parseArguments(3, 3, fn);
             const std::string s = str(a[0]);
-            const long start = static_cast<long>(f(a[1])), len = static_cast<long>(f(a[2]));
+            const int64_t start = wholeNumber(f(a[1])), len = wholeNumber(f(a[2]));
             if (start < 1 || len < 0 || static_cast<size_t>(start - 1 + len) > s.size())
                 fail(fn,
                      fmt::format("substr: characters {} to {} are outside the {}-character string",
@@ -726,8 +745,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             // means none, precision -1 means 6.
             auto a = parseArguments(3, 3, fn);
             const double v = f(a[0]);
-            const int width = static_cast<int>(f(a[1])), precision = static_cast<int>(f(a[2]));
+            const int width = intNumber(f(a[1])), precision = intNumber(f(a[2]));
             const int p = precision < 0 ? 6 : precision;
+            checkStringLength(static_cast<size_t>(std::abs(width)) + static_cast<size_t>(p), fn);
             if (width < 0) return fmt::format("{:0{}.{}f}", v, -width, p);
             return fmt::format("{:{}.{}f}", v, width, p);
         }
@@ -735,15 +755,18 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             auto a = parseArguments(5, 5, fn);
             // vstr(N, V, separator, width, precision); povray prints at
             // least 2 components, and a float V fills only the first.
-            const int dims = std::clamp(static_cast<int>(f(a[0])), 2, 5);
+            const int dims = std::clamp(intNumber(f(a[0])), 2, 5);
             VectorValue v;
             if (const double* single = std::get_if<double>(&a[1]))
                 v.v[0] = *single;
             else
                 v = toVector(a[1], fn, dims);
             const std::string sep = str(a[2]);
-            const int width = static_cast<int>(f(a[3])), precision = static_cast<int>(f(a[4]));
+            const int width = intNumber(f(a[3])), precision = intNumber(f(a[4]));
             const int p = precision < 0 ? 6 : precision;
+            checkStringLength((static_cast<size_t>(std::abs(width)) + static_cast<size_t>(p)) * 5 +
+                                  str(a[2]).size() * 4,
+                              fn);
             std::string out;
             for (int i = 0; i < dims; ++i) {
                 if (i) out += sep;
@@ -756,14 +779,14 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             // The stream's state starts at the seed truncated to a 32-bit
             // integer; seed() returns the stream's number.
             const double v = f(parseArguments(1, 1, fn)[0]);
-            randomStreams_.push_back(static_cast<uint32_t>(static_cast<int64_t>(v)));
+            randomStreams_.push_back(static_cast<uint32_t>(wholeNumber(v)));
             return double(randomStreams_.size() - 1);
         }
         case Keyword::kw_rand: {
             // povray 3.7's generator, read off its output: a 32-bit LCG
             // (multiplier 1812433253, increment 12345) scaled by 2^32-1.
             const double v = f(parseArguments(1, 1, fn)[0]);
-            const long stream = std::lround(v);
+            const int64_t stream = wholeNumber(std::round(v));
             if (stream < 0 || static_cast<size_t>(stream) >= randomStreams_.size())
                 fail(fn, fmt::format("rand: {} is not a random stream made by seed()", v));
             uint32_t& state = randomStreams_[static_cast<size_t>(stream)];
@@ -774,9 +797,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_bitwise_or:
         case Keyword::kw_bitwise_xor: {
             auto a = parseArguments(2, 256, fn);
-            auto r = static_cast<int64_t>(f(a[0]));
+            auto r = wholeNumber(f(a[0]));
             for (size_t i = 1; i < a.size(); ++i) {
-                const auto b = static_cast<int64_t>(f(a[i]));
+                const auto b = wholeNumber(f(a[i]));
                 r = fn.kw == Keyword::kw_bitwise_and  ? (r & b)
                     : fn.kw == Keyword::kw_bitwise_or ? (r | b)
                                                       : (r ^ b);
@@ -792,7 +815,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                 fail(fn,
                      fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
             if (fn.kw == Keyword::kw_dimensions) return double((*arr)->dims.size());
-            const long d = std::lround(f(a[1]));
+            const int64_t d = wholeNumber(std::round(f(a[1])));
             if (d < 1 || static_cast<size_t>(d) > (*arr)->dims.size()) return 0.0;
             return double((*arr)->dims[static_cast<size_t>(d - 1)]);
         }
