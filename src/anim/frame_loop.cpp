@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <set>
 #include <thread>
@@ -77,6 +78,7 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
         folders.extraWrite = o.writePaths;
         ctx.fileAccess = sdl::FileAccessPolicy::restrictedTo(folders);
     }
+    ctx.limits.parseIterations = static_cast<size_t>(o.maxParseIterations);
     if (seq.shardCount > 1)
         ctx.refuseFileWrites = fmt::format(
             "frames that pass state through files must be rendered in order by one process, so "
@@ -429,6 +431,10 @@ class Run {
             } catch (const sdl::SdlError& e) {
                 job.log->message(sdl::Stream::Fatal, e.what());
                 job.failed = true;
+            } catch (const std::bad_alloc&) {
+                job.log->message(sdl::Stream::Fatal,
+                                 fmt::format("error: frame {}: out of memory while parsing the scene", frame.number));
+                job.failed = true;
             } catch (const std::exception& e) {
                 job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
                 job.failed = true;
@@ -490,6 +496,11 @@ class Run {
             }
         } catch (const sdl::SdlError& e) {
             job.log->message(sdl::Stream::Fatal, e.what());
+            job.failed = true;
+        } catch (const std::bad_alloc&) {
+            job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: out of memory while building or "
+                                                             "rendering the frame",
+                                                             job.frame->number));
             job.failed = true;
         } catch (const std::exception& e) {
             job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", job.frame->number, e.what()));

@@ -66,6 +66,10 @@ int main(int argc, char** argv) {
         return 2;
     }
 
+    // Frames are parsed on worker threads too: give them the stack the
+    // interpreter's nesting limit assumes (sdl::FrameContext::Limits) with
+    // room to spare, as the main thread has (TBB's default is 4 MB).
+    const tbb::global_control stackSize(tbb::global_control::thread_stack_size, size_t(16) << 20);
     std::unique_ptr<tbb::global_control> threads;
     if (opts.workThreads > 0)
         threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,

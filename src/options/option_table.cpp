@@ -355,6 +355,15 @@ const OptionSpec kOptions[] = {
          return lines;
      },
      nullptr},
+    {"Max_Parse_Iterations", "", OptionType::Int, "100000000",
+     "Loop iterations (#while, #for) and macro calls one frame's parse may run before it stops with an error "
+     "(a loop that never ends); 0: no limit.",
+     [](RenderOptions& o, const OptionInput& in) {
+         const double v = std::trunc(toNonNegative(in.value));
+         if (v > 9e18) throw std::invalid_argument(fmt::format("'{}' is out of range", in.value));
+         o.maxParseIterations = static_cast<long long>(v);
+     },
+     FR_WRITE(num(static_cast<double>(o.maxParseIterations))), nullptr},
     {"Odd_Field", "UO", OptionType::Bool, "off", "Start field rendering on the odd field (accepted, as Field_Render).",
      [](RenderOptions& o, const OptionInput& in) { o.oddField = toBool(in); }, FR_WRITE(onOff(o.oddField)), nullptr},
     {"Output_Alpha", "UA", OptionType::Bool, "off", "Write an alpha channel (transparency mask).",

@@ -84,6 +84,9 @@ struct RenderOptions {
     double version = 3.7;
     std::vector<std::filesystem::path> libraryPaths;
     std::vector<std::pair<std::string, std::string>> declares;
+    // Loop iterations and macro calls one frame's parse may run (0: no
+    // limit); past it the frame ends with an error.
+    long long maxParseIterations = 100'000'000;
 
     // Run.
     bool continueTrace = false;

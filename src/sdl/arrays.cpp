@@ -1,18 +1,12 @@
 // Arrays of up to five dimensions: declaration with optional initializer,
 // indexing, element assignment and the seed's typing rules.
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
-
-namespace {
-// Refused before allocating: a scene asking for more is almost surely a
-// mistake, and povray itself hangs on such declarations.
-constexpr size_t kMaxArrayElements = size_t(1) << 26;
-}  // namespace
 
 Value Interpreter::parseArrayDeclaration() {
     const Token at = next();  // array
@@ -22,15 +16,20 @@ Value Interpreter::parseArrayDeclaration() {
         const Token open = next();
         const double size = parseFloat();
         expect(Sym::RBracket, "']'");
-        const int n = static_cast<int>(size);
-        if (n < 1) fail(open, fmt::format("array size {} must be at least 1", size));
+        // Refused before allocating (and before converting to an int): a
+        // scene asking for more is almost surely a mistake, and povray
+        // itself hangs on such declarations.
+        if (!(size >= 1)) fail(open, fmt::format("array size {} must be at least 1", size));
         if (array->dims.size() == 5) fail(open, "arrays have at most 5 dimensions");
+        if (size > double(frame_.limits.arrayElements) ||
+            total * static_cast<size_t>(size) > frame_.limits.arrayElements)
+            fail(open, fmt::format("array of more than {} elements", frame_.limits.arrayElements));
+        const int n = static_cast<int>(size);
         total *= static_cast<size_t>(n);
-        if (total > kMaxArrayElements)
-            fail(open, fmt::format("array of more than {} elements", kMaxArrayElements));
         array->dims.push_back(n);
     }
     if (array->dims.empty()) fail(at, "expected '[' with the array size after 'array'");
+    chargeArrayElements(total, at);
     array->elements.assign(total, Value{});
     if (peek().is(Sym::LBrace)) {
         size_t next = 0;
@@ -47,7 +46,9 @@ void Interpreter::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& n
     // POV-Ray allows a trailing comma before '}'.
     while (!peek().is(Sym::RBrace)) {
         if (count == size)
-            fail(peek(), fmt::format("too many elements in the array initializer (dimension {} has {})", dim + 1, size));
+            fail(peek(),
+                 fmt::format("too many elements in the array initializer (dimension {} has {})",
+                             dim + 1, size));
         if (dim + 1 < array.dims.size()) {
             parseArrayInitializer(array, dim + 1, nextIndex);
         } else {
@@ -67,14 +68,16 @@ size_t Interpreter::parseArrayIndex(const ArrayValue& array, const Token& at) {
     size_t index = 0;
     for (size_t d = 0; d < array.dims.size(); ++d) {
         if (!peek().is(Sym::LBracket))
-            fail(at, fmt::format("this array has {} dimensions; {} index{} given", array.dims.size(), d,
-                                 d == 1 ? "" : "es"));
+            fail(at, fmt::format("this array has {} dimensions; {} index{} given",
+                                 array.dims.size(), d, d == 1 ? "" : "es"));
         const Token open = next();
         const double i = parseFloat();
         expect(Sym::RBracket, "']'");
+        // Checked as a float first: a huge index has no integer value.
+        if (!(i > -1 && i < array.dims[d]))
+            fail(open, fmt::format("array index {} out of range 0..{}", std::trunc(i) + 0.0,
+                                   array.dims[d] - 1));
         const long n = static_cast<long>(i);
-        if (n < 0 || n >= array.dims[d])
-            fail(open, fmt::format("array index {} out of range 0..{}", n, array.dims[d] - 1));
         index = index * static_cast<size_t>(array.dims[d]) + static_cast<size_t>(n);
     }
     return index;
@@ -88,7 +91,10 @@ void Interpreter::setArrayElement(ArrayValue& array, size_t index, Value value, 
                                  valueKindName(value)));
         break;
     }
-    if (auto* nested = std::get_if<ArrayPtr>(&value)) value = std::make_shared<ArrayValue>(**nested);
+    if (auto* nested = std::get_if<ArrayPtr>(&value)) {
+        chargeArrayElements((*nested)->elements.size(), at);
+        value = std::make_shared<ArrayValue>(**nested);
+    }
     array.elements[index] = std::move(value);
 }
 

@@ -76,6 +76,20 @@ int colorComponent(Keyword k) {
     }
 }
 
+// A float as a whole number for counts, widths and indexes: truncated,
+// NaN as 0, and clamped to +-2^62 so the conversion is always defined
+// (callers then check their own range).
+int64_t wholeNumber(double v) {
+    if (std::isnan(v)) return 0;
+    constexpr double kBound = 4611686018427387904.0;  // 2^62
+    return static_cast<int64_t>(std::clamp(std::trunc(v), -kBound, kBound));
+}
+
+// The same, clamped to int's range.
+int intNumber(double v) {
+    return static_cast<int>(std::clamp<int64_t>(wholeNumber(v), -2147483647, 2147483647));
+}
+
 // In single precision, as povray computes it (its last digit shows).
 double srgbToLinear(double v) {
     const float x = static_cast<float>(v);
@@ -181,10 +195,21 @@ Value Interpreter::parseTernary() {
     return truth ? a : b;
 }
 
+// The token after a complete operand, to see whether an operator follows.
+// A directive there ends the expression without running it here: the
+// statement loop runs it. Otherwise `#declare I = I + 1` (no ';') right
+// before a loop's #end would run the loop's next iteration inside this
+// expression, nesting one level deeper per iteration.
+const Token& Interpreter::peekAfterOperand() {
+    const Token& t = rawPeek();
+    if (t.is(Sym::Hash)) return t;
+    return peek();
+}
+
 Value Interpreter::parseLogical() {
     Value left = parseRelational();
     for (;;) {
-        const Token op = peek();
+        const Token op = peekAfterOperand();
         if (!op.is(Sym::Amp) && !op.is(Sym::Bar)) return left;
         next();
         const Value right = parseRelational();
@@ -196,7 +221,7 @@ Value Interpreter::parseLogical() {
 Value Interpreter::parseRelational() {
     Value left = parseAdditive();
     for (;;) {
-        const Token op = peek();
+        const Token op = peekAfterOperand();
         const bool relational = op.is(Sym::Less) || op.is(Sym::LessEq) || op.is(Sym::Equal) ||
                                 op.is(Sym::NotEq) || op.is(Sym::GreaterEq) || op.is(Sym::Greater);
         if (!relational) return left;
@@ -254,7 +279,7 @@ Value Interpreter::parseRelational() {
 Value Interpreter::parseAdditive() {
     Value left = parseMultiplicative();
     for (;;) {
-        const Token op = peek();
+        const Token op = peekAfterOperand();
         if (!op.is(Sym::Plus) && !op.is(Sym::Minus)) return left;
         next();
         const Value right = parseMultiplicative();
@@ -269,7 +294,7 @@ Value Interpreter::parseAdditive() {
 Value Interpreter::parseMultiplicative() {
     Value left = parseUnary();
     for (;;) {
-        const Token op = peek();
+        const Token op = peekAfterOperand();
         if (!op.is(Sym::Star) && !op.is(Sym::Slash)) return left;
         next();
         const Value right = parseUnary();
@@ -287,6 +312,7 @@ Value Interpreter::parseMultiplicative() {
 
 Value Interpreter::parseUnary() {
     const Token op = peek();
+    const NestingGuard nesting(*this, op);
     if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
         next();
         const Value v = parseUnary();
@@ -301,7 +327,7 @@ Value Interpreter::parseUnary() {
 
 Value Interpreter::parsePostfix() {
     Value v = parsePrimary();
-    while (peek().is(Sym::Dot)) {
+    while (peekAfterOperand().is(Sym::Dot)) {
         const Token dot = next();
         const Token item = next();
         if (!std::holds_alternative<VectorValue>(v))
@@ -435,7 +461,7 @@ Value Interpreter::identifierValue(const Token& name, const Value* known) {
     }
     Value out = *v;
     // Arrays of arrays index on: Nested[0][1].
-    while (std::holds_alternative<ArrayPtr>(out) && peek().is(Sym::LBracket)) {
+    while (std::holds_alternative<ArrayPtr>(out) && peekAfterOperand().is(Sym::LBracket)) {
         const ArrayPtr array = std::get<ArrayPtr>(out);  // keep alive while indexing
         const size_t index = parseArrayIndex(*array, name);
         out = array->elements[index];
@@ -443,11 +469,13 @@ Value Interpreter::identifierValue(const Token& name, const Value* known) {
             fail(name,
                  fmt::format("element {} of array '{}' used before it was set", index, name.text));
     }
-    if (const auto* spline = std::get_if<SplinePtr>(&out); spline && peek().is(Sym::LParen)) {
+    if (const auto* spline = std::get_if<SplinePtr>(&out);
+        spline && peekAfterOperand().is(Sym::LParen)) {
         const SplinePtr keep = *spline;
         return callSpline(*keep, name);
     }
-    if (const auto* function = std::get_if<FunctionPtr>(&out); function && peek().is(Sym::LParen)) {
+    if (const auto* function = std::get_if<FunctionPtr>(&out);
+        function && peekAfterOperand().is(Sym::LParen)) {
         const FunctionPtr keep = *function;
         return callFunction(*keep, name);
     }
@@ -695,11 +723,15 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         }
         case Keyword::kw_concat: {
             std::string out;
-            for (const Value& v : parseArguments(1, 1024, fn)) out += str(v);
+            for (const Value& v : parseArguments(1, 1024, fn)) {
+                const std::string part = str(v);
+                checkStringLength(out.size() + part.size(), fn);
+                out += part;
+            }
             return out;
         }
         case Keyword::kw_chr:
-            return std::string(1, static_cast<char>(f(parseArguments(1, 1, fn)[0])));
+            return std::string(1, static_cast<char>(wholeNumber(f(parseArguments(1, 1, fn)[0]))));
         case Keyword::kw_asc: {
             const std::string s = str(parseArguments(1, 1, fn)[0]);
             return s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0]));
@@ -712,7 +744,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_substr: {
             auto a = parseArguments(3, 3, fn);
             const std::string s = str(a[0]);
-            const long start = static_cast<long>(f(a[1])), len = static_cast<long>(f(a[2]));
+            const int64_t start = wholeNumber(f(a[1])), len = wholeNumber(f(a[2]));
             if (start < 1 || len < 0 || static_cast<size_t>(start - 1 + len) > s.size())
                 fail(fn,
                      fmt::format("substr: characters {} to {} are outside the {}-character string",
@@ -726,8 +758,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             // means none, precision -1 means 6.
             auto a = parseArguments(3, 3, fn);
             const double v = f(a[0]);
-            const int width = static_cast<int>(f(a[1])), precision = static_cast<int>(f(a[2]));
+            const int width = intNumber(f(a[1])), precision = intNumber(f(a[2]));
             const int p = precision < 0 ? 6 : precision;
+            checkStringLength(static_cast<size_t>(std::abs(width)) + static_cast<size_t>(p), fn);
             if (width < 0) return fmt::format("{:0{}.{}f}", v, -width, p);
             return fmt::format("{:{}.{}f}", v, width, p);
         }
@@ -735,15 +768,18 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             auto a = parseArguments(5, 5, fn);
             // vstr(N, V, separator, width, precision); povray prints at
             // least 2 components, and a float V fills only the first.
-            const int dims = std::clamp(static_cast<int>(f(a[0])), 2, 5);
+            const int dims = std::clamp(intNumber(f(a[0])), 2, 5);
             VectorValue v;
             if (const double* single = std::get_if<double>(&a[1]))
                 v.v[0] = *single;
             else
                 v = toVector(a[1], fn, dims);
             const std::string sep = str(a[2]);
-            const int width = static_cast<int>(f(a[3])), precision = static_cast<int>(f(a[4]));
+            const int width = intNumber(f(a[3])), precision = intNumber(f(a[4]));
             const int p = precision < 0 ? 6 : precision;
+            checkStringLength((static_cast<size_t>(std::abs(width)) + static_cast<size_t>(p)) * 5 +
+                                  str(a[2]).size() * 4,
+                              fn);
             std::string out;
             for (int i = 0; i < dims; ++i) {
                 if (i) out += sep;
@@ -756,14 +792,14 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             // The stream's state starts at the seed truncated to a 32-bit
             // integer; seed() returns the stream's number.
             const double v = f(parseArguments(1, 1, fn)[0]);
-            randomStreams_.push_back(static_cast<uint32_t>(static_cast<int64_t>(v)));
+            randomStreams_.push_back(static_cast<uint32_t>(wholeNumber(v)));
             return double(randomStreams_.size() - 1);
         }
         case Keyword::kw_rand: {
             // povray 3.7's generator, read off its output: a 32-bit LCG
             // (multiplier 1812433253, increment 12345) scaled by 2^32-1.
             const double v = f(parseArguments(1, 1, fn)[0]);
-            const long stream = std::lround(v);
+            const int64_t stream = wholeNumber(std::round(v));
             if (stream < 0 || static_cast<size_t>(stream) >= randomStreams_.size())
                 fail(fn, fmt::format("rand: {} is not a random stream made by seed()", v));
             uint32_t& state = randomStreams_[static_cast<size_t>(stream)];
@@ -774,9 +810,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_bitwise_or:
         case Keyword::kw_bitwise_xor: {
             auto a = parseArguments(2, 256, fn);
-            auto r = static_cast<int64_t>(f(a[0]));
+            auto r = wholeNumber(f(a[0]));
             for (size_t i = 1; i < a.size(); ++i) {
-                const auto b = static_cast<int64_t>(f(a[i]));
+                const auto b = wholeNumber(f(a[i]));
                 r = fn.kw == Keyword::kw_bitwise_and  ? (r & b)
                     : fn.kw == Keyword::kw_bitwise_or ? (r | b)
                                                       : (r ^ b);
@@ -792,7 +828,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                 fail(fn,
                      fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
             if (fn.kw == Keyword::kw_dimensions) return double((*arr)->dims.size());
-            const long d = std::lround(f(a[1]));
+            const int64_t d = wholeNumber(std::round(f(a[1])));
             if (d < 1 || static_cast<size_t>(d) > (*arr)->dims.size()) return 0.0;
             return double((*arr)->dims[static_cast<size_t>(d - 1)]);
         }

@@ -32,6 +32,25 @@ struct FrameContext {
     // The files the scene may read and write (unrestricted by default;
     // the frame loop restricts it unless File_Restrictions=off).
     FileAccessPolicy fileAccess;
+
+    // Resource limits: a scene that goes past one gets an error for its
+    // frame instead of exhausting the stack, the memory or the time.
+    struct Limits {
+        // Loop iterations (#while, #for) and macro calls in one frame
+        // (Max_Parse_Iterations; 0: no limit).
+        size_t parseIterations = 100'000'000;
+        // Nested expressions, objects, textures and directives. Each level
+        // takes at most a few kilobytes of stack (measured: see
+        // tests/fuzz/README.md), so this fits a 4 MB worker-thread stack.
+        int nesting = 400;
+        int macroCalls = 200;    // macro calls in progress at once
+        int includeFiles = 100;  // #include files open at once
+        // Array elements (about 56 bytes each): one array (1 GB), and all
+        // arrays made or copied in the frame (4 GB).
+        size_t arrayElements = size_t(1) << 24;
+        size_t totalArrayElements = size_t(1) << 26;
+        size_t stringLength = size_t(1) << 24;  // bytes in one string value
+    } limits;
 };
 
 // The text streams of a frame (debug, warning...), routed by the frame
@@ -39,7 +58,7 @@ struct FrameContext {
 enum class Stream { Debug, Warning, Render, Statistics, Fatal };
 
 class MessageSink {
-public:
+  public:
     virtual ~MessageSink() = default;
     virtual void message(Stream stream, const std::string& text) = 0;
 };

@@ -130,6 +130,7 @@ class FunctionCompiler {
 
     void unary() {
         const Token op = in_.peek();
+        const Interpreter::NestingGuard nesting(in_, op);
         if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
             in_.next();
             unary();

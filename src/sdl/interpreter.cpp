@@ -2,6 +2,7 @@
 #include "sdl/interpreter.h"
 
 #include <fmt/format.h>
+#include <pthread.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,23 @@ namespace frameray::sdl {
 namespace fs = std::filesystem;
 
 namespace {
-constexpr int kMaxIncludeDepth = 100;  // POV-Ray's own nesting limit is of this order
-constexpr double kEpsilon = 1e-10;     // the language's equality/truth epsilon
+constexpr double kEpsilon = 1e-10;  // the language's equality/truth epsilon
+// Stack kept free below the deepest NestingGuard: enough for the deepest
+// call chain between two guards (sanitizer builds have much larger frames).
+constexpr size_t kStackReserve = size_t(512) << 10;
+
+// The lowest address of the calling thread's stack plus the reserve, or
+// null when the thread cannot tell.
+const char* stackFloor() {
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) != 0) return nullptr;
+    void* base = nullptr;
+    size_t size = 0;
+    const bool known = pthread_attr_getstack(&attr, &base, &size) == 0;
+    pthread_attr_destroy(&attr);
+    if (!known || size < 2 * kStackReserve) return nullptr;
+    return static_cast<const char*>(base) + kStackReserve;
+}
 }  // namespace
 
 const char* valueKindName(const Value& v) {
@@ -64,6 +80,7 @@ scene::Scene Interpreter::parseText(const std::string& name, const std::string& 
 
 scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
     scopes_.assign(1, Scope{});
+    stackFloor_ = stackFloor();
     // Declare=Name=Value options become global identifiers before parsing.
     for (const auto& [name, value] : frame_.declares) {
         char* end = nullptr;
@@ -157,6 +174,45 @@ void Interpreter::declare(const std::string& name, Value value, bool local, size
         return;
     }
     scopes_.front()[name] = std::move(value);
+}
+
+// --- resource limits -----------------------------------------------------------
+
+void Interpreter::enterNesting(const Token& at) {
+    ++nesting_;
+    if (nesting_ > frame_.limits.nesting)
+        fail(at, fmt::format("nested too deeply: more than {} levels of expressions, objects, "
+                             "textures or directives",
+                             frame_.limits.nesting));
+    // The depth limit is sized for the usual stack; a smaller one (or a
+    // heavier path between guards) still stops cleanly here.
+    const char probe = 0;
+    if (stackFloor_ && &probe < stackFloor_)
+        fail(at, fmt::format("nested too deeply: the parser's stack is exhausted after {} levels",
+                             nesting_));
+}
+
+void Interpreter::countIteration(const SourceLoc& where) {
+    const size_t limit = frame_.limits.parseIterations;
+    if (limit != 0 && ++iterations_ > limit)
+        throw SdlError(where, fmt::format("parse stopped after {} loop iterations and macro calls "
+                                          "(Max_Parse_Iterations); is this loop making progress?",
+                                          limit));
+}
+
+void Interpreter::chargeArrayElements(size_t count, const Token& at) {
+    if (count > frame_.limits.arrayElements)
+        fail(at, fmt::format("array of more than {} elements", frame_.limits.arrayElements));
+    arrayElementsMade_ += count;
+    if (arrayElementsMade_ > frame_.limits.totalArrayElements)
+        fail(at, fmt::format("arrays made in this frame hold more than {} elements in all",
+                             frame_.limits.totalArrayElements));
+}
+
+void Interpreter::checkStringLength(size_t length, const Token& at) {
+    if (length > frame_.limits.stringLength)
+        fail(at, fmt::format("string of {} bytes is longer than the limit of {}", length,
+                             frame_.limits.stringLength));
 }
 
 // --- token stream ------------------------------------------------------------
@@ -279,6 +335,7 @@ std::string Interpreter::expectIdentifier() {
 void Interpreter::runDirective() {
     const size_t hashPos = cursors_.back().pos;
     const Token hash = rawPeek();
+    const NestingGuard nesting(*this, hash);
     ++cursors_.back().pos;
     const Token word = rawPeek();
     if (word.kind != TokenKind::Word || word.kw == Keyword::None)
@@ -432,7 +489,7 @@ void Interpreter::directiveDeclare(bool local) {
         const Token valueStart = peek();
         Value value = parseRValue();
         setArrayElement(*array, index, std::move(value), valueStart);
-        accept(Sym::Semicolon);
+        acceptSemicolonBeforeDirective();
         return;
     }
     expect(Sym::Equal, "'='");
@@ -452,7 +509,8 @@ void Interpreter::directiveDeclare(bool local) {
     // next line's directive, which may use this identifier.
     declare(name, std::move(value), local, scopeCount);
     // povray 3.7: an error from language version 3.5 on, a warning before.
-    if (needsSemicolon && !peek().is(Sym::Semicolon)) {
+    // rawPeek: a directive after the value must not run inside this one.
+    if (needsSemicolon && !rawPeek().is(Sym::Semicolon)) {
         const std::string message = fmt::format(
             "missing ';' after the declaration of '{}': float, vector and color declarations need "
             "one",
@@ -460,11 +518,24 @@ void Interpreter::directiveDeclare(bool local) {
         if (version_ >= 3.5 - 1e-9) fail(nameToken, message + " (since #version 3.5)");
         warn(nameToken, message);
     }
-    accept(Sym::Semicolon);
+    acceptSemicolonBeforeDirective();
+}
+
+void Interpreter::acceptSemicolonBeforeDirective() {
+    // A directive right after the value is left for the statement loop
+    // instead of running inside this one: a list of declarations must not
+    // nest as deep as it is long.
+    const size_t index = cursors_.size() - 1;
+    const bool was = cursors_[index].inDirective;
+    cursors_[index].inDirective = true;
+    const bool semicolon = peek().is(Sym::Semicolon);
+    if (index < cursors_.size()) cursors_[index].inDirective = was;
+    if (semicolon) next();
 }
 
 Value Interpreter::parseRValue() {
     const Token start = peek();
+    const NestingGuard nesting(*this, start);
     if (isObjectStart(start)) return parseObject();
     switch (start.kw) {
         case Keyword::kw_pigment:
@@ -507,7 +578,10 @@ Value Interpreter::parseRValue() {
     if (startsStringExpression(start)) return parseString();
     Value v = parseExpression();
     // Arrays are values: a declaration from another array copies it.
-    if (auto* arr = std::get_if<ArrayPtr>(&v)) return std::make_shared<ArrayValue>(**arr);
+    if (auto* arr = std::get_if<ArrayPtr>(&v)) {
+        chargeArrayElements((*arr)->elements.size(), start);
+        return std::make_shared<ArrayValue>(**arr);
+    }
     return v;
 }
 
@@ -530,8 +604,9 @@ fs::path Interpreter::findIncludeFile(const std::string& name) const {
 
 void Interpreter::directiveInclude(const Token& at) {
     const std::string name = parseString();
-    if (includeDepth_ >= kMaxIncludeDepth)
-        fail(at, fmt::format("#include nested more than {} levels deep", kMaxIncludeDepth));
+    if (includeDepth_ >= frame_.limits.includeFiles)
+        fail(at,
+             fmt::format("#include nested more than {} levels deep", frame_.limits.includeFiles));
     const fs::path path = findIncludeFile(name);
     if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
     checkReadable(path, name, at);
@@ -616,8 +691,8 @@ void Interpreter::directiveElse(const Token& at) {
         if (elseSeen) {
             const Cursor& c = cursors_.back();
             warn(c.file->tokens[c.pos - 1],
-                 fmt::format("#{} after the #else of the #if at line {} is never used", keywordName(found),
-                             blocks_.back().loc.line));
+                 fmt::format("#{} after the #else of the #if at line {} is never used",
+                             keywordName(found), blocks_.back().loc.line));
         }
         elseSeen = found == Keyword::kw_else;
     }
@@ -634,6 +709,7 @@ void Interpreter::directiveEnd(const Token& at) {
             blocks_.pop_back();
             break;
         case BlockKind::While: {
+            countIteration(b.loc);
             const size_t restart = b.restartPos;
             blocks_.pop_back();
             cursors_.back().pos = restart;  // re-runs the #while and its test
@@ -643,13 +719,20 @@ void Interpreter::directiveEnd(const Token& at) {
             Value* var = find(b.loopVar);
             if (!var || !std::holds_alternative<double>(*var))
                 fail(at, fmt::format("#for loop variable '{}' is no longer a float", b.loopVar));
-            const double value = std::get<double>(*var) + b.loopStep;
+            const double before = std::get<double>(*var);
+            const double value = before + b.loopStep;
+            // A step too small for the variable's magnitude (or a NaN)
+            // would repeat the same iteration forever.
+            if (!(value != before))
+                fail(at, fmt::format("#for step {} no longer changes the loop variable '{}' ({})",
+                                     b.loopStep, b.loopVar, before));
             *var = value;
             const bool more =
                 b.loopStep > 0 ? value <= b.loopEnd + kEpsilon : value >= b.loopEnd - kEpsilon;
-            if (more)
+            if (more) {
+                countIteration(b.loc);
                 cursors_.back().pos = b.restartPos;
-            else
+            } else
                 blocks_.pop_back();
             break;
         }
@@ -766,7 +849,13 @@ void Interpreter::directiveMacro(const Token& at) {
 }
 
 void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
-    if (cursors_.size() > 200) fail(nameToken, "macro calls nested too deeply (more than 200)");
+    // Cursors are the scene file, the open include files and the macro
+    // calls in progress.
+    const size_t macroCalls = cursors_.size() - 1 - static_cast<size_t>(includeDepth_);
+    if (macroCalls >= static_cast<size_t>(frame_.limits.macroCalls))
+        fail(nameToken,
+             fmt::format("macro calls nested too deeply (more than {})", frame_.limits.macroCalls));
+    countIteration(loc(nameToken));
     Scope args;
     expectAfter(Sym::LParen, "'('", macro.name);
     size_t count = 0;

@@ -104,6 +104,7 @@ class Interpreter {
     scene::Scene run(std::shared_ptr<const TokenizedFile> file);
 
     const Token& rawPeek();  // current token, no directive processing
+    const Token& peekAfterOperand();
     // Current token after directives/macros; the fast path answers repeated
     // peeks at the same place.
     const Token& peek() {
@@ -140,7 +141,8 @@ class Interpreter {
 
     void runDirective();  // at '#'
     void directiveDeclare(bool local);
-    Value parseRValue();  // anything #declare or a macro argument accepts
+    Value parseRValue();                    // anything #declare or a macro argument accepts
+    void acceptSemicolonBeforeDirective();  // the optional ';' ending a declaration
     void directiveInclude(const Token& at);
     void directiveIf(const Token& at, bool (Interpreter::*condition)());
     void directiveElse(const Token& at);
@@ -165,6 +167,25 @@ class Interpreter {
     // (file_io.cpp); `name` is how the scene named it.
     void checkReadable(const std::filesystem::path& path, const std::string& name, const Token& at);
     void checkWritable(const std::filesystem::path& path, const std::string& name, const Token& at);
+
+    // --- resource limits (interpreter.cpp; FrameContext::Limits) ---
+    // Held while one nesting level (expression, object, texture, directive)
+    // is parsed: past the limit, or close to the end of the thread's stack,
+    // it throws an SdlError instead of letting the recursion overflow.
+    class NestingGuard {
+      public:
+        NestingGuard(Interpreter& in, const Token& at) : in_(in) { in_.enterNesting(at); }
+        ~NestingGuard() { --in_.nesting_; }
+        NestingGuard(const NestingGuard&) = delete;
+        NestingGuard& operator=(const NestingGuard&) = delete;
+
+      private:
+        Interpreter& in_;
+    };
+    void enterNesting(const Token& at);
+    void countIteration(const SourceLoc& where);  // a loop iteration or macro call
+    void chargeArrayElements(size_t count, const Token& at);
+    void checkStringLength(size_t length, const Token& at);
 
     // --- identifiers ---
     Value* find(std::string_view name);
@@ -357,6 +378,10 @@ class Interpreter {
     bool defaultTextureSet_ = false;
     bool declarationBeforeVersion_ = false;
     int includeDepth_ = 0;
+    int nesting_ = 0;                   // NestingGuard levels held
+    size_t iterations_ = 0;             // loop iterations and macro calls so far
+    size_t arrayElementsMade_ = 0;      // elements of every array made so far
+    const char* stackFloor_ = nullptr;  // lowest usable stack address (null: unknown)
     // Random number streams made by seed(); the float seed() returns is
     // the stream's index, as in POV-Ray.
     std::vector<uint32_t> randomStreams_;

@@ -70,6 +70,7 @@ scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, boo
 
 void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
     const Token t = peek();
+    const NestingGuard nesting(*this, t);
     if (t.isIdentifier()) {
         next();
         const Value v = identifierValue(t);

@@ -114,6 +114,7 @@ PigmentPtr Interpreter::parsePigment() {
 
 void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
     const Token t = peek();
+    const NestingGuard nesting(*this, t);
     if (t.isIdentifier()) {
         const Value* v = lookup(std::string(t.text));
         if (v && std::holds_alternative<PigmentPtr>(*v)) {
@@ -361,6 +362,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Norma
 
 std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::Normal* base,
                                                                   Sym closing) {
+    const NestingGuard nesting(*this, peek());
     scene::Normal normal = base ? *base : scene::Normal{};
     bool havePattern = base != nullptr;
     // A declared normal to start from.

@@ -131,6 +131,7 @@ bool Interpreter::parseStatement() {
 // --- objects -----------------------------------------------------------------
 
 ObjectPtr Interpreter::parseObject() {
+    const NestingGuard nesting(*this, peek());
     const Token kind = next();
     const ObjectKeyword* ok = findObjectKeyword(kind.kw);
     if (!ok || !ok->supported) unsupported(kind, std::string(kind.text));

@@ -8,6 +8,8 @@
 namespace frameray {
 
 namespace {
+// Steps one sum() or prod() loop may take (see LoopInit).
+constexpr double kMaxLoopSteps = 1e7;
 // Unlike parse-time expressions, function comparisons are exact (povray 3.7).
 bool truth(double v) {
     return v != 0.0;
@@ -128,6 +130,16 @@ double CompiledFunction::eval(const double* args) const {
             case FnOp::LoopInit:
                 slots[in.a + 1] = stack[--sp];
                 slots[in.a] = stack[--sp];
+                // The loop counts up by 1 until it passes the end: bounds
+                // that are not finite, or so large that adding 1 changes
+                // nothing, would never end it; nor is a loop of billions of
+                // steps meant.
+                if (!(slots[in.a + 1] < slots[in.a]) &&
+                    !(std::isfinite(slots[in.a]) && std::fabs(slots[in.a]) < 4.5e15 &&
+                      slots[in.a + 1] - slots[in.a] <= kMaxLoopSteps))
+                    throw std::runtime_error("sum/prod loop from " + std::to_string(slots[in.a]) + " to " +
+                                             std::to_string(slots[in.a + 1]) + ": more than " +
+                                             std::to_string(static_cast<long>(kMaxLoopSteps)) + " steps");
                 stack[sp++] = in.b;
                 break;
             case FnOp::LoopTest:

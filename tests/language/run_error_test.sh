@@ -6,7 +6,7 @@
 #
 # frameray runs in the scene's folder with the scene's bare file name (and
 # the switches of the other language tests, +O pointing into a scratch
-# folder), so the paths in its messages do
+# folder, and the options in NAME.options beside the scene, if any), so the paths in its messages do
 # not depend on where the repository is; any remaining mention of that folder
 # is removed as well. The test passes when frameray exits with a non-zero
 # status below 128 (an error, not a crash or a signal) and the first three
@@ -37,8 +37,10 @@ trap 'rm -f "$stderr_file"' EXIT
 # not into the sources.
 scratch="$(mktemp -d)"
 trap 'rm -f "$stderr_file"; rm -rf "$scratch"' EXIT
-echo "+ cd $scene_dir && $frameray $scene -F -D +W8 +H8 +O$scratch/$name.png"
-(cd "$scene_dir" && "$frameray" "$scene" -F -D +W8 +H8 "+O$scratch/$name.png" >"$scratch/stdout" 2>"$stderr_file")
+extra=()
+if [ -f "$scene_dir/$name.options" ]; then read -r -a extra < "$scene_dir/$name.options"; fi
+echo "+ cd $scene_dir && $frameray $scene -F -D +W8 +H8 +O$scratch/$name.png ${extra[*]}"
+(cd "$scene_dir" && "$frameray" "$scene" -F -D +W8 +H8 "+O$scratch/$name.png" "${extra[@]}" >"$scratch/stdout" 2>"$stderr_file")
 status=$?
 
 echo "--- frameray's standard error (exit status $status):"

@@ -1,0 +1,65 @@
+// POV-Ray 3.7 Scene File " ... .pov"
+// author:  ...
+// date:    ...
+//--------------------------------------------------------------------------
+#version 3.7;
+global_settings{ assumed_gamma 1.0 }
+#default{ finish{ ambient 0.1 diffuse 0.9 }} 
+//--------------------------------------------------------------------------
+#include "colors.inc"
+#include "textures.inc"
+#include "glass.inc"
+#include "metals.inc"
+#include "golds.inc"
+#include "stones.inc"
+#include "woods.inc"
+#include "shapes.inc"
+#include "shapes2.inc"
+#include "functions.inc"
+#include "math.inc"
+#include "transforms.inc"
+//--------------------------------------------------------------------------
+// camera ------------------------------------------------------------------
+#declare Camera_0 = camera {/*ultra_wide_angle*/ angle 75      // front view
+                            location  <0.0 , 1.0 ,-3.0>
+                            right     x*image_width/image_height
+                            look_at   <0.0 , 1.0 , 0.0>}
+#declare Camera_1 = camera {/*ultra_wide_angle*/ angle 90   // diagonal view
+                            location  <2.0 , 2.5 ,-3.0>
+                            right     x*image_width/image_height
+                            look_at   <0.0 , 1.0 , 0.0>}
+#declare Camera_2 = camera {/*ultra_wide_angle*/ angle 90  //right side view
+                            location  <3.0 , 1.0 , 0.0>
+                            right     x*image_width/image_height
+                            look_at   <0.0 , 1.0 , 0.0>}
+#declare Camera_3 = camera {/*ultra_wide_angle*/ angle 90        // top view
+                            location  <0.0 , 3.0 ,-0.001>
+                            right     x*image_width/image_height
+                            look_at   <0.0 , 1.0 , 0.0>}
+camera{Camera_0}
+// sun ---------------------------------------------------------------------
+light_source{< -3000, 3000, -3000> color White}
+// sky ---------------------------------------------------------------------
+
+#include "stars.inc"
+
+sphere { <0,0,0>, 1
+         texture { Starfield1 //  1, 2, ... , 6
+                 } // end of texture
+
+         scale 10000
+       } //end of sphere
+
+// ground ------------------------------------------------------------------
+/*
+plane{ <0,1,0>, 0 
+       texture{ pigment{ color rgb <0.7,0.5,0.3>}
+              //normal { bumps 0.75 scale 0.025}
+                finish { phong 0.1}
+              } // end of texture
+     } // end of plane
+*/
+//--------------------------------------------------------------------------
+//---------------------------- objects in scene ----------------------------
+//--------------------------------------------------------------------------
+

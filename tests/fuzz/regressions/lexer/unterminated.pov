@@ -1,0 +1,2 @@
+/* unterminated /* nested 
+"unterminated string

@@ -1,0 +1,2 @@
+#macro M(A) M(M(A)) #end
+M(1)
