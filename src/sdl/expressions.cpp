@@ -196,13 +196,18 @@ Value Interpreter::parseTernary() {
 }
 
 // The token after a complete operand, to see whether an operator follows.
-// A directive there ends the expression without running it here: the
-// statement loop runs it. Otherwise `#declare I = I + 1` (no ';') right
-// before a loop's #end would run the loop's next iteration inside this
-// expression, nesting one level deeper per iteration.
+// At the top level of a #declare's value (no parentheses, brackets or
+// argument list open, in the declaration's own file or macro), a directive
+// ends the value without running here: the statement loop runs it after
+// the identifier is bound. Pre-3.5 scenes write `#declare I = I + 1`
+// without ';' before a loop's #end; running the #end here would start the
+// next iteration inside this expression, one nesting level per iteration,
+// and a `#declare J = I` on the next line would not see I yet.
 const Token& Interpreter::peekAfterOperand() {
     const Token& t = rawPeek();
-    if (t.is(Sym::Hash)) return t;
+    if (t.is(Sym::Hash) && declareValue_.grouping == 0 &&
+        declareValue_.cursorDepth == static_cast<int>(cursors_.size()))
+        return t;
     return peek();
 }
 
@@ -376,6 +381,7 @@ Value Interpreter::parsePostfix() {
 }
 
 Value Interpreter::parseVectorLiteral() {
+    const GroupingGuard grouping(*this);
     const Token open = next();  // '<'
     VectorValue out;
     int n = 0;
@@ -490,6 +496,7 @@ Value Interpreter::identifierValue(const Token& name, const Value* known) {
 }
 
 std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Token& fn) {
+    const GroupingGuard grouping(*this);
     expectAfter(Sym::LParen, "'('", fn.text);
     std::vector<Value> args;
     // A function of exactly one argument reads its parentheses as the
@@ -525,6 +532,7 @@ Value Interpreter::parsePrimary() {
         case TokenKind::Symbol:
             if (t.is(Sym::LParen)) {
                 next();
+                const GroupingGuard grouping(*this);
                 Value v = parseTernary();
                 expect(Sym::RParen, "')'");
                 return v;

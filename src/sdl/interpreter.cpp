@@ -497,7 +497,16 @@ void Interpreter::directiveDeclare(bool local) {
     // The value is ordinary scene text again: objects hold directives, and
     // so may expressions (`(1 + #if (A) 2 #else 3 #end)`).
     cursors_.back().inDirective = false;
-    Value value = parseRValue();
+    const DeclareValueState outer = declareValue_;
+    declareValue_ = {static_cast<int>(cursors_.size()), 0};
+    Value value;
+    try {
+        value = parseRValue();
+    } catch (...) {
+        declareValue_ = outer;
+        throw;
+    }
+    declareValue_ = outer;
     const bool needsSemicolon =
         std::holds_alternative<double>(value) || std::holds_alternative<VectorValue>(value);
     if (deprecated)

@@ -105,6 +105,21 @@ class Interpreter {
 
     const Token& rawPeek();  // current token, no directive processing
     const Token& peekAfterOperand();
+    // Where a #declare's value is being read (cursor depth, -1: none) and
+    // how many parentheses, vector brackets or argument lists are open in
+    // it: see peekAfterOperand.
+    struct DeclareValueState {
+        int cursorDepth = -1;
+        int grouping = 0;
+    };
+    DeclareValueState declareValue_;
+    struct GroupingGuard {
+        explicit GroupingGuard(Interpreter& in) : in_(in) { ++in_.declareValue_.grouping; }
+        ~GroupingGuard() { --in_.declareValue_.grouping; }
+        GroupingGuard(const GroupingGuard&) = delete;
+        GroupingGuard& operator=(const GroupingGuard&) = delete;
+        Interpreter& in_;
+    };
     // Current token after directives/macros; the fast path answers repeated
     // peeks at the same place.
     const Token& peek() {
