@@ -14,7 +14,7 @@
 namespace frameray::options {
 
 class OptionError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -22,7 +22,8 @@ public:
 // pairs, INI files (`file.ini` or `file.ini[Section]`) and the scene file.
 // Throws OptionError. Returns warnings (e.g. an INI section that does not
 // exist, which POV-Ray skips silently).
-std::vector<std::string> applyArguments(RenderOptions& options, const std::vector<std::string>& args);
+std::vector<std::string> applyArguments(RenderOptions& options,
+                                        const std::vector<std::string>& args);
 
 // Applies one INI file; `section` empty means the lines before the first
 // section header. `origin` names who asked for it, for messages.

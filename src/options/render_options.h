@@ -33,14 +33,14 @@ struct ShellCommand {
 struct RenderOptions {
     // Input and output.
     std::string inputFile;
-    std::string outputFile;        // empty: scene name in the working folder
+    std::string outputFile;  // empty: scene name in the working folder
     bool outputToFile = true;
-    char outputType = 'N';         // N P T C E H J B
-    int bitDepth = 8;              // bits per colour channel (Bits_Per_Color, +FN16)
+    char outputType = 'N';  // N P T C E H J B
+    int bitDepth = 8;       // bits per colour channel (Bits_Per_Color, +FN16)
     bool outputAlpha = false;
-    double fileGamma = 0;          // <= 0: sRGB (POV-Ray 3.7's default)
+    double fileGamma = 0;  // <= 0: sRGB (POV-Ray 3.7's default)
     double displayGamma = 2.2;
-    std::string includeHeader;     // Include_Header (+HI)
+    std::string includeHeader;  // Include_Header (+HI)
 
     // Image and render window. Rows/columns as given: a value below 1
     // (start) or up to 1 (end) is a fraction of the image, others are
@@ -90,7 +90,7 @@ struct RenderOptions {
 
     // Run.
     bool continueTrace = false;
-    int workThreads = 0;  // 0: every core
+    int workThreads = 0;     // 0: every core
     int framesInFlight = 0;  // frames parsed/rendered/written at once; 0: work threads + 1
     bool verbose = true;
     bool display = false;

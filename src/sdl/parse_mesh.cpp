@@ -316,8 +316,9 @@ void Interpreter::parseHeightField(scene::Object& obj) {
             fail(sizeAt, "height_field function needs a resolution of at least 2 x 2");
         // Checked before the samples are allocated (and the sizes made ints).
         if (w * h > double(frame_.limits.arrayElements))
-            fail(sizeAt, fmt::format("height_field function resolution {} x {} has more than {} samples", w, h,
-                                     frame_.limits.arrayElements));
+            fail(sizeAt,
+                 fmt::format("height_field function resolution {} x {} has more than {} samples", w,
+                             h, frame_.limits.arrayElements));
         width = static_cast<int>(w);
         height = static_cast<int>(h);
         const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(source);

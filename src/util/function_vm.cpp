@@ -137,9 +137,10 @@ double CompiledFunction::eval(const double* args) const {
                 if (!(slots[in.a + 1] < slots[in.a]) &&
                     !(std::isfinite(slots[in.a]) && std::fabs(slots[in.a]) < 4.5e15 &&
                       slots[in.a + 1] - slots[in.a] <= kMaxLoopSteps))
-                    throw std::runtime_error("sum/prod loop from " + std::to_string(slots[in.a]) + " to " +
-                                             std::to_string(slots[in.a + 1]) + ": more than " +
-                                             std::to_string(static_cast<long>(kMaxLoopSteps)) + " steps");
+                    throw std::runtime_error(
+                        "sum/prod loop from " + std::to_string(slots[in.a]) + " to " +
+                        std::to_string(slots[in.a + 1]) + ": more than " +
+                        std::to_string(static_cast<long>(kMaxLoopSteps)) + " steps");
                 stack[sp++] = in.b;
                 break;
             case FnOp::LoopTest:
