@@ -145,6 +145,19 @@ bool Interpreter::startsStringExpression(const Token& t) {
                std::end(kStringFunctions);
 }
 
+std::string Interpreter::parsePathname() {
+    const bool outer = pathnameMode_;
+    pathnameMode_ = true;
+    try {
+        std::string name = parseString();
+        pathnameMode_ = outer;
+        return name;
+    } catch (...) {
+        pathnameMode_ = outer;
+        throw;
+    }
+}
+
 std::string Interpreter::parseString() {
     const Token at = peek();
     // A string expression has no operators, so nothing after it is looked
@@ -524,9 +537,21 @@ Value Interpreter::parsePrimary() {
         case TokenKind::Number:
             next();
             return t.number;
-        case TokenKind::String:
+        case TokenKind::String: {
+            const TokenizedFile& file = *cursors_.back().file;
+            if (pathnameMode_) {
+                next();
+                return file.rawString(t);
+            }
+            if (t.unknownEscape) {
+                const SourceLoc at{file.source.get(), t.line, file.unknownEscapeColumn(t)};
+                throw SdlError(at,
+                               "illegal escape sequence in string (a '\\' must be written '\\\\')",
+                               includeChain(at));
+            }
             next();
             return std::string(t.text);
+        }
         case TokenKind::End:
             fail(t, "unexpected end of file in an expression");
         case TokenKind::Symbol:

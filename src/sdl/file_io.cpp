@@ -126,7 +126,7 @@ void Interpreter::checkWritable(const fs::path& path, const std::string& name, c
 
 void Interpreter::directiveFopen(const Token& at) {
     const std::string id = expectIdentifier();
-    const std::string name = parseString();
+    const std::string name = parsePathname();
     const Token mode = next();
     auto handle = std::make_shared<FileHandle>();
     handle->name = name;

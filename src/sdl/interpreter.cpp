@@ -612,7 +612,7 @@ fs::path Interpreter::findIncludeFile(const std::string& name) const {
 }
 
 void Interpreter::directiveInclude(const Token& at) {
-    const std::string name = parseString();
+    const std::string name = parsePathname();
     if (includeDepth_ >= frame_.limits.includeFiles)
         fail(at,
              fmt::format("#include nested more than {} levels deep", frame_.limits.includeFiles));

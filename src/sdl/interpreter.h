@@ -242,6 +242,11 @@ class Interpreter {
     Vec3 parseVec3();
     Color parseColor();  // with optional color/colour keyword
     std::string parseString();
+    // A file name (#include, #fopen, image, height-field and font files): a
+    // string expression whose literals keep their backslashes, as povray
+    // reads them ("dir\\x.inc" is not an escape there).
+    std::string parsePathname();
+    bool pathnameMode_ = false;
     bool startsStringExpression(const Token& t);
     Value parseTernary();
     Value parseLogical();
