@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "sdl/float_functions.h"
+#include "scene/noise.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
@@ -722,6 +723,16 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_vcross: {
             auto a = parseArguments(2, 2, fn);
             return VectorValue::fromVec3(cross(vec(a[0]), vec(a[1])));
+        }
+        case Keyword::kw_vturbulence: {
+            // vturbulence(Lambda, Omega, Octaves, P): the displacement a
+            // turbulence warp with these parameters gives at P.
+            auto a = parseArguments(4, 4, fn);
+            scene::Turbulence turb;
+            turb.lambda = static_cast<float>(f(a[0]));
+            turb.omega = static_cast<float>(f(a[1]));
+            turb.octaves = static_cast<int>(f(a[2]));
+            return VectorValue::fromVec3(scene::vectorTurbulence(vec(a[3]), turb));
         }
         case Keyword::kw_vnormalize:
             return VectorValue::fromVec3(normalize(vec(parseArguments(1, 1, fn)[0])));
