@@ -30,6 +30,7 @@
 #include "anim/memory_budget.h"
 #include "anim/progress.h"
 #include "anim/statistics.h"
+#include "image/codecs.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
 #include "render/gamma.h"
@@ -788,6 +789,9 @@ class Run {
 }  // namespace
 
 int runSequence(const options::RenderOptions& o, const Sequence& seq) {
+    // The image module (OpenImageIO) loads on another core while the first
+    // frame parses (image/codecs.h).
+    if (o.outputToFile && !seq.frames.empty()) image::preloadCodecs();
     if (seq.frames.empty()) {
         // More shards than frames: nothing is this shard's.
         if (o.verbose)
