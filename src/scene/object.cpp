@@ -161,6 +161,8 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, Su
 
 bool Object::isPatch() const { return shape && shape->isPatch(); }
 
+bool Object::warnsAsPatch() const { return shape && shape->warnsAsPatch(); }
+
 namespace {
 
 

@@ -99,6 +99,7 @@ struct Object {
     // Whether nothing can ever be inside, inverted or not (patches, and
     // CSG built from them only in ways that keep this).
     bool isPatch() const;
+    bool warnsAsPatch() const;
 };
 
 }  // namespace frameray::scene

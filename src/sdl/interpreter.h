@@ -360,6 +360,9 @@ class Interpreter {
     // (parse_sweep_shapes.cpp), each after its '{' ---
     std::shared_ptr<const scene::Shape> parseSuperellipsoid(const Token& kind);
     std::shared_ptr<const scene::Shape> parseIsosurface(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseParametric(const Token& kind);
+    // contained_by { box { A, B } | sphere { C, R } } after 'contained_by'.
+    void parseContainedBy(bool& sphere, Vec3& boxLo, Vec3& boxHi, Vec3& center, double& radius);
     std::shared_ptr<const scene::Shape> parseSphereSweep(const Token& kind);
     std::shared_ptr<const scene::Shape> parseLathe(const Token& kind);
     std::shared_ptr<const scene::Shape> parseSor(const Token& kind);
