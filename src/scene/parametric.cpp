@@ -11,18 +11,6 @@ namespace frameray::scene {
 
 namespace {
 
-// A rectangle of (u, v) and the ray's interval through its box.
-struct Sector {
-    double u0, u1, v0, v1;
-    double tNear;
-};
-
-// Deep enough for accuracy 1e-12 over a range of 1e3; deeper sectors are
-// treated as leaves.
-constexpr int kMaxDepth = 56;
-// Pending sectors: at most three siblings wait per level.
-constexpr int kStackSize = 4 * kMaxDepth + 4;
-
 bool inRange(double x, double lo, double hi, double margin) {
     return x >= lo - margin && x <= hi + margin;
 }
@@ -53,6 +41,70 @@ void Parametric::derivatives(double u, double v, Vec3& pu, Vec3& pv) const {
     pv = (point(u, v + hv) - point(u, v - hv)) / (2 * hv);
 }
 
+// The bounding box of a sector's piece of surface: the box of its corners
+// and middle grown by max_gradient times the distance from a corner to the
+// middle. Sampling the surface (as povray does: a steep but straight
+// surface needs no large max_gradient there) rather than trusting
+// max_gradient alone keeps pieces whose gradient was underestimated.
+void Parametric::sectorBox(const Sector& s, double gradient, Vec3& lo, Vec3& hi) const {
+    lo = vmin(vmin(vmin(s.p[0], s.p[1]), vmin(s.p[2], s.p[3])), s.p[4]);
+    hi = vmax(vmax(vmax(s.p[0], s.p[1]), vmax(s.p[2], s.p[3])), s.p[4]);
+    const double hu = 0.5 * (s.u1 - s.u0), hv = 0.5 * (s.v1 - s.v0);
+    const double r = gradient * std::sqrt(hu * hu + hv * hv) + 1e-12 * scale_;
+    lo -= Vec3(r);
+    hi += Vec3(r);
+}
+
+Parametric::Sector Parametric::rootSector() const {
+    Sector s{s_.uMin, s_.uMax, s_.vMin, s_.vMax, {}, 0, 0};
+    s.p[0] = point(s.u0, s.v0);
+    s.p[1] = point(s.u1, s.v0);
+    s.p[2] = point(s.u0, s.v1);
+    s.p[3] = point(s.u1, s.v1);
+    s.p[4] = point(0.5 * (s.u0 + s.u1), 0.5 * (s.v0 + s.v1));
+    return s;
+}
+
+int Parametric::split(const Sector& s, Sector* kids) const {
+    const double acc = s_.accuracy;
+    const bool splitU = s.u1 - s.u0 > acc, splitV = s.v1 - s.v0 > acc;
+    if ((!splitU && !splitV) || s.depth >= kMaxDepth) return 0;
+    const double um = 0.5 * (s.u0 + s.u1), vm = 0.5 * (s.v0 + s.v1);
+    // The 3x3 grid of points over the sector (only the rows and columns
+    // that are split are new).
+    Vec3 g[3][3];  // g[i][j] at (u_i, v_j), i, j in {0, middle, 1}
+    g[0][0] = s.p[0];
+    g[2][0] = s.p[1];
+    g[0][2] = s.p[2];
+    g[2][2] = s.p[3];
+    if (splitU) {
+        g[1][0] = point(um, s.v0);
+        g[1][2] = point(um, s.v1);
+    }
+    if (splitV) {
+        g[0][1] = point(s.u0, vm);
+        g[2][1] = point(s.u1, vm);
+    }
+    g[1][1] = s.p[4];
+    const int iu[2][2] = {{0, splitU ? 1 : 2}, {splitU ? 1 : 0, 2}};
+    const int iv[2][2] = {{0, splitV ? 1 : 2}, {splitV ? 1 : 0, 2}};
+    int n = 0;
+    for (int a = 0; a < (splitU ? 2 : 1); ++a) {
+        for (int b = 0; b < (splitV ? 2 : 1); ++b) {
+            Sector k{s.u0, s.u1, s.v0, s.v1, {}, s.depth + 1, 0};
+            if (splitU) (a == 0 ? k.u1 : k.u0) = um;
+            if (splitV) (b == 0 ? k.v1 : k.v0) = vm;
+            k.p[0] = g[iu[a][0]][iv[b][0]];
+            k.p[1] = g[iu[a][1]][iv[b][0]];
+            k.p[2] = g[iu[a][0]][iv[b][1]];
+            k.p[3] = g[iu[a][1]][iv[b][1]];
+            k.p[4] = point(0.5 * (k.u0 + k.u1), 0.5 * (k.v0 + k.v1));
+            kids[n++] = k;
+        }
+    }
+    return n;
+}
+
 void Parametric::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
     // povray reports one crossing per ray, the first (see the header).
     double t;
@@ -70,21 +122,19 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
     double best = std::min(c1, tMax);
     if (!(lo < best)) return false;
 
-    const double grow = s_.maxGradient;
-    // The ray's interval through the box of a sector, within [lo, best].
-    auto interval = [&](const Sector& s, double& near, double& far) {
-        const double hu = 0.5 * (s.u1 - s.u0), hv = 0.5 * (s.v1 - s.v0);
-        const Vec3 c = point(s.u0 + hu, s.v0 + hv);
-        const double r = grow * (hu + hv) + 1e-12 * scale_;
+    // The ray's entry into the box of a sector, within [lo, best].
+    auto enters = [&](const Sector& s, double& near) {
+        Vec3 bl, bh;
+        sectorBox(s, s_.maxGradient, bl, bh);
         near = lo;
-        far = best;
+        double far = best;
         for (int a = 0; a < 3; ++a) {
             const double o = ray.origin[a], d = ray.direction[a];
             if (d == 0) {
-                if (o < c[a] - r || o > c[a] + r) return false;
+                if (o < bl[a] || o > bh[a]) return false;
                 continue;
             }
-            double ta = (c[a] - r - o) / d, tb = (c[a] + r - o) / d;
+            double ta = (bl[a] - o) / d, tb = (bh[a] - o) / d;
             if (ta > tb) std::swap(ta, tb);
             near = std::max(near, ta);
             far = std::min(far, tb);
@@ -101,7 +151,6 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
         double u = s.u0 + 0.5 * du, v = s.v0 + 0.5 * dv;
         const Vec3 c = point(u, v);
         double t = dot(c - ray.origin, ray.direction) / (speed * speed);
-        const double tolerance = 1e-10 * scale_;
         bool converged = false;
         for (int i = 0; i < 24; ++i) {
             const Vec3 f = point(u, v) - ray.at(t);
@@ -128,7 +177,7 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
             }
         }
         const double residual = length(point(u, v) - ray.at(t));
-        if (!converged && !(residual <= tolerance)) return false;
+        if (!converged && !(residual <= 1e-10 * scale_)) return false;
         if (!(residual <= 1e-7 * scale_)) return false;
         const double eu = 1e-9 * std::max(1.0, std::fabs(s_.uMax - s_.uMin));
         const double ev = 1e-9 * std::max(1.0, std::fabs(s_.vMax - s_.vMin));
@@ -139,59 +188,49 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
         return true;
     };
 
-    std::array<Sector, kStackSize> stack;
-    std::array<int, kStackSize> depth;
-    int top = 0;
+    std::vector<Sector> stack;
+    stack.reserve(64);
     bool found = false;
     {
-        Sector root{s_.uMin, s_.uMax, s_.vMin, s_.vMax, 0};
-        double far;
-        if (!interval(root, root.tNear, far)) return false;
-        stack[0] = root;
-        depth[0] = 0;
-        top = 1;
+        Sector root = rootSector();
+        if (!enters(root, root.tNear)) return false;
+        stack.push_back(root);
     }
-    const double acc = s_.accuracy;
-    while (top > 0) {
-        --top;
-        const Sector s = stack[top];
-        const int level = depth[top];
+    Sector kids[4];
+    while (!stack.empty()) {
+        const Sector s = stack.back();
+        stack.pop_back();
         if (s.tNear >= best) continue;
-        const bool splitU = s.u1 - s.u0 > acc, splitV = s.v1 - s.v0 > acc;
-        if ((!splitU && !splitV) || level >= kMaxDepth) {
+        const int count = split(s, kids);
+        if (count == 0) {
             if (solve(s)) found = true;
             continue;
         }
         // The children whose boxes the ray crosses, nearest popped first.
-        std::array<Sector, 4> kids;
         int n = 0;
-        const double um = 0.5 * (s.u0 + s.u1), vm = 0.5 * (s.v0 + s.v1);
-        for (int i = 0; i < (splitU ? 2 : 1); ++i) {
-            for (int j = 0; j < (splitV ? 2 : 1); ++j) {
-                Sector k{s.u0, s.u1, s.v0, s.v1, 0};
-                if (splitU) (i == 0 ? k.u1 : k.u0) = um;
-                if (splitV) (j == 0 ? k.v1 : k.v0) = vm;
-                double far;
-                if (interval(k, k.tNear, far)) kids[n++] = k;
-            }
-        }
-        // Insertion sort, farthest first (at most four).
+        for (int i = 0; i < count; ++i)
+            if (enters(kids[i], kids[i].tNear)) kids[n++] = kids[i];
         for (int i = 1; i < n; ++i)
             for (int j = i; j > 0 && kids[j - 1].tNear < kids[j].tNear; --j)
                 std::swap(kids[j - 1], kids[j]);
-        for (int i = 0; i < n && top < kStackSize; ++i) {
-            stack[top] = kids[i];
-            depth[top] = level + 1;
-            ++top;
-        }
+        for (int i = 0; i < n; ++i) stack.push_back(kids[i]);
     }
     if (found) tHit = best;
     return found;
 }
 
-bool Parametric::parametersOf(const Vec3& p, double& uOut, double& vOut) const {
-    const double acc = s_.accuracy;
+bool Parametric::parametersOf(const Vec3& p, double& u, double& v) const {
+    // A max_gradient too small for the surface can hide the piece the
+    // point lies on (povray still finds hits there): search again with
+    // larger ones.
     double bestResidual = kInfinity;
+    for (double gradient = s_.maxGradient, i = 0; i < 4; gradient *= 8, ++i)
+        if (parametersOf(p, gradient, u, v, bestResidual)) return true;
+    return bestResidual < kInfinity;
+}
+
+bool Parametric::parametersOf(const Vec3& p, double gradient, double& uOut, double& vOut,
+                              double& bestResidual) const {
     // Gauss-Newton on |point(u, v) - p| from the middle of a leaf sector.
     auto settle = [&](const Sector& s) {
         double u = 0.5 * (s.u0 + s.u1), v = 0.5 * (s.v0 + s.v1);
@@ -219,41 +258,31 @@ bool Parametric::parametersOf(const Vec3& p, double& uOut, double& vOut) const {
         return residual <= 1e-8 * scale_;
     };
     auto contains = [&](const Sector& s) {
-        const double hu = 0.5 * (s.u1 - s.u0), hv = 0.5 * (s.v1 - s.v0);
-        const Vec3 c = point(s.u0 + hu, s.v0 + hv);
-        const double r = s_.maxGradient * (hu + hv) + 1e-7 * scale_;
-        return std::fabs(p.x - c.x) <= r && std::fabs(p.y - c.y) <= r && std::fabs(p.z - c.z) <= r;
+        Vec3 bl, bh;
+        sectorBox(s, gradient, bl, bh);
+        const Vec3 m(1e-7 * scale_);
+        bl -= m;
+        bh += m;
+        return p.x >= bl.x && p.x <= bh.x && p.y >= bl.y && p.y <= bh.y && p.z >= bl.z &&
+               p.z <= bh.z;
     };
 
-    std::array<Sector, kStackSize> stack;
-    std::array<int, kStackSize> depth;
-    stack[0] = {s_.uMin, s_.uMax, s_.vMin, s_.vMax, 0};
-    depth[0] = 0;
-    int top = 1;
-    while (top > 0) {
-        --top;
-        const Sector s = stack[top];
-        const int level = depth[top];
-        const bool splitU = s.u1 - s.u0 > acc, splitV = s.v1 - s.v0 > acc;
-        if ((!splitU && !splitV) || level >= kMaxDepth) {
+    std::vector<Sector> stack;
+    stack.reserve(64);
+    stack.push_back(rootSector());
+    Sector kids[4];
+    while (!stack.empty()) {
+        const Sector s = stack.back();
+        stack.pop_back();
+        const int count = split(s, kids);
+        if (count == 0) {
             if (settle(s)) return true;
             continue;
         }
-        const double um = 0.5 * (s.u0 + s.u1), vm = 0.5 * (s.v0 + s.v1);
-        for (int i = 0; i < (splitU ? 2 : 1); ++i) {
-            for (int j = 0; j < (splitV ? 2 : 1); ++j) {
-                Sector k{s.u0, s.u1, s.v0, s.v1, 0};
-                if (splitU) (i == 0 ? k.u1 : k.u0) = um;
-                if (splitV) (j == 0 ? k.v1 : k.v0) = vm;
-                if (top < kStackSize && contains(k)) {
-                    stack[top] = k;
-                    depth[top] = level + 1;
-                    ++top;
-                }
-            }
-        }
+        for (int i = 0; i < count; ++i)
+            if (contains(kids[i])) stack.push_back(kids[i]);
     }
-    return bestResidual < kInfinity;
+    return false;
 }
 
 Vec3 Parametric::normal(const Vec3& p) const {

@@ -57,6 +57,29 @@ class Parametric final : public Shape {
     bool parametersOf(const Vec3& p, double& u, double& v) const;
 
   private:
+    // A rectangle of (u, v), the surface points at its corners (p[i + 2 j]
+    // at (u_i, v_j)) and middle (p[4]), its depth in the subdivision and, while searching
+    // along a ray, the ray's entry into its box.
+    struct Sector {
+        double u0, u1, v0, v1;
+        Vec3 p[5];
+        int depth;
+        double tNear;
+    };
+    // Deep enough for accuracy 1e-12 over a range of 1e3; deeper sectors
+    // count as small enough.
+    static constexpr int kMaxDepth = 56;
+
+    Sector rootSector() const;
+    // Splits a sector in halves along u and/or v (those longer than
+    // `accuracy`) into `kids`; 0 when it is small enough to solve.
+    int split(const Sector& s, Sector* kids) const;
+    void sectorBox(const Sector& s, double gradient, Vec3& lo, Vec3& hi) const;
+    // parametersOf with sector boxes grown by `gradient`; true when p lies
+    // on the surface; otherwise the nearest (u, v) found so far is kept
+    // with its distance in bestResidual.
+    bool parametersOf(const Vec3& p, double gradient, double& u, double& v,
+                      double& bestResidual) const;
     bool containerInterval(const Ray& ray, double& t0, double& t1) const;
     // Partial derivatives of the point by central differences.
     void derivatives(double u, double v, Vec3& pu, Vec3& pv) const;
