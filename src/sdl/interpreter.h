@@ -394,6 +394,9 @@ class Interpreter {
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture_;
     bool defaultTextureSet_ = false;
+    // The component textures of the blob parseBlob just read, for
+    // parseObject to attach (empty when no component has one).
+    std::vector<std::shared_ptr<const scene::Texture>> blobComponentTextures_;
     bool declarationBeforeVersion_ = false;
     int includeDepth_ = 0;
     int nesting_ = 0;                   // NestingGuard levels held

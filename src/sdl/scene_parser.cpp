@@ -178,6 +178,9 @@ ObjectPtr Interpreter::parseObject() {
             break;
         default:
             obj->shape = parseShape(kind);
+            // A blob's component textures (parseBlob).
+            obj->componentTextures = std::move(blobComponentTextures_);
+            blobComponentTextures_.clear();
             break;
     }
 
