@@ -20,6 +20,37 @@ bool inRange(double x, double lo, double hi, double margin) {
 Parametric::Parametric(ParametricSettings settings) : s_(std::move(settings)) {
     const Bounds b = bounds();
     scale_ = std::max(1e-300, length(b.hi - b.lo));
+    buildTree();
+}
+
+void Parametric::buildTree() {
+    tree_.push_back({rootSector(s_.maxGradient), -1, 0});
+    tree_[0].sector.node = 0;
+    // Breadth first, so children come after their parents.
+    Sector kids[4];
+    for (size_t i = 0; i < tree_.size(); ++i) {
+        if (tree_[i].sector.depth >= kTreeDepth) continue;
+        const int n = split(tree_[i].sector, s_.maxGradient, kids);
+        tree_[i].firstChild = static_cast<int>(tree_.size());
+        tree_[i].childCount = n;
+        for (int k = 0; k < n; ++k) {
+            kids[k].node = static_cast<int>(tree_.size());
+            tree_.push_back({kids[k], -1, 0});
+        }
+    }
+    // A node's box is the union of its children's: they bound the same
+    // surface more tightly.
+    for (size_t i = tree_.size(); i-- > 0;) {
+        TreeNode& node = tree_[i];
+        if (node.childCount == 0) continue;
+        Vec3 lo(kInfinity), hi(-kInfinity);
+        for (int k = 0; k < node.childCount; ++k) {
+            lo = vmin(lo, tree_[node.firstChild + k].sector.lo);
+            hi = vmax(hi, tree_[node.firstChild + k].sector.hi);
+        }
+        node.sector.lo = lo;
+        node.sector.hi = hi;
+    }
 }
 
 bool Parametric::containerInterval(const Ray& ray, double& t0, double& t1) const {
@@ -55,17 +86,24 @@ void Parametric::sectorBox(const Sector& s, double gradient, Vec3& lo, Vec3& hi)
     hi += Vec3(r);
 }
 
-Parametric::Sector Parametric::rootSector() const {
-    Sector s{s_.uMin, s_.uMax, s_.vMin, s_.vMax, {}, 0, 0};
+Parametric::Sector Parametric::rootSector(double gradient) const {
+    if (!tree_.empty() && gradient == s_.maxGradient) return tree_[0].sector;
+    Sector s{s_.uMin, s_.uMax, s_.vMin, s_.vMax, {}, 0, 0, {}, {}, -1};
     s.p[0] = point(s.u0, s.v0);
     s.p[1] = point(s.u1, s.v0);
     s.p[2] = point(s.u0, s.v1);
     s.p[3] = point(s.u1, s.v1);
     s.p[4] = point(0.5 * (s.u0 + s.u1), 0.5 * (s.v0 + s.v1));
+    sectorBox(s, gradient, s.lo, s.hi);
     return s;
 }
 
-int Parametric::split(const Sector& s, Sector* kids) const {
+int Parametric::split(const Sector& s, double gradient, Sector* kids) const {
+    if (s.node >= 0 && gradient == s_.maxGradient && tree_[s.node].firstChild >= 0) {
+        const TreeNode& node = tree_[s.node];
+        for (int k = 0; k < node.childCount; ++k) kids[k] = tree_[node.firstChild + k].sector;
+        return node.childCount;
+    }
     const double acc = s_.accuracy;
     const bool splitU = s.u1 - s.u0 > acc, splitV = s.v1 - s.v0 > acc;
     if ((!splitU && !splitV) || s.depth >= kMaxDepth) return 0;
@@ -91,7 +129,7 @@ int Parametric::split(const Sector& s, Sector* kids) const {
     int n = 0;
     for (int a = 0; a < (splitU ? 2 : 1); ++a) {
         for (int b = 0; b < (splitV ? 2 : 1); ++b) {
-            Sector k{s.u0, s.u1, s.v0, s.v1, {}, s.depth + 1, 0};
+            Sector k{s.u0, s.u1, s.v0, s.v1, {}, s.depth + 1, 0, {}, {}, -1};
             if (splitU) (a == 0 ? k.u1 : k.u0) = um;
             if (splitV) (b == 0 ? k.v1 : k.v0) = vm;
             k.p[0] = g[iu[a][0]][iv[b][0]];
@@ -99,6 +137,7 @@ int Parametric::split(const Sector& s, Sector* kids) const {
             k.p[2] = g[iu[a][0]][iv[b][1]];
             k.p[3] = g[iu[a][1]][iv[b][1]];
             k.p[4] = point(0.5 * (k.u0 + k.u1), 0.5 * (k.v0 + k.v1));
+            sectorBox(k, gradient, k.lo, k.hi);
             kids[n++] = k;
         }
     }
@@ -124,8 +163,8 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
 
     // The ray's entry into the box of a sector, within [lo, best].
     auto enters = [&](const Sector& s, double& near) {
-        Vec3 bl, bh;
-        sectorBox(s, s_.maxGradient, bl, bh);
+        const Vec3& bl = s.lo;
+        const Vec3& bh = s.hi;
         near = lo;
         double far = best;
         for (int a = 0; a < 3; ++a) {
@@ -192,7 +231,7 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
     stack.reserve(64);
     bool found = false;
     {
-        Sector root = rootSector();
+        Sector root = rootSector(s_.maxGradient);
         if (!enters(root, root.tNear)) return false;
         stack.push_back(root);
     }
@@ -201,7 +240,7 @@ bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit
         const Sector s = stack.back();
         stack.pop_back();
         if (s.tNear >= best) continue;
-        const int count = split(s, kids);
+        const int count = split(s, s_.maxGradient, kids);
         if (count == 0) {
             if (solve(s)) found = true;
             continue;
@@ -258,23 +297,20 @@ bool Parametric::parametersOf(const Vec3& p, double gradient, double& uOut, doub
         return residual <= 1e-8 * scale_;
     };
     auto contains = [&](const Sector& s) {
-        Vec3 bl, bh;
-        sectorBox(s, gradient, bl, bh);
         const Vec3 m(1e-7 * scale_);
-        bl -= m;
-        bh += m;
+        const Vec3 bl = s.lo - m, bh = s.hi + m;
         return p.x >= bl.x && p.x <= bh.x && p.y >= bl.y && p.y <= bh.y && p.z >= bl.z &&
                p.z <= bh.z;
     };
 
     std::vector<Sector> stack;
     stack.reserve(64);
-    stack.push_back(rootSector());
+    stack.push_back(rootSector(gradient));
     Sector kids[4];
     while (!stack.empty()) {
         const Sector s = stack.back();
         stack.pop_back();
-        const int count = split(s, kids);
+        const int count = split(s, gradient, kids);
         if (count == 0) {
             if (settle(s)) return true;
             continue;

@@ -58,22 +58,37 @@ class Parametric final : public Shape {
 
   private:
     // A rectangle of (u, v), the surface points at its corners (p[i + 2 j]
-    // at (u_i, v_j)) and middle (p[4]), its depth in the subdivision and, while searching
-    // along a ray, the ray's entry into its box.
+    // at (u_i, v_j)) and middle (p[4]), its depth in the subdivision, the
+    // box holding its piece of surface, its node in tree_ (-1: none) and,
+    // while searching along a ray, the ray's entry into its box.
     struct Sector {
         double u0, u1, v0, v1;
         Vec3 p[5];
         int depth;
         double tNear;
+        Vec3 lo, hi;
+        int node = -1;
     };
+    // The first levels of the subdivision, built once (povray's
+    // `precompute` does the same for speed): every ray starts its search
+    // there instead of evaluating the functions again.
+    struct TreeNode {
+        Sector sector;
+        int firstChild = -1;
+        int childCount = 0;
+    };
+    static constexpr int kTreeDepth = 6;
     // Deep enough for accuracy 1e-12 over a range of 1e3; deeper sectors
     // count as small enough.
     static constexpr int kMaxDepth = 56;
 
-    Sector rootSector() const;
+    // The whole rectangle, with boxes grown by `gradient`.
+    Sector rootSector(double gradient) const;
     // Splits a sector in halves along u and/or v (those longer than
-    // `accuracy`) into `kids`; 0 when it is small enough to solve.
-    int split(const Sector& s, Sector* kids) const;
+    // `accuracy`) into `kids`, with boxes grown by `gradient`; 0 when it is
+    // small enough to solve. Taken from tree_ where it can be.
+    int split(const Sector& s, double gradient, Sector* kids) const;
+    void buildTree();
     void sectorBox(const Sector& s, double gradient, Vec3& lo, Vec3& hi) const;
     // parametersOf with sector boxes grown by `gradient`; true when p lies
     // on the surface; otherwise the nearest (u, v) found so far is kept
@@ -85,6 +100,7 @@ class Parametric final : public Shape {
     void derivatives(double u, double v, Vec3& pu, Vec3& pv) const;
 
     ParametricSettings s_;
+    std::vector<TreeNode> tree_;
     double scale_;  // the container's size, for tolerances
 };
 
