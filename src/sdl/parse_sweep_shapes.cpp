@@ -274,8 +274,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseParametric(const Token& ki
                 next();
                 const Token depthAt = peek();
                 const double depth = parseFloat();
-                if (depth < 0 || depth > 20)
-                    fail(depthAt, "parametric precompute depth must be between 0 and 20");
+                if (depth < 1 || depth > 20) fail(depthAt, "Precompute: invalid depth (1 to 20)");
                 for (;;) {
                     accept(Sym::Comma);
                     const Token axis = peek();
