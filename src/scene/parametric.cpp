@@ -73,13 +73,19 @@ void Parametric::derivatives(double u, double v, Vec3& pu, Vec3& pv) const {
 }
 
 // The bounding box of a sector's piece of surface: the box of its corners
-// and middle grown by max_gradient times the distance from a corner to the
-// middle. Sampling the surface (as povray does: a steep but straight
-// surface needs no large max_gradient there) rather than trusting
-// max_gradient alone keeps pieces whose gradient was underestimated.
+// (and middle, in the first levels) grown by max_gradient times the
+// distance from a corner to the middle. Sampling the surface (as povray
+// does: a steep but straight surface needs no large max_gradient there)
+// rather than trusting max_gradient alone keeps pieces whose gradient was
+// underestimated; the middle keeps a large sector whose corners coincide
+// (a whole period of a torus) from shrinking to a point.
 void Parametric::sectorBox(const Sector& s, double gradient, Vec3& lo, Vec3& hi) const {
-    lo = vmin(vmin(vmin(s.p[0], s.p[1]), vmin(s.p[2], s.p[3])), s.p[4]);
-    hi = vmax(vmax(vmax(s.p[0], s.p[1]), vmax(s.p[2], s.p[3])), s.p[4]);
+    lo = vmin(vmin(s.p[0], s.p[1]), vmin(s.p[2], s.p[3]));
+    hi = vmax(vmax(s.p[0], s.p[1]), vmax(s.p[2], s.p[3]));
+    if (s.depth <= kTreeDepth) {
+        lo = vmin(lo, s.p[4]);
+        hi = vmax(hi, s.p[4]);
+    }
     const double hu = 0.5 * (s.u1 - s.u0), hv = 0.5 * (s.v1 - s.v0);
     const double r = gradient * std::sqrt(hu * hu + hv * hv) + 1e-12 * scale_;
     lo -= Vec3(r);
@@ -123,7 +129,7 @@ int Parametric::split(const Sector& s, double gradient, Sector* kids) const {
         g[0][1] = point(s.u0, vm);
         g[2][1] = point(s.u1, vm);
     }
-    g[1][1] = s.p[4];
+    if (splitU && splitV) g[1][1] = s.depth <= kTreeDepth ? s.p[4] : point(um, vm);
     const int iu[2][2] = {{0, splitU ? 1 : 2}, {splitU ? 1 : 0, 2}};
     const int iv[2][2] = {{0, splitV ? 1 : 2}, {splitV ? 1 : 0, 2}};
     int n = 0;
@@ -136,7 +142,7 @@ int Parametric::split(const Sector& s, double gradient, Sector* kids) const {
             k.p[1] = g[iu[a][1]][iv[b][0]];
             k.p[2] = g[iu[a][0]][iv[b][1]];
             k.p[3] = g[iu[a][1]][iv[b][1]];
-            k.p[4] = point(0.5 * (k.u0 + k.u1), 0.5 * (k.v0 + k.v1));
+            if (k.depth <= kTreeDepth) k.p[4] = point(0.5 * (k.u0 + k.u1), 0.5 * (k.v0 + k.v1));
             sectorBox(k, gradient, k.lo, k.hi);
             kids[n++] = k;
         }

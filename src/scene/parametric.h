@@ -58,7 +58,7 @@ class Parametric final : public Shape {
 
   private:
     // A rectangle of (u, v), the surface points at its corners (p[i + 2 j]
-    // at (u_i, v_j)) and middle (p[4]), its depth in the subdivision, the
+    // at (u_i, v_j)) and middle (p[4], only down to kTreeDepth), its depth in the subdivision, the
     // box holding its piece of surface, its node in tree_ (-1: none) and,
     // while searching along a ray, the ray's entry into its box.
     struct Sector {

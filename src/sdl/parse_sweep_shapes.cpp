@@ -243,6 +243,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseParametric(const Token& ki
             fail(fnAt,
                  fmt::format("expected 'function' in parametric, found {}", describeToken(fnAt)));
         *slot = parseXyzFunction(fnAt);
+        accept(Sym::Comma);  // povray takes a comma after each function
     }
     const VectorValue lo = parseVector();
     expect(Sym::Comma, "',' between the parametric's (u, v) corners");
