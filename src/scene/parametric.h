@@ -15,6 +15,14 @@
 //    (like a triangle, but without the "Patch objects" warning);
 //  - the container defaults to box { -1, 1 }; precompute only speeds
 //    povray up and changes nothing here.
+// What is not matched: povray reports a point in front of the surface, on
+// the box of its last sector (trace() on the plane function { u }
+// function { v } function { 0 } along z gives z = -(accuracy +
+// max_gradient (du + dv) / 2), du and dv the sector's size once below
+// accuracy). Here hits are exact, so at a coarse accuracy povray's
+// silhouettes and shadows are a little fatter (about 0.96-0.99 match on
+// its Parametric_Surfaces templates at 160x120; 0.998 at the default
+// accuracy 0.001).
 #pragma once
 
 #include <memory>
