@@ -1,7 +1,7 @@
 #include "image/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "image/gif_decoder.h"
+#include "util/durable_file.h"
 
 namespace frameray::image {
 
@@ -25,10 +26,11 @@ struct TypeInfo {
     const char* extension;
 };
 constexpr TypeInfo kTypes[] = {
-    {FileType::PNG, "png", ".png"},   {FileType::TGA, "targa", ".tga"}, {FileType::TGA_RLE, "targa", ".tga"},
-    {FileType::PPM, "pnm", ".ppm"},   {FileType::EXR, "openexr", ".exr"},
-    {FileType::HDR, "hdr", ".hdr"},   {FileType::JPEG, "jpeg", ".jpg"},
-    {FileType::TIFF, "tiff", ".tif"}, {FileType::BMP, "bmp", ".bmp"},
+    {FileType::PNG, "png", ".png"},       {FileType::TGA, "targa", ".tga"},
+    {FileType::TGA_RLE, "targa", ".tga"}, {FileType::PPM, "pnm", ".ppm"},
+    {FileType::EXR, "openexr", ".exr"},   {FileType::HDR, "hdr", ".hdr"},
+    {FileType::JPEG, "jpeg", ".jpg"},     {FileType::TIFF, "tiff", ".tif"},
+    {FileType::BMP, "bmp", ".bmp"},
 };
 
 const TypeInfo& info(FileType t) {
@@ -51,14 +53,19 @@ std::vector<T> quantize(const std::vector<float>& values, int bits, double conta
     return out;
 }
 
-bool hasDeepChannels(FileType t) { return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF; }
+bool hasDeepChannels(FileType t) {
+    return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF;
+}
 
 }  // namespace
 
-const char* extensionFor(FileType type) { return info(type).extension; }
+const char* extensionFor(FileType type) {
+    return info(type).extension;
+}
 
 fs::path temporaryPathFor(const fs::path& path) {
-    return path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
+    return path.parent_path() /
+           fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
 }
 
 bool isTemporaryFor(const std::string& name, const std::string& target, long& pid) {
@@ -79,7 +86,9 @@ void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image)
 fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage& image) {
     const TypeInfo& ti = info(type);
     auto out = OIIO::ImageOutput::create(ti.oiioFormat);
-    if (!out) throw std::runtime_error(fmt::format("no image writer for {}: {}", ti.oiioFormat, OIIO::geterror()));
+    if (!out)
+        throw std::runtime_error(
+            fmt::format("no image writer for {}: {}", ti.oiioFormat, OIIO::geterror()));
 
     const bool floatFile = type == FileType::EXR || type == FileType::HDR;
     const int bits = std::clamp(image.bitDepth, 1, hasDeepChannels(type) ? 16 : 8);
@@ -91,10 +100,14 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
     if (type == FileType::TGA_RLE) spec.attribute("compression", "rle");
     if (type == FileType::TGA) spec.attribute("compression", "none");
 
-    // Unique per process and target, in the same folder so rename is atomic.
-    const fs::path tmp = temporaryPathFor(path);
-    if (!out->open(tmp.string(), spec))
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), out->geterror()));
+    // Encoded in memory, then written by us: OpenImageIO's own file
+    // writers do not all report a full disk, so a frame could otherwise
+    // end up truncated under its final name with no error.
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    if (!out->set_ioproxy(&memory) || !out->open("frame" + std::string(ti.extension), spec))
+        throw std::runtime_error(
+            fmt::format("cannot encode '{}': {}", path.string(), out->geterror()));
     bool ok;
     if (floatFile) {
         ok = out->write_image(OIIO::TypeDesc::FLOAT, image.values.data());
@@ -107,36 +120,27 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
     }
     const std::string writeError = ok ? std::string() : out->geterror();
     ok = out->close() && ok;
-    std::error_code ec;
-    if (!ok) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(),
+    if (!ok)
+        throw std::runtime_error(fmt::format("cannot encode '{}': {}", path.string(),
                                              writeError.empty() ? out->geterror() : writeError));
-    }
-    // On disk before it is renamed and journalled: a frame the journal
-    // calls finished must survive a power cut.
-    const int fd = ::open(tmp.c_str(), O_RDONLY);
-    const bool synced = fd >= 0 && ::fsync(fd) == 0;
-    if (fd >= 0) ::close(fd);
-    if (!synced) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot write '{}': cannot flush it to disk", path.string()));
-    }
+    // Unique per process and target, in the same folder so the rename is
+    // atomic; on the device before it is renamed and journalled, so a frame
+    // the journal calls finished survives a power cut.
+    const fs::path tmp = temporaryPathFor(path);
+    util::writeFileDurably(
+        tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
     return tmp;
 }
 
 void commitTemporary(const fs::path& tmp, const fs::path& path) {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot move the finished frame to '{}': {}", path.string(), ec.message()));
-    }
+    util::renameDurably(tmp, path);
 }
 
 EncodedImage read(const fs::path& path) {
     auto in = OIIO::ImageInput::open(path.string());
-    if (!in) throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), OIIO::geterror()));
+    if (!in)
+        throw std::runtime_error(
+            fmt::format("cannot read '{}': {}", path.string(), OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
     EncodedImage img;
     img.width = spec.width;
@@ -145,7 +149,8 @@ EncodedImage read(const fs::path& path) {
     img.bitDepth = static_cast<int>(spec.format.size() * 8);
     img.values.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.values.data()))
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), in->geterror()));
+        throw std::runtime_error(
+            fmt::format("cannot read '{}': {}", path.string(), in->geterror()));
     in->close();
     return img;
 }
