@@ -369,6 +369,9 @@ class Interpreter {
     // (parse_sweep_shapes.cpp), each after its '{' ---
     std::shared_ptr<const scene::Shape> parseSuperellipsoid(const Token& kind);
     std::shared_ptr<const scene::Shape> parseIsosurface(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseParametric(const Token& kind);
+    // contained_by { box { A, B } | sphere { C, R } } after 'contained_by'.
+    void parseContainedBy(bool& sphere, Vec3& boxLo, Vec3& boxHi, Vec3& center, double& radius);
     std::shared_ptr<const scene::Shape> parseSphereSweep(const Token& kind);
     std::shared_ptr<const scene::Shape> parseLathe(const Token& kind);
     std::shared_ptr<const scene::Shape> parseSor(const Token& kind);
@@ -400,6 +403,9 @@ class Interpreter {
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture_;
     bool defaultTextureSet_ = false;
+    // The component textures of the blob parseBlob just read, for
+    // parseObject to attach (empty when no component has one).
+    std::vector<std::shared_ptr<const scene::Texture>> blobComponentTextures_;
     bool declarationBeforeVersion_ = false;
     int includeDepth_ = 0;
     int nesting_ = 0;                   // NestingGuard levels held
