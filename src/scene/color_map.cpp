@@ -17,9 +17,16 @@ Color ColorMap::at(double value) const {
     const Entry& b = entries_[hi];
     const double span = b.value - a.value;
     if (span <= 0) return b.color;
-    const double t = (value - a.value) / span, s = 1.0 - t;
-    return Color(a.color.rgb * s + b.color.rgb * t, a.color.filter * s + b.color.filter * t,
-                 a.color.transmit * s + b.color.transmit * t);
+    // povray blends in single precision: a + (b - a) * t with float
+    // colours and t (measured through function { pigment { } } values).
+    const float t = static_cast<float>((value - a.value) / span);
+    const auto blend = [t](double from, double to) {
+        const float f = static_cast<float>(from);
+        return static_cast<double>(f + (static_cast<float>(to) - f) * t);
+    };
+    return Color(RGB(blend(a.color.rgb.r, b.color.rgb.r), blend(a.color.rgb.g, b.color.rgb.g),
+                     blend(a.color.rgb.b, b.color.rgb.b)),
+                 blend(a.color.filter, b.color.filter), blend(a.color.transmit, b.color.transmit));
 }
 
 }  // namespace frameray::scene

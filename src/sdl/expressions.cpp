@@ -8,8 +8,8 @@
 #include <ctime>
 #include <numbers>
 
-#include "sdl/float_functions.h"
 #include "scene/noise.h"
+#include "sdl/float_functions.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
@@ -344,6 +344,31 @@ Value Interpreter::parseUnary() {
     return parsePostfix();
 }
 
+int dotItemSlot(Keyword kw) {
+    switch (kw) {
+        case Keyword::kw_x:
+        case Keyword::kw_u:
+        case Keyword::kw_red:
+            return 0;
+        case Keyword::kw_y:
+        case Keyword::kw_v:
+        case Keyword::kw_green:
+            return 1;
+        case Keyword::kw_z:
+        case Keyword::kw_blue:
+            return 2;
+        case Keyword::kw_t:
+        case Keyword::kw_filter:
+            return 3;
+        case Keyword::kw_transmit:
+            return 4;
+        case Keyword::kw_gray:
+            return kGrayItem;
+        default:
+            return -1;
+    }
+}
+
 Value Interpreter::parsePostfix() {
     Value v = parsePrimary();
     while (peekAfterOperand().is(Sym::Dot)) {
@@ -353,37 +378,12 @@ Value Interpreter::parsePostfix() {
             fail(dot, fmt::format("'.{}' needs a vector or color, not a {}", item.text,
                                   valueKindName(v)));
         const VectorValue& vec = std::get<VectorValue>(v);
-        int slot = -1;
-        switch (item.kw) {
-            case Keyword::kw_x:
-            case Keyword::kw_u:
-            case Keyword::kw_red:
-                slot = 0;
-                break;
-            case Keyword::kw_y:
-            case Keyword::kw_v:
-            case Keyword::kw_green:
-                slot = 1;
-                break;
-            case Keyword::kw_z:
-            case Keyword::kw_blue:
-                slot = 2;
-                break;
-            case Keyword::kw_t:
-            case Keyword::kw_filter:
-                slot = 3;
-                break;
-            case Keyword::kw_transmit:
-                slot = 4;
-                break;
-            case Keyword::kw_gray: {
-                // Luminance weights POV-Ray uses for .gray.
-                VectorValue c = promote(v, 5);
-                v = c.v[0] * 0.297 + c.v[1] * 0.589 + c.v[2] * 0.114;
-                continue;
-            }
-            default:
-                fail(item, fmt::format("'{}' is not a vector component", item.text));
+        const int slot = dotItemSlot(item.kw);
+        if (slot < 0) fail(item, fmt::format("'{}' is not a vector component", item.text));
+        if (slot == kGrayItem) {
+            const VectorValue c = promote(v, 5);
+            v = grayOf(c.v[0], c.v[1], c.v[2]);
+            continue;
         }
         // Colours always carry all five components.
         const int size = vec.isColor ? 5 : vec.size;

@@ -13,6 +13,39 @@
 
 namespace frameray::sdl {
 
+namespace {
+
+// A compiled function whose whole body is one native function reading the
+// function's own `paramCount` arguments.
+std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
+                                             std::shared_ptr<const NativeFunction> native) {
+    auto fn = std::make_shared<CompiledFunction>();
+    fn->name = std::move(name);
+    fn->paramCount = paramCount;
+    fn->natives.push_back(std::move(native));
+    fn->code.push_back({FnOp::Native, 0});
+    fn->countOperations();
+    return fn;
+}
+
+// One component (or .gray) of a vector-valued function.
+class VectorComponent final : public NativeFunction {
+  public:
+    VectorComponent(std::shared_ptr<const VectorFunction> vector, int slot)
+        : vector_(std::move(vector)), slot_(slot) {}
+    int paramCount() const { return vector_->paramCount; }
+    double eval(const double* args) const override {
+        const std::array<double, 5> v = vector_->eval(args);
+        return slot_ == kGrayItem ? grayOf(v[0], v[1], v[2]) : v[static_cast<size_t>(slot_)];
+    }
+
+  private:
+    std::shared_ptr<const VectorFunction> vector_;
+    int slot_;
+};
+
+}  // namespace
+
 // Recursive-descent compiler over the interpreter's token stream, with the
 // same precedence as parse-time expressions.
 class FunctionCompiler {
@@ -223,6 +256,7 @@ class FunctionCompiler {
                 emit({FnOp::Internal, -1, n}, 1 - n);
                 return;
             }
+            if (callee->vector) return vectorComponentCall(t, callee->vector, n);
             if (!callee->variadic)
                 requireArgs(t, n, callee->compiled->paramCount, callee->compiled->paramCount);
             if (fn_->unavailable.empty()) fn_->unavailable = callee->compiled->unavailable;
@@ -293,6 +327,29 @@ class FunctionCompiler {
         constant(*f);
     }
 
+    // F(args).item for a vector-valued F: a native callee giving that one
+    // component (or .gray of a colour).
+    void vectorComponentCall(const Token& t, std::shared_ptr<const VectorFunction> vector, int n) {
+        requireArgs(t, n, vector->paramCount, vector->paramCount);
+        if (!in_.peek().is(Sym::Dot))
+            in_.fail(t, fmt::format(
+                            "'{}' is a {} function and gives a {}; inside a function take one "
+                            "component ('{}(...).x', '.red', '.gray' ...)",
+                            t.text, vector->kind, vector->isColor ? "colour" : "vector", t.text));
+        in_.next();
+        const Token item = in_.next();
+        const int slot = dotItemSlot(item.kw);
+        if (slot < 0) in_.fail(item, fmt::format("'{}' is not a vector component", item.text));
+        if (slot != kGrayItem && slot >= vector->size)
+            in_.fail(item, fmt::format("'.{}' is beyond this {}-component vector", item.text,
+                                       vector->size));
+        auto native = std::make_shared<VectorComponent>(std::move(vector), slot);
+        const int params = native->paramCount();
+        fn_->callees.push_back(
+            nativeBody(fmt::format("{}.{}", t.text, item.text), params, std::move(native)));
+        emit({FnOp::Call, static_cast<int32_t>(fn_->callees.size() - 1), n}, 1 - n);
+    }
+
     // sum(I, Start, End, Expr) and prod(...): I runs from Start to End by 1.
     void loop(const Token& t) {
         in_.next();
@@ -351,14 +408,10 @@ Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
     const Token first = peek();
     if (first.is(Keyword::kw_internal)) return parseInternalFunctionBody();
     if (first.is(Keyword::kw_pattern)) return parsePatternFunctionBody();
-    static constexpr Keyword kOtherBodies[] = {Keyword::kw_pigment, Keyword::kw_transform,
-                                               Keyword::kw_spline};
-    if (std::find(std::begin(kOtherBodies), std::end(kOtherBodies), first.kw) !=
-            std::end(kOtherBodies) &&
-        first.kind == TokenKind::Word) {
-        // Not built yet: keep the declaration, fail on use.
-        value->unsupported = fmt::format("function {{ {} }}", first.text);
-        skipToClosingBrace(first, 1);
+    if (first.is(Keyword::kw_pigment) || first.is(Keyword::kw_transform) ||
+        first.is(Keyword::kw_spline)) {
+        value->vector = parseVectorFunctionBody();
+        expect(Sym::RBrace, "'}' closing the function body");
         return FunctionPtr(value);
     }
     FunctionCompiler compiler(*this, std::move(params));
@@ -367,6 +420,48 @@ Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
     value->compiled = std::move(compiled);
     expect(Sym::RBrace, "'}' closing the function body");
     return FunctionPtr(value);
+}
+
+std::shared_ptr<const VectorFunction> Interpreter::parseVectorFunctionBody() {
+    auto fn = std::make_shared<VectorFunction>();
+    const Token first = peek();
+    fn->kind = std::string(first.text);
+    if (first.is(Keyword::kw_pigment)) {
+        const PigmentPtr pigment = parsePigment();
+        fn->size = 5;
+        fn->isColor = true;
+        fn->eval = [pigment](const double* a) {
+            const Color c = pigment->at({a[0], a[1], a[2]});
+            return std::array<double, 5>{c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit};
+        };
+    } else if (first.is(Keyword::kw_transform)) {
+        const Transform transform = parseTransformBlock();
+        fn->eval = [transform](const double* a) {
+            const Vec3 p = transform.point({a[0], a[1], a[2]});
+            return std::array<double, 5>{p.x, p.y, p.z, 0, 0};
+        };
+    } else {
+        const Value spline = parseSpline();
+        const SplinePtr s = std::get<SplinePtr>(spline);
+        fn->paramCount = 1;
+        fn->size = splineAt(*s, 0).size;
+        fn->eval = [s](const double* a) { return splineAt(*s, a[0]).v; };
+    }
+    return fn;
+}
+
+Value Interpreter::callVectorFunction(const VectorFunction& function, const Token& at) {
+    const std::vector<Value> args = parseArguments(0, 64, at);
+    if (static_cast<int>(args.size()) != function.paramCount)
+        fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, function.paramCount,
+                             function.paramCount == 1 ? "" : "s", args.size()));
+    std::vector<double> values;
+    for (const Value& v : args) values.push_back(toFloat(v, at));
+    VectorValue out;
+    out.v = function.eval(values.data());
+    out.size = static_cast<uint8_t>(function.size);
+    out.isColor = function.isColor;
+    return out;
 }
 
 // Skips tokens until `depth` open braces have closed.
@@ -378,23 +473,6 @@ void Interpreter::skipToClosingBrace(const Token& from, int depth) {
         if (t.is(Sym::RBrace)) --depth;
     }
 }
-
-namespace {
-
-// A compiled function whose whole body is one native function reading the
-// function's own `paramCount` arguments.
-std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
-                                             std::shared_ptr<const NativeFunction> native) {
-    auto fn = std::make_shared<CompiledFunction>();
-    fn->name = std::move(name);
-    fn->paramCount = paramCount;
-    fn->natives.push_back(std::move(native));
-    fn->code.push_back({FnOp::Native, 0});
-    fn->countOperations();
-    return fn;
-}
-
-}  // namespace
 
 // function { internal(N) }: functions.inc's built-ins, taking x, y, z and
 // their own extra parameters.
@@ -458,6 +536,12 @@ std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Toke
     const Value body = parseFunctionBody({"x", "y", "z"});
     const FunctionValue& fn = *std::get<FunctionPtr>(body);
     if (!fn.unsupported.empty()) unsupported(at, fn.unsupported);
+    if (fn.vector)
+        fail(at,
+             fmt::format(
+                 "a {} function gives a {}; here a float function is needed (take one component: "
+                 "F(x, y, z).gray)",
+                 fn.vector->kind, fn.vector->isColor ? "colour" : "vector"));
     if (!fn.compiled->unavailable.empty()) unsupported(at, fn.compiled->unavailable);
     if (fn.compiled->paramCount > 3)
         fail(at, fmt::format("{} takes {} parameters; here it is given only x, y, z",
@@ -478,6 +562,7 @@ void Interpreter::checkFunctionCost(const CompiledFunction& function, const Toke
 
 Value Interpreter::callFunction(const FunctionValue& function, const Token& at) {
     if (!function.unsupported.empty()) unsupported(at, function.unsupported);
+    if (function.vector) return callVectorFunction(*function.vector, at);
     const std::vector<Value> args = parseArguments(0, 64, at);
     const int expected = function.compiled->paramCount;
     if (!function.variadic && static_cast<int>(args.size()) != expected)

@@ -493,6 +493,13 @@ void Interpreter::directiveDeclare(bool local) {
         return;
     }
     expect(Sym::Equal, "'='");
+    // povray 3.7 keeps functions apart: a visible function identifier is
+    // never redeclared (not even by a #local in a macro) until #undef'd.
+    const Value* existing = lookup(name);
+    if (existing && std::holds_alternative<FunctionPtr>(*existing))
+        fail(nameToken,
+             fmt::format("redeclaring the function '{}' is not allowed; #undef it first", name));
+    const char* existingKind = existing ? valueKindName(*existing) : nullptr;
     const size_t scopeCount = scopes_.size();
     // The value is ordinary scene text again: objects hold directives, and
     // so may expressions (`(1 + #if (A) 2 #else 3 #end)`).
@@ -507,6 +514,10 @@ void Interpreter::directiveDeclare(bool local) {
         throw;
     }
     declareValue_ = outer;
+    if (existingKind && std::holds_alternative<FunctionPtr>(value))
+        fail(nameToken,
+             fmt::format("cannot redefine the {} identifier '{}' as a function; #undef it first",
+                         existingKind, name));
     const bool needsSemicolon =
         std::holds_alternative<double>(value) || std::holds_alternative<VectorValue>(value);
     if (deprecated)

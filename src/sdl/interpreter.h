@@ -35,7 +35,18 @@ struct SourceImage;
 
 namespace frameray::sdl {
 
-struct MeshParts;  // parse_mesh.cpp
+struct MeshParts;       // parse_mesh.cpp
+struct VectorFunction;  // function_value.h
+
+// The vector component a dot item names: 0..4 for .x .y .z .t (and .u .v
+// .red .green .blue .filter .transmit), kGrayItem for .gray (POV-Ray's
+// luminance of the colour), -1 for anything else (expressions.cpp).
+inline constexpr int kGrayItem = 5;
+int dotItemSlot(Keyword kw);
+// .gray of a colour's first three components.
+inline double grayOf(double r, double g, double b) {
+    return r * 0.297 + g * 0.589 + b * 0.114;
+}
 
 class Interpreter {
   public:
@@ -234,6 +245,9 @@ class Interpreter {
     void skipToClosingBrace(const Token& from, int depth);
     Value callSpline(const SplineValue& spline, const Token& at);
     Value callFunction(const FunctionValue& function, const Token& at);
+    Value callVectorFunction(const VectorFunction& function, const Token& at);
+    // After `function {`: a pigment, transform or spline body.
+    std::shared_ptr<const VectorFunction> parseVectorFunctionBody();
 
     // --- expressions (expressions.cpp) ---
     Value parseExpression();  // float, vector, colour or string

@@ -138,6 +138,28 @@ Vec5 evalNatural(const SplineValue& s, double x) {
 
 }  // namespace
 
+namespace {
+
+VectorValue evaluateSpline(const SplineValue& spline, double x, SplineType type) {
+    VectorValue out;
+    out.size = spline.size;
+    const size_t n = spline.t.size();
+    if (n == 1) {
+        out.v = spline.p[0].v;
+    } else if (type == SplineType::Cubic && n >= 3) {
+        out.v = evalCubic(spline, x);
+    } else if (type == SplineType::Quadratic && n >= 3) {
+        out.v = evalQuadratic(spline, x);
+    } else if (type == SplineType::Natural && n >= 3) {
+        out.v = evalNatural(spline, x);
+    } else {
+        out.v = evalLinear(spline, x);
+    }
+    return out;
+}
+
+}  // namespace
+
 Value Interpreter::parseSpline() {
     next();  // spline
     expect(Sym::LBrace, "'{' after 'spline'");
@@ -192,21 +214,11 @@ Value Interpreter::callSpline(const SplineValue& spline, const Token& at) {
     }
     expect(Sym::RParen, "')'");
     (void)at;
-    VectorValue out;
-    out.size = spline.size;
-    const size_t n = spline.t.size();
-    if (n == 1) {
-        out.v = spline.p[0].v;
-    } else if (type == SplineType::Cubic && n >= 3) {
-        out.v = evalCubic(spline, x);
-    } else if (type == SplineType::Quadratic && n >= 3) {
-        out.v = evalQuadratic(spline, x);
-    } else if (type == SplineType::Natural && n >= 3) {
-        out.v = evalNatural(spline, x);
-    } else {
-        out.v = evalLinear(spline, x);
-    }
-    return out;
+    return evaluateSpline(spline, x, type);
+}
+
+VectorValue splineAt(const SplineValue& s, double x) {
+    return evaluateSpline(s, x, s.type);
 }
 
 }  // namespace frameray::sdl

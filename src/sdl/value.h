@@ -65,6 +65,9 @@ using SplinePtr = std::shared_ptr<const SplineValue>;
 using FunctionPtr = std::shared_ptr<const FunctionValue>;
 using BlendMapPtr = std::shared_ptr<const BlendMapValue>;
 
+// The value of spline `s` at `x`, with the spline's own type (splines.cpp).
+VectorValue splineAt(const SplineValue& s, double x);
+
 // A macro parameter passed as a bare identifier: the parameter names the
 // caller's identifier `name` in symbol table `scope` (by reference), so
 // the macro can read it and assign it, even create it.
@@ -75,8 +78,8 @@ struct IdentifierAlias {
 
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
-                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr,
-                           InteriorPtr, BlendMapPtr, NormalPtr>;
+                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr,
+                           SkySpherePtr, InteriorPtr, BlendMapPtr, NormalPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other

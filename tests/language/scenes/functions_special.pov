@@ -64,6 +64,23 @@ W("pattern gradient y (0,1.75,0)", Grad(0, 1.75, 0))
 #declare Rings = function { pattern { onion scale 2 } }
 W("pattern onion scaled (1,0,0)", Rings(1, 0, 0))
 
+// Vector functions called inside other functions: each call takes one
+// component with a dot item (.gray is the colour's luminance).
+#declare RampF = function { pigment { gradient x color_map { [0 rgbft <1,0,0,0.1,0.2>] [1 rgbft <0,0.5,1,0.3,0.4>] } } }
+V("pigment function gradient (0.25,0,0)", 5, RampF(0.25, 0, 0))
+W("pigment function .gray", RampF(0.25, 0, 0).gray)
+#declare GrayTwice = function { RampF(x, y, z).gray * 2 + RampF(x, y, z).blue }
+W("function using .gray and .blue", GrayTwice(0.6, 0, 0))
+#declare Turn = function { transform { rotate 90*z translate <1,2,3> } }
+#declare TurnSum = function { Turn(x, y, z).y + Turn(x, y, z).z }
+W("function using a transform function", TurnSum(1, 0, 0))
+#declare Path = spline { cubic_spline -1, <0,0,0> 0, <1,2,3> 1, <2,0,1> 2, <4,4,4> }
+#declare PathF = function { spline { Path } }
+#declare PathXY = function(a) { PathF(a).x + PathF(a).y * 10 }
+W("function using a spline function", PathXY(0.5))
+#declare Blob = isosurface { function { 0.5 - Ramp(x, y, z).gray } contained_by { box { -1, 1 } } }
+W("isosurface over a pigment function inside", inside(Blob, <0.9, 0, 0>))
+
 // Internal functions
 #include "functions.inc"
 W("f_sphere(1,2,2,1)", f_sphere(1, 2, 2, 1))
