@@ -9,7 +9,7 @@
 #   scripts/test_sanitized.sh [--conformance] [build-dir]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-labels="unit|language|fuzz"
+labels="unit|language|fuzz|options|restrictions"
 if [ "${1:-}" = "--conformance" ]; then
     labels="$labels|conformance"
     shift

@@ -138,7 +138,7 @@ bool Interpreter::startsStringExpression(const Token& t) {
         Keyword::kw_vstr,   Keyword::kw_datetime, Keyword::kw_input_file_name};
     if (t.kind == TokenKind::String) return true;
     if (t.isIdentifier()) {
-        const Value* v = lookup(t.text);
+        const Value* v = lookup(t);
         return v && std::holds_alternative<std::string>(*v);
     }
     return t.kind == TokenKind::Word &&
@@ -472,7 +472,7 @@ Value Interpreter::parseColorKeywords(const Token& first) {
 
 Value Interpreter::identifierValue(const Token& name, const Value* known) {
     const std::string_view id(name.text);
-    const Value* v = known ? known : lookup(id);
+    const Value* v = known ? known : lookup(name);
     if (!v) fail(name, fmt::format("undeclared identifier '{}'", name.text));
     if (auto d = deprecated_.empty() ? deprecated_.end() : deprecated_.find(id);
         d != deprecated_.end() && !(d->second.once && d->second.warned)) {

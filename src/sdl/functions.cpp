@@ -245,7 +245,7 @@ class FunctionCompiler {
                 emit({FnOp::Slot, it->second}, +1);
                 return;
             }
-        const Value* v = in_.lookup(t.text);
+        const Value* v = in_.lookup(t);
         if (v && std::holds_alternative<FunctionPtr>(*v)) {
             const FunctionPtr callee = std::get<FunctionPtr>(*v);
             in_.next();

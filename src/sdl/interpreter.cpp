@@ -133,6 +133,11 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
 }
 
 const Value* Interpreter::lookup(std::string_view name) const {
+    return lookupKey(name);
+}
+
+template <typename Key>
+const Value* Interpreter::lookupKey(const Key& name) const {
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
         auto found = it->find(name);
         if (found == it->end()) continue;
@@ -146,24 +151,34 @@ const Value* Interpreter::lookup(std::string_view name) const {
     return nullptr;
 }
 
+// The two kinds of key the header's lookups use.
+template const Value* Interpreter::lookupKey<std::string_view>(const std::string_view&) const;
+template const Value* Interpreter::lookupKey<Interpreter::HashedName>(const HashedName&) const;
+
 Value* Interpreter::find(std::string_view name) {
     return const_cast<Value*>(std::as_const(*this).lookup(name));
 }
 
-void Interpreter::declare(const std::string& name, Value value, bool local, size_t scopeCount) {
+void Interpreter::declare(const std::string& name, Value value, bool local, size_t scopeCount,
+                          uint32_t hash) {
+    const HashedName key{name, hash ? hash : identifierHash(name)};
     // Only the scopes that existed when the directive began count: a macro
     // that produced the value (`#local M = MakeTransform()`) may still have
     // its own scope open when a value ending in '}' is complete.
     const size_t visible = std::min(scopeCount, scopes_.size());
     if (local) {
-        scopes_[visible - 1][name] = std::move(value);
+        Scope& scope = scopes_[visible - 1];
+        if (auto found = scope.find(key); found != scope.end())
+            found->second = std::move(value);
+        else
+            scope.emplace(name, std::move(value));
         return;
     }
     // #declare assigns the most local existing version, or creates a global;
     // through a by-reference macro parameter it assigns the caller's.
     for (auto it = scopes_.rend() - static_cast<std::ptrdiff_t>(visible); it != scopes_.rend();
          ++it) {
-        auto found = it->find(name);
+        auto found = it->find(key);
         if (found == it->end()) continue;
         if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
             const IdentifierAlias target = *alias;
@@ -173,7 +188,7 @@ void Interpreter::declare(const std::string& name, Value value, bool local, size
         }
         return;
     }
-    scopes_.front()[name] = std::move(value);
+    scopes_.front().insert_or_assign(name, std::move(value));
 }
 
 // --- resource limits -----------------------------------------------------------
@@ -217,7 +232,7 @@ void Interpreter::checkStringLength(size_t length, const Token& at) {
 
 // --- token stream ------------------------------------------------------------
 
-const Token& Interpreter::rawPeek() {
+const Token& Interpreter::rawPeekAtEnd() {
     for (;;) {
         Cursor& c = cursors_.back();
         const Token& t = c.file->tokens[c.pos];
@@ -242,7 +257,7 @@ const Token& Interpreter::resolvePeek() {
         }
         const Value* named = nullptr;
         if (t.isIdentifier()) {
-            const Value* v = lookup(t.text);
+            const Value* v = lookup(t);
             named = v;
             if (v && std::holds_alternative<MacroPtr>(*v)) {
                 const Token nameToken = t;
@@ -495,7 +510,7 @@ void Interpreter::directiveDeclare(bool local) {
     expect(Sym::Equal, "'='");
     // povray 3.7 keeps functions apart: a visible function identifier is
     // never redeclared (not even by a #local in a macro) until #undef'd.
-    const Value* existing = lookup(name);
+    const Value* existing = lookup(nameToken);
     if (existing && std::holds_alternative<FunctionPtr>(*existing))
         fail(nameToken,
              fmt::format("redeclaring the function '{}' is not allowed; #undef it first", name));
@@ -527,7 +542,7 @@ void Interpreter::directiveDeclare(bool local) {
                              deprecatedOnce, false};
     // Bind before looking for the optional ';': that look-ahead may run the
     // next line's directive, which may use this identifier.
-    declare(name, std::move(value), local, scopeCount);
+    declare(name, std::move(value), local, scopeCount, nameToken.nameHash);
     // povray 3.7: an error from language version 3.5 on, a warning before.
     // rawPeek: a directive after the value must not run inside this one.
     if (needsSemicolon && !rawPeek().is(Sym::Semicolon)) {
@@ -671,7 +686,7 @@ bool Interpreter::conditionIfdef() {
     bool defined = false;
     if (t.kind == TokenKind::Word) {
         ++cursors_.back().pos;
-        const Value* v = t.kw == Keyword::None ? lookup(t.text) : nullptr;
+        const Value* v = t.kw == Keyword::None ? lookup(t) : nullptr;
         defined = v != nullptr;
         // #ifdef (A[i]): whether that element has been set.
         if (v && std::holds_alternative<ArrayPtr>(*v) && peek().is(Sym::LBracket)) {

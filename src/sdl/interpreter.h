@@ -59,6 +59,11 @@ class Interpreter {
 
     // Identifier lookup after parsing (tests).
     const Value* lookup(std::string_view name) const;
+    // The same for an identifier token, with the lexer's hash.
+    const Value* lookup(const Token& name) const {
+        return name.nameHash ? lookupKey(HashedName{name.text, name.nameHash})
+                             : lookupKey(name.text);
+    }
 
   private:
     friend class FunctionCompiler;  // compiles function bodies from this token stream
@@ -106,15 +111,38 @@ class Interpreter {
     };
     // Heterogeneous lookup: identifiers are looked up by the string_view of
     // their token, without building a std::string each time.
+    // A token's identifier with the hash the lexer computed for it.
+    struct HashedName {
+        std::string_view text;
+        uint32_t hash;
+    };
     struct NameHash {
         using is_transparent = void;
-        size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+        size_t operator()(std::string_view s) const { return identifierHash(s); }
+        size_t operator()(const HashedName& n) const { return n.hash; }
     };
-    using Scope = std::unordered_map<std::string, Value, NameHash, std::equal_to<>>;
+    struct NameEqual {
+        using is_transparent = void;
+        bool operator()(std::string_view a, std::string_view b) const { return a == b; }
+        bool operator()(const HashedName& a, std::string_view b) const { return a.text == b; }
+        bool operator()(std::string_view a, const HashedName& b) const { return a == b.text; }
+    };
+    using Scope = std::unordered_map<std::string, Value, NameHash, NameEqual>;
+    template <typename Key>
+    const Value* lookupKey(const Key& key) const;
 
     scene::Scene run(std::shared_ptr<const TokenizedFile> file);
 
-    const Token& rawPeek();  // current token, no directive processing
+    // Current token, no directive processing; the end of an include file
+    // or macro body is handled out of line (rawPeekAtEnd).
+    const Token& rawPeek() {
+        const Cursor& c = cursors_.back();
+        const Token& t = c.file->tokens[c.pos];
+        if (t.kind != TokenKind::End) [[likely]]
+            return t;
+        return rawPeekAtEnd();
+    }
+    const Token& rawPeekAtEnd();
     const Token& peekAfterOperand();
     // Where a #declare's value is being read (cursor depth, -1: none) and
     // how many parentheses, vector brackets or argument lists are open in
@@ -217,9 +245,10 @@ class Interpreter {
     // --- identifiers ---
     Value* find(std::string_view name);
     // Binds name in the innermost of the first scopeCount scopes (#local) or
-    // assigns or creates it as #declare does.
+    // assigns or creates it as #declare does. `hash`: the name's
+    // identifierHash when known (0: computed here).
     void declare(const std::string& name, Value value, bool local,
-                 size_t scopeCount = std::numeric_limits<size_t>::max());
+                 size_t scopeCount = std::numeric_limits<size_t>::max(), uint32_t hash = 0);
 
     // --- arrays (arrays.cpp) ---
     Value parseArrayDeclaration();
@@ -434,7 +463,7 @@ class Interpreter {
         bool once = false;
         bool warned = false;
     };
-    std::unordered_map<std::string, Deprecation, NameHash, std::equal_to<>> deprecated_;
+    std::unordered_map<std::string, Deprecation, NameHash, NameEqual> deprecated_;
     std::vector<FilePtr> openFiles_;  // closed at the end of the parse
     std::string inputFileName_;       // the scene file as named to the interpreter
     // Text objects: the global_settings charset in force, and the fonts

@@ -170,6 +170,7 @@ class Lexer {
             t.kind = TokenKind::Word;
             t.text = std::string_view(text_).substr(begin, pos_ - begin);
             t.kw = lookupKeyword(t.text);
+            if (t.kw == Keyword::None) t.nameHash = identifierHash(t.text);
         } else if (isDigit(c) || (c == '.' && isDigit(peek(1)))) {
             lexNumber(t);
         } else if (c == '"') {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -46,6 +47,11 @@ enum class Sym : uint8_t {
     NotEq,
 };
 
+// The hash symbol tables use for an identifier's name; never 0.
+inline uint32_t identifierHash(std::string_view name) {
+    return static_cast<uint32_t>(std::hash<std::string_view>{}(name)) | 1u;
+}
+
 struct Token {
     TokenKind kind = TokenKind::End;
     Sym sym = Sym::None;         // for Symbol
@@ -57,6 +63,9 @@ struct Token {
     // error in a string expression, as in povray; file names take the
     // string's raw text, where backslashes are no escapes (see rawString).
     bool unknownEscape = false;
+    // Word identifiers: identifierHash(text), computed once by the lexer so
+    // symbol lookups do not hash the name again (0: not computed).
+    uint32_t nameHash = 0;
 
     bool is(Sym s) const { return kind == TokenKind::Symbol && sym == s; }
     bool is(Keyword k) const { return kind == TokenKind::Word && kw == k; }
