@@ -74,18 +74,40 @@ double quiltCurve(double t, double c0, double c1) {
     return t * t * t + 3.0 * t * u * u * c0 + 3.0 * t * t * u * c1;
 }
 
+// The mean of the absolute coordinates of the offset from the unit cube's
+// centre, scaled along its length by the quilt curve. povray scales the
+// result by 2/sqrt(3), written as 1.154700538 (measured to 1e-15), and
+// keeps the controls in single precision (the parser rounds them).
 double quilted(const Vec3& p, double c0, double c1) {
     Vec3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5};
     v = v * quiltCurve(length(v), c0, c1);
-    return (std::abs(v.x) + std::abs(v.y) + std::abs(v.z)) / 3.0;
+    return (std::abs(v.x) + std::abs(v.y) + std::abs(v.z)) / 3.0 * 1.154700538;
 }
 
+// The angle of (x, y) about the z axis in turns, measured from -y
+// counter-clockwise (so +x is a quarter turn), 0 on the axis (measured).
+double spiralTurns(double x, double y, double rad) {
+    if (rad == 0) return 0;
+    const double a = std::asin(y / rad);
+    const double phi = x < 0 ? 1.5 * std::numbers::pi - a : 0.5 * std::numbers::pi + a;
+    return phi / kTwoPi;
+}
+
+// The triangle wave of period 1 rising from 0 at whole numbers to 1 at
+// halves (spiral2's building block).
+double triangle(double v) {
+    const double f = v - std::floor(v);
+    return f < 0.5 ? 2.0 * f : 2.0 * (1.0 - f);
+}
+
+// spiral1: z + distance from the z axis + arms · angle, unwrapped (the wave
+// wraps it). spiral2 adds the triangle waves of that sum and of the
+// distance alone, which makes the arms cross (both fitted to povray's
+// values to 1e-13).
 double spiral(const Vec3& p, int arms, bool second) {
-    const double r = std::hypot(p.x, p.y);
-    const double a = turns(p.x, p.y) * arms;
-    double v = second ? a - r : a + r;
-    (void)p.z;
-    return v;
+    const double rad = std::hypot(p.x, p.y);
+    const double sum = p.z + rad + arms * spiralTurns(p.x, p.y, rad);
+    return second ? triangle(sum) + triangle(rad) : sum;
 }
 
 // The wave sources of ripples and waves: povray places number_of_waves
@@ -276,6 +298,8 @@ double Pattern::raw(const Vec3& p) const {
             return spiral(p, arms, false);
         case PatternKind::Spiral2:
             return spiral(p, arms, true);
+        case PatternKind::Cells:
+            return cellsValue(p);
         case PatternKind::Bozo:
         case PatternKind::Spotted:
         case PatternKind::Bumps:

@@ -36,6 +36,7 @@ enum class PatternKind {
     Quilted,
     Spiral1,
     Spiral2,
+    Cells,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
     Bozo,

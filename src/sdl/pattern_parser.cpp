@@ -79,8 +79,14 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
         case Keyword::kw_mandel:
         case Keyword::kw_julia:
             return PatternKind::Fractal;
-        // quilted, spiral1 and spiral2 do not match povray yet: they stay
-        // "not supported yet" until they do.
+        case Keyword::kw_quilted:
+            return PatternKind::Quilted;
+        case Keyword::kw_spiral1:
+            return PatternKind::Spiral1;
+        case Keyword::kw_spiral2:
+            return PatternKind::Spiral2;
+        case Keyword::kw_cells:
+            return PatternKind::Cells;
         default:
             return std::nullopt;
     }
@@ -173,7 +179,10 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
         if (len == 0) fail(item, "gradient vector is zero");
         pattern.gradient = g * (1.0 / len);
     } else if (kind == scene::PatternKind::Spiral1 || kind == scene::PatternKind::Spiral2) {
+        // The number of arms is truncated to a whole number (measured);
+        // spirals default to the triangle wave like marble and wood.
         pattern.arms = static_cast<int>(parseFloat());
+        pattern.waveType = scene::WaveType::Triangle;
     } else if (kind == scene::PatternKind::Fractal) {
         parseFractalHead(item, pattern.fractal);
     } else if (kind == scene::PatternKind::Function) {
@@ -241,13 +250,13 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
         case Keyword::kw_control0: {
             next();
             const double c = parseFloat();
-            editPattern([&](scene::Pattern& p) { p.control0 = c; });
+            editPattern([&](scene::Pattern& p) { p.control0 = static_cast<float>(c); });
             return true;
         }
         case Keyword::kw_control1: {
             next();
             const double c = parseFloat();
-            editPattern([&](scene::Pattern& p) { p.control1 = c; });
+            editPattern([&](scene::Pattern& p) { p.control1 = static_cast<float>(c); });
             return true;
         }
         case Keyword::kw_frequency: {
