@@ -16,7 +16,7 @@ constexpr Vec3 kTetrahedron[4] = {{0.942809041, -0.333333333, 0.0},
 
 bool isNormalPattern(PatternKind k) {
     return k == PatternKind::Bumps || k == PatternKind::Dents || k == PatternKind::Wrinkles ||
-           k == PatternKind::Ripples || k == PatternKind::Waves;
+           k == PatternKind::Ripples || k == PatternKind::Waves || k == PatternKind::Quilted;
 }
 
 // Normals go into pattern space with the transpose of each transformation
@@ -70,6 +70,10 @@ Vec3 normalPatternVector(const Normal& nm, const Vec3& q) {
             }
             return sum;
         }
+        case PatternKind::Quilted:
+            // povray's quilted normal adds the quilt offset itself rather
+            // than sampling the pattern's slope (measured).
+            return quiltOffset(q, pat.control0, pat.control1) * nm.amount;
         default:
             return {};
     }

@@ -74,13 +74,22 @@ double quiltCurve(double t, double c0, double c1) {
     return t * t * t + 3.0 * t * u * u * c0 + 3.0 * t * t * u * c1;
 }
 
+}  // namespace
+
+Vec3 quiltOffset(const Vec3& p, double c0, double c1) {
+    const Vec3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5,
+                 p.z - std::floor(p.z) - 0.5};
+    return v * quiltCurve(length(v), c0, c1);
+}
+
+namespace {
+
 // The mean of the absolute coordinates of the offset from the unit cube's
 // centre, scaled along its length by the quilt curve. povray scales the
 // result by 2/sqrt(3), written as 1.154700538 (measured to 1e-15), and
 // keeps the controls in single precision (the parser rounds them).
 double quilted(const Vec3& p, double c0, double c1) {
-    Vec3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5};
-    v = v * quiltCurve(length(v), c0, c1);
+    const Vec3 v = quiltOffset(p, c0, c1);
     return (std::abs(v.x) + std::abs(v.y) + std::abs(v.z)) / 3.0 * 1.154700538;
 }
 

@@ -65,6 +65,10 @@ inline constexpr int kWaveSourceCount = 10;
 Vec3 waveSourceCenter(int i);
 double waveSourceFrequency(int i);
 
+// quilted's offset from the unit cube's centre, scaled by the quilt curve
+// of its length (the pattern averages its coordinates; the normal adds it).
+Vec3 quiltOffset(const Vec3& p, double control0, double control1);
+
 enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
 struct Pattern {
