@@ -78,6 +78,7 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Crackle;
         case Keyword::kw_mandel:
         case Keyword::kw_julia:
+        case Keyword::kw_magnet:
             return PatternKind::Fractal;
         case Keyword::kw_quilted:
             return PatternKind::Quilted;
@@ -479,11 +480,28 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     return std::make_shared<const scene::Normal>(normal);
 }
 
-// mandel ITERATIONS | julia <C>, ITERATIONS
+// mandel ITERATIONS | julia <C>, ITERATIONS | magnet 1|2 (mandel | julia <C>,)
+// ITERATIONS
 void Interpreter::parseFractalHead(const Token& kind, scene::FractalSettings& f) {
+    using Kind = scene::FractalSettings::Kind;
     f = scene::FractalSettings{};
-    if (kind.is(Keyword::kw_julia)) {
-        f.julia = true;
+    Token form = kind;
+    int magnetType = 0;
+    if (kind.is(Keyword::kw_magnet)) {
+        const Token at = peek();
+        const double t = parseFloat();
+        if (t != 1 && t != 2) fail(at, fmt::format("magnet type must be 1 or 2, found {}", t));
+        magnetType = static_cast<int>(t);
+        form = next();
+        if (!form.is(Keyword::kw_mandel) && !form.is(Keyword::kw_julia))
+            fail(form, fmt::format("expected 'mandel' or 'julia' after 'magnet {}', found {}",
+                                   magnetType, describeToken(form)));
+    }
+    const bool julia = form.is(Keyword::kw_julia);
+    f.kind = magnetType == 0   ? (julia ? Kind::Julia : Kind::Mandel)
+             : magnetType == 1 ? (julia ? Kind::Magnet1Julia : Kind::Magnet1Mandel)
+                               : (julia ? Kind::Magnet2Julia : Kind::Magnet2Mandel);
+    if (julia) {
         const VectorValue c = parseVector();
         f.cx = c.v[0];
         f.cy = c.v[1];
@@ -496,9 +514,11 @@ void Interpreter::parseFractalHead(const Token& kind, scene::FractalSettings& f)
 }
 
 // exponent N | interior TYPE, FACTOR | exterior TYPE, FACTOR (after the
-// keyword). Only the types frameray matches to povray are accepted.
+// keyword). povray rejects the same values (types outside 0..6, exponent
+// on a magnet).
 void Interpreter::parseFractalItem(const Token& item, scene::FractalSettings& f) {
     if (item.is(Keyword::kw_exponent)) {
+        if (f.isMagnet()) fail(item, "'exponent' can only be used with mandel or julia");
         const Token at = peek();
         const double e = parseFloat();
         if (e < 2 || e > 33 || e != std::floor(e))
@@ -508,15 +528,16 @@ void Interpreter::parseFractalItem(const Token& item, scene::FractalSettings& f)
         return;
     }
     const Token at = peek();
-    const int type = static_cast<int>(parseFloat());
+    const double typeValue = parseFloat();
     accept(Sym::Comma);
     const double factor = parseFloat();
+    const int type = static_cast<int>(typeValue);  // truncated like povray's
+    if (type < 0 || type > 6)
+        fail(at, fmt::format("fractal {} type must be 0 to 6, found {}", item.text, typeValue));
     if (item.is(Keyword::kw_interior)) {
-        if (type != 0) unsupported(at, fmt::format("fractal interior type {}", type));
         f.interiorType = type;
         f.interiorFactor = factor;
     } else {
-        if (type != 0 && type != 1) unsupported(at, fmt::format("fractal exterior type {}", type));
         f.exteriorType = type;
         f.exteriorFactor = factor;
     }
