@@ -19,6 +19,9 @@
 
 namespace frameray::scene {
 
+struct Object;
+class Pigment;
+
 enum class PatternKind {
     // colour-list patterns
     Checker,
@@ -37,6 +40,10 @@ enum class PatternKind {
     Spiral1,
     Spiral2,
     Cells,
+    // pigment_pattern { }: the grey value of a pigment
+    PigmentPattern,
+    // object { }: a list pattern, index 1 inside the object, 0 outside
+    Object,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
     Bozo,
@@ -88,7 +95,9 @@ struct Pattern {
     std::shared_ptr<const ImageMap> image;             // image_pattern
     std::shared_ptr<const CompiledFunction> function;  // function { ... }
     CrackleSettings crackle;                           // crackle's form, metric, offset, solid
-    FractalSettings fractal;                           // mandel and julia
+    FractalSettings fractal;                           // mandel, julia and magnet
+    std::shared_ptr<const Pigment> pigment;            // pigment_pattern
+    std::shared_ptr<const Object> object;              // object
     // The pattern's own `turbulence`: applied after every warp and
     // transformation, or used inside marble, wood and agate.
     std::optional<Turbulence> turbulence;

@@ -305,6 +305,9 @@ class Interpreter {
     // a colour list; isPatternKeyword tells whether `t` is one.
     bool isPatternKeyword(const Token& t) const;
     void parsePatternKeyword(scene::Pigment& holder);
+    // The object pattern's list entries sit inside its braces: callers
+    // call this after reading a list pattern's entries.
+    void closeListPattern(const scene::Pattern& pattern);
     std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
     // --- texture bodies and maps (parse_texture_maps.cpp) ---
     void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`

@@ -88,6 +88,10 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Spiral2;
         case Keyword::kw_cells:
             return PatternKind::Cells;
+        case Keyword::kw_pigment_pattern:
+            return PatternKind::PigmentPattern;
+        case Keyword::kw_object:
+            return PatternKind::Object;
         default:
             return std::nullopt;
     }
@@ -98,6 +102,7 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
     const Color blue(RGB(0, 0, 1)), green(RGB(0, 1, 0)), red(RGB(1, 0, 0));
     switch (kind) {
         case PatternKind::Checker:
+        case PatternKind::Object:  // outside, inside (measured)
             return {blue, green};
         case PatternKind::Hexagon:
             return {blue, green, red};
@@ -188,10 +193,37 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
         parseFractalHead(item, pattern.fractal);
     } else if (kind == scene::PatternKind::Function) {
         pattern.function = parseXyzFunction(item);
+    } else if (kind == scene::PatternKind::PigmentPattern) {
+        expect(Sym::LBrace, "'{' after 'pigment_pattern'");
+        auto inner = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
+        parsePigmentBody(*inner, Sym::RBrace);
+        expect(Sym::RBrace, "'}' closing 'pigment_pattern'");
+        pattern.pigment = std::move(inner);
+    } else if (kind == scene::PatternKind::Object) {
+        // object { IDENTIFIER | OBJECT  [ENTRY_OUTSIDE, ENTRY_INSIDE] }: the
+        // closing brace comes after the list entries (closeListPattern).
+        expect(Sym::LBrace, "'{' after 'object'");
+        const Token t = peek();
+        ObjectPtr obj;
+        if (t.isIdentifier()) {
+            const Value* v = lookup(std::string(t.text));
+            if (!v || !std::holds_alternative<ObjectPtr>(*v))
+                fail(t, fmt::format("expected an object in the object pattern, found {}",
+                                    describeToken(t)));
+            next();
+            obj = std::get<ObjectPtr>(*v);
+        } else {
+            obj = parseObject();
+        }
+        pattern.object = std::move(obj);
     } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
         pattern.waveType = scene::WaveType::Triangle;  // their default wave
     }
     pigment.setPattern(pattern);
+}
+
+void Interpreter::closeListPattern(const scene::Pattern& pattern) {
+    if (pattern.kind == scene::PatternKind::Object) expect(Sym::RBrace, "'}' closing 'object'");
 }
 
 bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
@@ -213,9 +245,14 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
                     n.isIdentifier() && lookup(std::string(n.text)) &&
                     std::holds_alternative<PigmentPtr>(*lookup(std::string(n.text)));
                 if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
+                // povray's object pattern takes colours only in a pigment.
+                if (*kind == scene::PatternKind::Object &&
+                    (n.is(Keyword::kw_pigment) || isPigmentId))
+                    fail(n, "the object pattern takes colours, not pigments");
                 list[i] = parsePigmentListEntry();
             }
             pigment.setList(std::move(list));
+            closeListPattern(pigment.pattern());
         }
         return true;
     }
@@ -426,6 +463,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                 }
                 while (static_cast<int>(normal.map.size()) < count)
                     normal.map.push_back({static_cast<double>(normal.map.size()), nullptr});
+                closeListPattern(holder.pattern());
                 continue;
             }
             if (normal.mapMode == scene::Normal::MapMode::List)
