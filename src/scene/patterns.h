@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/crackle.h"
+#include "scene/facets.h"
 #include "scene/fractals.h"
 #include "scene/image_map.h"
 #include "scene/noise.h"
@@ -44,6 +45,8 @@ enum class PatternKind {
     PigmentPattern,
     // object { }: a list pattern, index 1 inside the object, 0 outside
     Object,
+    // facets (normals only, facets.h)
+    Facets,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
     Bozo,
@@ -96,6 +99,7 @@ struct Pattern {
     std::shared_ptr<const CompiledFunction> function;  // function { ... }
     CrackleSettings crackle;                           // crackle's form, metric, offset, solid
     FractalSettings fractal;                           // mandel, julia and magnet
+    FacetsSettings facets;                             // facets (normals only)
     std::shared_ptr<const Pigment> pigment;            // pigment_pattern
     std::shared_ptr<const Object> object;              // object
     // The pattern's own `turbulence`: applied after every warp and

@@ -304,7 +304,8 @@ class Interpreter {
     // A pattern keyword and its arguments (gradient's vector...), without
     // a colour list; isPatternKeyword tells whether `t` is one.
     bool isPatternKeyword(const Token& t) const;
-    void parsePatternKeyword(scene::Pigment& holder);
+    // `inNormal`: the pattern belongs to a normal (facets is allowed).
+    void parsePatternKeyword(scene::Pigment& holder, bool inNormal = false);
     // The object pattern's list entries sit inside its braces: callers
     // call this after reading a list pattern's entries.
     void closeListPattern(const scene::Pattern& pattern);

@@ -92,6 +92,8 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::PigmentPattern;
         case Keyword::kw_object:
             return PatternKind::Object;
+        case Keyword::kw_facets:
+            return PatternKind::Facets;
         default:
             return std::nullopt;
     }
@@ -174,9 +176,11 @@ bool Interpreter::isPatternKeyword(const Token& t) const {
     return patternKeyword(t.kw).has_value();
 }
 
-void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
+void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
     const Token item = next();
     const scene::PatternKind kind = *patternKeyword(item.kw);
+    if (kind == scene::PatternKind::Facets && !inNormal)
+        fail(item, "'facets' can only be used in a normal");
     scene::Pattern pattern = pigment.pattern();
     pattern.kind = kind;
     if (kind == scene::PatternKind::Gradient) {
@@ -370,6 +374,21 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             next();
             editPattern([&](scene::Pattern& p) { p.crackle.solid = true; });
             return true;
+        case Keyword::kw_coords:
+        case Keyword::kw_size: {
+            if (pigment.pattern().kind != scene::PatternKind::Facets) return false;
+            next();
+            const double v = parseFloat();
+            editPattern([&](scene::Pattern& p) {
+                // coords C tilts by C (the cell size stays `size`);
+                // measured: the coords value does not scale the cells.
+                if (item.kw == Keyword::kw_coords)
+                    p.facets.coords = v;
+                else
+                    p.facets.size = v;
+            });
+            return true;
+        }
         case Keyword::kw_agate_turb: {
             next();
             const double a = parseFloat();
@@ -447,7 +466,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             continue;
         }
         if (patternKeyword(item.kw)) {
-            parsePatternKeyword(holder);
+            parsePatternKeyword(holder, true);
             havePattern = true;
             if (holder.pattern().isList()) {
                 // A list pattern takes one normal per index.
