@@ -487,7 +487,12 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             }
             if (normal.mapMode == scene::Normal::MapMode::List)
                 normal.mapMode = scene::Normal::MapMode::None;
-            // An optional bump size follows the pattern.
+            // An optional bump size follows the pattern; the fractals write
+            // it after a comma (mandel ITERATIONS, BUMP_SIZE).
+            if (holder.pattern().kind == scene::PatternKind::Fractal && accept(Sym::Comma)) {
+                normal.amount = parseFloat();
+                continue;
+            }
             if (bumpSizeFollows()) normal.amount = parseFloat();
             continue;
         }
