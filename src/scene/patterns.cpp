@@ -53,6 +53,40 @@ int hexagonIndex(const Vec3& p) {
     return static_cast<int>(m < 0 ? m + 3 : m);
 }
 
+// Unit squares in the xz plane coloured so that no two sharing an edge or
+// a corner match: going round a 2×2 block from the origin's square the
+// indices are 0, 1 (z + 1), 2 (x + 1, z + 1), 3 (x + 1) (measured).
+int squareIndex(const Vec3& p) {
+    const auto ix = static_cast<long long>(std::floor(p.x + kBlockTolerance));
+    const auto iz = static_cast<long long>(std::floor(p.z + kBlockTolerance));
+    const int zOdd = static_cast<int>(iz & 1);
+    return (ix & 1) == 0 ? zOdd : 3 - zOdd;
+}
+
+// Equilateral triangles of unit side in the xz plane, in rows along x of
+// height sqrt(3)/2. In the sheared coordinates u = x - z/sqrt3,
+// v = 2z/sqrt3 every unit cell holds a lower and an upper triangle; with
+// k = (floor u - floor v) mod 3 the lower one takes (6 - 2k) mod 6 and the
+// upper one (3 + 2k) mod 6 (measured from povray's renders).
+int triangularIndex(const Vec3& p) {
+    constexpr double kSqrt3 = 1.7320508075688772;
+    const double u = p.x - p.z / kSqrt3, v = p.z * 2.0 / kSqrt3;
+    const double fu = std::floor(u), fv = std::floor(v);
+    long long k = (static_cast<long long>(fu) - static_cast<long long>(fv)) % 3;
+    if (k < 0) k += 3;
+    const bool upper = (u - fu) + (v - fv) >= 1.0;
+    return static_cast<int>(upper ? (3 + 2 * k) % 6 : (6 - 2 * k) % 6);
+}
+
+// The six pyramids from the origin through the faces of a cube: +x 0,
+// +y 1, +z 2, -x 3, -y 4, -z 5 by the largest coordinate (measured).
+int cubicIndex(const Vec3& p) {
+    const double ax = std::abs(p.x), ay = std::abs(p.y), az = std::abs(p.z);
+    if (ax >= ay && ax >= az) return p.x >= 0 ? 0 : 3;
+    if (ay >= az) return p.y >= 0 ? 1 : 4;
+    return p.z >= 0 ? 2 : 5;
+}
+
 // Bricks of brickSize laid in courses along y.
 // The mortar fills the top end of each cell in every axis. Index 0 is the
 // mortar, 1 the brick.
@@ -254,6 +288,11 @@ int Pattern::listSize(PatternKind kind) {
         case PatternKind::Brick:
         case PatternKind::Object:
             return 2;
+        case PatternKind::Square:
+            return 4;
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return 6;
         default:
             return 0;
     }
@@ -270,6 +309,12 @@ int Pattern::index(const Vec3& point) const {
             return brickIndex(p, brickSize, mortar);
         case PatternKind::Object:
             return object && object->inside(p) ? 1 : 0;
+        case PatternKind::Square:
+            return squareIndex(p);
+        case PatternKind::Triangular:
+            return triangularIndex(p);
+        case PatternKind::Cubic:
+            return cubicIndex(p);
         default:
             return 0;
     }

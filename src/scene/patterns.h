@@ -28,6 +28,9 @@ enum class PatternKind {
     Checker,
     Hexagon,
     Brick,
+    Square,      // 4 colours
+    Triangular,  // 6 colours
+    Cubic,       // 6 colours
     // colour-mapped patterns
     Gradient,
     Onion,

@@ -34,6 +34,12 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Hexagon;
         case Keyword::kw_brick:
             return PatternKind::Brick;
+        case Keyword::kw_square:
+            return PatternKind::Square;
+        case Keyword::kw_triangular:
+            return PatternKind::Triangular;
+        case Keyword::kw_cubic:
+            return PatternKind::Cubic;
         case Keyword::kw_gradient:
             return PatternKind::Gradient;
         case Keyword::kw_onion:
@@ -110,6 +116,14 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
             return {blue, green, red};
         case PatternKind::Brick:
             return {Color(RGB(0.5)), Color(RGB(0.6, 0.15, 0.15))};
+        // square, triangular and cubic: red, green, blue, yellow, cyan,
+        // magenta (measured).
+        case PatternKind::Square:
+            return {red, green, blue, Color(RGB(1, 1, 0))};
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return {
+                red, green, blue, Color(RGB(1, 1, 0)), Color(RGB(0, 1, 1)), Color(RGB(1, 0, 1))};
         default:
             return {};
     }
@@ -249,10 +263,13 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
                     n.isIdentifier() && lookup(std::string(n.text)) &&
                     std::holds_alternative<PigmentPtr>(*lookup(std::string(n.text)));
                 if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
-                // povray's object pattern takes colours only in a pigment.
-                if (*kind == scene::PatternKind::Object &&
-                    (n.is(Keyword::kw_pigment) || isPigmentId))
-                    fail(n, "the object pattern takes colours, not pigments");
+                // povray's newer list patterns (object, square, triangular,
+                // cubic) take colours only in a pigment.
+                const bool coloursOnly = *kind != scene::PatternKind::Checker &&
+                                         *kind != scene::PatternKind::Hexagon &&
+                                         *kind != scene::PatternKind::Brick;
+                if (coloursOnly && (n.is(Keyword::kw_pigment) || isPigmentId))
+                    fail(n, fmt::format("the {} pattern takes colours, not pigments", item.text));
                 list[i] = parsePigmentListEntry();
             }
             pigment.setList(std::move(list));
