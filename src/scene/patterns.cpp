@@ -371,6 +371,8 @@ double Pattern::raw(const Vec3& p) const {
             return spiral(p, arms, true);
         case PatternKind::Cells:
             return cellsValue(p);
+        case PatternKind::DensityFile:
+            return density ? density->value(p, densityInterpolation) : 0.0;
         case PatternKind::PigmentPattern:
             return pigment ? pigmentGrey(pigment->at(p).rgb) : 0.0;
         case PatternKind::Bozo:

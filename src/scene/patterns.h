@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/crackle.h"
+#include "scene/density_file.h"
 #include "scene/facets.h"
 #include "scene/fractals.h"
 #include "scene/image_map.h"
@@ -50,6 +51,8 @@ enum class PatternKind {
     Object,
     // facets (normals only, facets.h)
     Facets,
+    // density_file df3 (density_file.h)
+    DensityFile,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
     Bozo,
@@ -105,6 +108,8 @@ struct Pattern {
     FacetsSettings facets;                             // facets (normals only)
     std::shared_ptr<const Pigment> pigment;            // pigment_pattern
     std::shared_ptr<const Object> object;              // object
+    std::shared_ptr<const DensityFile> density;        // density_file
+    int densityInterpolation = 0;                      // density_file's interpolate
     // The pattern's own `turbulence`: applied after every warp and
     // transformation, or used inside marble, wood and agate.
     std::optional<Turbulence> turbulence;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 #include "sdl/interpreter.h"
@@ -100,6 +101,8 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Object;
         case Keyword::kw_facets:
             return PatternKind::Facets;
+        case Keyword::kw_density_file:
+            return PatternKind::DensityFile;
         default:
             return std::nullopt;
     }
@@ -211,6 +214,30 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         parseFractalHead(item, pattern.fractal);
     } else if (kind == scene::PatternKind::Function) {
         pattern.function = parseXyzFunction(item);
+    } else if (kind == scene::PatternKind::DensityFile) {
+        // density_file df3 "NAME" [interpolate N]
+        const Token type = next();
+        if (!type.is(Keyword::kw_df3))
+            fail(type,
+                 fmt::format("expected 'df3' after 'density_file', found {}", describeToken(type)));
+        const Token at = peek();
+        const std::string name = parseString();
+        const std::filesystem::path path = findIncludeFile(name);
+        if (path.empty()) fail(at, fmt::format("Cannot open file '{}'.", name));
+        checkReadable(path, name, at);
+        try {
+            pattern.density =
+                std::make_shared<const scene::DensityFile>(scene::DensityFile::read(path));
+        } catch (const std::runtime_error& e) {
+            fail(at, e.what());
+        }
+        if (accept(Keyword::kw_interpolate)) {
+            const Token n = peek();
+            const double mode = parseFloat();
+            if (mode < 0 || mode > 2)
+                fail(n, fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
+            pattern.densityInterpolation = static_cast<int>(mode);
+        }
     } else if (kind == scene::PatternKind::PigmentPattern) {
         expect(Sym::LBrace, "'{' after 'pigment_pattern'");
         auto inner = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
