@@ -441,11 +441,16 @@ double Pattern::wave(double rawValue) const {
 
 double PatternFunction::eval(const double* args) const {
     const Vec3 p{args[0], args[1], args[2]};
-    // The object pattern's index goes through frequency, phase and the wave
-    // like a mapped pattern's value (measured); the other list patterns
-    // give their index as it is.
-    if (pattern_.kind == PatternKind::Object) return pattern_.wave(pattern_.index(p));
-    return pattern_.isList() ? pattern_.index(p) : pattern_.value(p);
+    if (!pattern_.isList()) return pattern_.value(p);
+    // A list pattern gives its index as it is (5 for cubic's -z) unless
+    // frequency, phase or the wave type differ from their defaults; then
+    // the index goes through them like a mapped value (measured: checker
+    // frequency 0.5 phase 0.1 gives 0.6 for index 1, brick frequency 3
+    // phase 0.2 gives fmod(3.2, 1.00001)).
+    const double index = pattern_.index(p);
+    const bool plain =
+        pattern_.frequency == 1 && pattern_.phase == 0 && pattern_.waveType == WaveType::Ramp;
+    return plain ? index : pattern_.wave(index);
 }
 
 }  // namespace frameray::scene

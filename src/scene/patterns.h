@@ -140,8 +140,9 @@ struct Pattern {
 };
 
 // `function { pattern { ... } }`: a pattern's value as a function of x, y,
-// z — the colour-list index for checker, hexagon and brick, otherwise the
-// value after frequency, phase and the wave (measured against povray).
+// z — the colour-list index for list patterns (through frequency, phase
+// and the wave when any of them is not the default), otherwise the value
+// after frequency, phase and the wave (measured against povray).
 class PatternFunction final : public NativeFunction {
   public:
     explicit PatternFunction(Pattern pattern) : pattern_(std::move(pattern)) {}

@@ -430,6 +430,9 @@ Value Interpreter::parsePatternFunctionBody() {
             holder.transform(step);
             continue;
         }
+        // povray 3.7 refuses square and triangular here (but not cubic).
+        if (item.is(Keyword::kw_square) || item.is(Keyword::kw_triangular))
+            fail(item, fmt::format("'{}' cannot be used in a pattern function", item.text));
         if (isPatternKeyword(item)) havePattern = true;
         if (parsePigmentPatternItem(holder)) continue;
         if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
