@@ -11,6 +11,7 @@ macro(frameray_require pkg debian_package)
     endif()
 endmacro()
 
+find_package(Threads REQUIRED)
 frameray_require(embree libembree-dev 3)
 frameray_require(TBB libtbb-dev)
 frameray_require(OpenImageIO libopenimageio-dev)

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "util/durable_file.h"
+
 namespace frameray::anim {
 
 using options::TextStream;
@@ -12,11 +14,13 @@ using options::TextStream;
 RunStreams::RunStreams(const options::RenderOptions& o) {
     const auto& all = o.streams[static_cast<int>(TextStream::All)];
     for (int i = 0; i < options::kTextStreams; ++i) {
-        streams_[i].console = o.streams[i].console && (i == static_cast<int>(TextStream::All) || all.console);
+        streams_[i].console =
+            o.streams[i].console && (i == static_cast<int>(TextStream::All) || all.console);
         if (o.streams[i].file.empty()) continue;
         streams_[i].file = std::fopen(o.streams[i].file.c_str(), "w");
         if (!streams_[i].file)
-            throw std::runtime_error(fmt::format("cannot create stream file '{}'", o.streams[i].file));
+            throw std::runtime_error(
+                fmt::format("cannot create stream file '{}'", o.streams[i].file));
     }
 }
 
@@ -55,11 +59,16 @@ void RunStreams::write(TextStream stream, const std::string& text) {
 
 TextStream toTextStream(sdl::Stream s) {
     switch (s) {
-        case sdl::Stream::Debug: return TextStream::Debug;
-        case sdl::Stream::Warning: return TextStream::Warning;
-        case sdl::Stream::Render: return TextStream::Render;
-        case sdl::Stream::Statistics: return TextStream::Statistic;
-        case sdl::Stream::Fatal: return TextStream::Fatal;
+        case sdl::Stream::Debug:
+            return TextStream::Debug;
+        case sdl::Stream::Warning:
+            return TextStream::Warning;
+        case sdl::Stream::Render:
+            return TextStream::Render;
+        case sdl::Stream::Statistics:
+            return TextStream::Statistic;
+        case sdl::Stream::Fatal:
+            return TextStream::Fatal;
     }
     return TextStream::Debug;
 }
@@ -97,8 +106,7 @@ std::string FrameLog::text() const {
 void FrameLog::save(const std::filesystem::path& path) const {
     std::lock_guard lock(mutex_);
     if (text_.empty()) return;
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text_;
+    util::writeFileDurably(path, text_);
 }
 
 }  // namespace frameray::anim

@@ -30,7 +30,7 @@ class ConsoleOverlay {
 };
 
 class RunStreams {
-public:
+  public:
     // Opens (truncates) the stream files the options name. Throws
     // std::runtime_error when one cannot be created.
     explicit RunStreams(const options::RenderOptions& options);
@@ -45,7 +45,7 @@ public:
     // Hidden before and shown after every console write; null: none.
     void setOverlay(ConsoleOverlay* overlay);
 
-private:
+  private:
     struct Stream {
         bool console = true;
         std::FILE* file = nullptr;
@@ -62,7 +62,7 @@ options::TextStream toTextStream(sdl::Stream s);
 // the run prints each frame's messages only once every earlier frame's are
 // out, so the console reads exactly as when frames run one after another.
 class FrameLog final : public sdl::MessageSink {
-public:
+  public:
     explicit FrameLog(RunStreams& streams, bool live = true) : streams_(streams), live_(live) {}
 
     void message(sdl::Stream stream, const std::string& text) override;
@@ -70,11 +70,12 @@ public:
     // Writes out what was held back, in order; later messages go straight
     // to the streams.
     void goLive();
-    // Writes everything logged so far; an empty log writes no file.
+    // Writes everything logged so far (on the device when it returns); an
+    // empty log writes no file. Throws std::runtime_error when it cannot.
     void save(const std::filesystem::path& path) const;
     std::string text() const;
 
-private:
+  private:
     RunStreams& streams_;
     mutable std::mutex mutex_;
     bool live_;

@@ -30,6 +30,7 @@
 #include "anim/memory_budget.h"
 #include "anim/progress.h"
 #include "anim/statistics.h"
+#include "image/codecs.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
 #include "render/gamma.h"
@@ -38,6 +39,7 @@
 #include "sdl/diagnostics.h"
 #include "sdl/interpreter.h"
 #include "sdl/token_cache.h"
+#include "util/durable_file.h"
 
 namespace frameray::anim {
 
@@ -49,7 +51,8 @@ namespace {
 
 const fs::path kDefaultLibrary = "/usr/share/povray-3.7/include";
 
-sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& seq, const FrameSpec& f) {
+sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& seq,
+                             const FrameSpec& f) {
     sdl::FrameContext ctx;
     ctx.clock = f.clock;
     ctx.clockDelta = f.clockDelta;
@@ -63,7 +66,8 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
     ctx.imageHeight = o.height;
     ctx.libraryPaths = o.libraryPaths;
     // The standard include files stay reachable even without a povray.ini.
-    if (std::find(ctx.libraryPaths.begin(), ctx.libraryPaths.end(), kDefaultLibrary) == ctx.libraryPaths.end())
+    if (std::find(ctx.libraryPaths.begin(), ctx.libraryPaths.end(), kDefaultLibrary) ==
+        ctx.libraryPaths.end())
         ctx.libraryPaths.push_back(kDefaultLibrary);
     ctx.declares = o.declares;
     ctx.version = o.version;
@@ -88,8 +92,8 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
     return ctx;
 }
 
-image::EncodedImage encode(const render::FrameImage& img, const render::GammaEncoding& gamma, int bitDepth,
-                           const RenderWindow& window) {
+image::EncodedImage encode(const render::FrameImage& img, const render::GammaEncoding& gamma,
+                           int bitDepth, const RenderWindow& window) {
     image::EncodedImage out;
     out.width = img.width;
     out.height = img.height;
@@ -114,9 +118,10 @@ std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq)
     std::error_code ec;
     // Shards share the images but not the journal (each has its own), so
     // the shard is not part of the settings.
-    std::string s = fmt::format("{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(),
-                                o.width, o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
-                                seq.window.x1, seq.window.y1, o.version, o.quality, o.includeHeader);
+    std::string s = fmt::format(
+        "{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(), o.width,
+        o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
+        seq.window.x1, seq.window.y1, o.version, o.quality, o.includeHeader);
     for (const auto& [k, v] : o.declares) s += fmt::format("|{}={}", k, v);
     for (const auto& p : o.libraryPaths) s += fmt::format("|{}", p.string());
     return hashText(s);
@@ -146,7 +151,8 @@ void removeStaleTemporaries(const Sequence& seq) {
             for (const std::string& target : names) {
                 long pid = 0;
                 if (!image::isTemporaryFor(name, target, pid)) continue;
-                if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0) continue;  // alive
+                if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
+                    continue;  // alive
                 fs::remove(entry.path(), ec);
                 break;
             }
@@ -181,7 +187,8 @@ struct Job {
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
     bool failed = false;  // the log holds the fatal message
-    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0, commitSeconds = 0;
+    double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0,
+           commitSeconds = 0;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -214,10 +221,11 @@ class Run {
         : o_(o),
           seq_(seq),
           streams_(o),
-          progress_(seq.animated
-                        ? progressModeFor(o.verbose, streams_.console(TextStream::Render), isatty(STDERR_FILENO) != 0)
-                        : ProgressMode::Silent,
-                    seq.frames.size(), [this](const std::string& line) { say(TextStream::Render, line); }) {
+          progress_(seq.animated ? progressModeFor(o.verbose, streams_.console(TextStream::Render),
+                                                   isatty(STDERR_FILENO) != 0)
+                                 : ProgressMode::Silent,
+                    seq.frames.size(),
+                    [this](const std::string& line) { say(TextStream::Render, line); }) {
         streams_.setOverlay(&progress_);
     }
     ~Run() {
@@ -231,14 +239,18 @@ class Run {
         if (o_.outputToFile && !seq_.frames.empty()) {
             std::error_code ec;
             for (const FrameSpec& f : seq_.frames)
-                if (!f.output.parent_path().empty()) fs::create_directories(f.output.parent_path(), ec);
-            if (!seq_.journal.parent_path().empty()) fs::create_directories(seq_.journal.parent_path(), ec);
+                if (!f.output.parent_path().empty())
+                    fs::create_directories(f.output.parent_path(), ec);
+            if (!seq_.journal.parent_path().empty())
+                fs::create_directories(seq_.journal.parent_path(), ec);
             removeStaleTemporaries(seq_);
-            journal_ = std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
+            journal_ =
+                std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
             if (journal_->discardedStale())
-                say(TextStream::Warning, fmt::format("frameray: the journal {} was written with other settings; "
-                                                     "rendering every frame again\n",
-                                                     seq_.journal.string()));
+                say(TextStream::Warning,
+                    fmt::format("frameray: the journal {} was written with other settings; "
+                                "rendering every frame again\n",
+                                seq_.journal.string()));
         }
         setEmergencyStop([this] { emergencyStop(); });
 
@@ -261,7 +273,8 @@ class Run {
         removeUnfinishedTemporaries();
         progress_.done();
         writeStatistics();
-        if (o_.verbose && seq_.animated) say(TextStream::Statistic, summaryTable(figures(), records_, kept_.size()));
+        if (o_.verbose && seq_.animated)
+            say(TextStream::Statistic, summaryTable(figures(), records_, kept_.size()));
 
         switch (outcome_.kind) {
             case Outcome::Kind::None:
@@ -326,26 +339,28 @@ class Run {
             std::unique_lock lock(doneMutex);
             while (!done) {
                 doneCv.wait_for(lock, std::chrono::milliseconds(50));
-                if (!done && stopRequested()) decide({Outcome::Kind::UserAbort, "", current_.load()});
+                if (!done && stopRequested())
+                    decide({Outcome::Kind::UserAbort, "", current_.load()});
                 progress_.tick();
             }
         });
         try {
-            tbb::parallel_pipeline(tokens,
-                                   tbb::make_filter<void, Job*>(tbb::filter_mode::serial_in_order,
-                                                                [this](tbb::flow_control& fc) -> Job* {
-                                                                    Job* job = nextJob();
-                                                                    if (!job) fc.stop();
-                                                                    return job;
-                                                                }) &
-                                       tbb::make_filter<Job*, Job*>(tbb::filter_mode::parallel,
-                                                                    [this](Job* job) {
-                                                                        renderJob(*job);
-                                                                        return job;
-                                                                    }) &
-                                       tbb::make_filter<Job*, void>(tbb::filter_mode::serial_in_order,
-                                                                    [this](Job* job) { finishJob(*job); }),
-                                   context_);
+            tbb::parallel_pipeline(
+                tokens,
+                tbb::make_filter<void, Job*>(tbb::filter_mode::serial_in_order,
+                                             [this](tbb::flow_control& fc) -> Job* {
+                                                 Job* job = nextJob();
+                                                 if (!job) fc.stop();
+                                                 return job;
+                                             }) &
+                    tbb::make_filter<Job*, Job*>(tbb::filter_mode::parallel,
+                                                 [this](Job* job) {
+                                                     renderJob(*job);
+                                                     return job;
+                                                 }) &
+                    tbb::make_filter<Job*, void>(tbb::filter_mode::serial_in_order,
+                                                 [this](Job* job) { finishJob(*job); }),
+                context_);
         } catch (...) {
             {
                 std::lock_guard lock(doneMutex);
@@ -426,17 +441,21 @@ class Run {
             --rendersLeft_;
             const auto start = Clock::now();
             try {
-                job.interpreter = std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame), cache_, *job.log);
+                job.interpreter = std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame),
+                                                                     cache_, *job.log);
                 job.scene.emplace(job.interpreter->parseFile(o_.inputFile));
             } catch (const sdl::SdlError& e) {
                 job.log->message(sdl::Stream::Fatal, e.what());
                 job.failed = true;
             } catch (const std::bad_alloc&) {
-                job.log->message(sdl::Stream::Fatal,
-                                 fmt::format("error: frame {}: out of memory while parsing the scene", frame.number));
+                job.log->message(
+                    sdl::Stream::Fatal,
+                    fmt::format("error: frame {}: out of memory while parsing the scene",
+                                frame.number));
                 job.failed = true;
             } catch (const std::exception& e) {
-                job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
+                job.log->message(sdl::Stream::Fatal,
+                                 fmt::format("error: frame {}: {}", frame.number, e.what()));
                 job.failed = true;
             }
             job.parseSeconds = secondsSince(start);
@@ -478,19 +497,22 @@ class Run {
             job.prepareSeconds = secondsSince(start);
             start = Clock::now();
             const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
-            const render::FrameImage image = render::renderFrame(world, frameSettings(gamma), job.stats);
+            const render::FrameImage image =
+                render::renderFrame(world, frameSettings(gamma), job.stats);
             job.shapeTests = world.shapeTests();
             job.renderSeconds = secondsSince(start);
             // Encoding, compression and the flush to disk happen here, in
             // parallel; stage 3 only renames and journals.
             if (o_.outputToFile && !decided_) {
                 start = Clock::now();
-                const fs::path temporary = image::writeTemporary(job.frame->output, seq_.fileType,
-                                                                 encode(image, gamma, o_.bitDepth, seq_.window));
+                const fs::path temporary =
+                    image::writeTemporary(job.frame->output, seq_.fileType,
+                                          encode(image, gamma, o_.bitDepth, seq_.window));
                 job.temporary = temporary;
                 const auto hash = hashFile(temporary, &job.fileSize);
                 if (!hash)
-                    throw std::runtime_error(fmt::format("cannot read back '{}' for the journal", temporary.string()));
+                    throw std::runtime_error(
+                        fmt::format("cannot read back '{}' for the journal", temporary.string()));
                 job.fileHash = *hash;
                 job.writeSeconds = secondsSince(start);
             }
@@ -498,12 +520,14 @@ class Run {
             job.log->message(sdl::Stream::Fatal, e.what());
             job.failed = true;
         } catch (const std::bad_alloc&) {
-            job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: out of memory while building or "
-                                                             "rendering the frame",
-                                                             job.frame->number));
+            job.log->message(sdl::Stream::Fatal,
+                             fmt::format("error: frame {}: out of memory while building or "
+                                         "rendering the frame",
+                                         job.frame->number));
             job.failed = true;
         } catch (const std::exception& e) {
-            job.log->message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", job.frame->number, e.what()));
+            job.log->message(sdl::Stream::Fatal,
+                             fmt::format("error: frame {}: {}", job.frame->number, e.what()));
             job.failed = true;
         }
         job.scene.reset();
@@ -524,7 +548,9 @@ class Run {
         job.log.reset();
         if (head_ < jobs_.size()) {
             Job& next = *jobs_[head_];
-            if (next.log) next.log->goLive();
+            // After a decided stop, later frames stay silent (povray stops
+            // at the frame that failed).
+            if (next.log && !decided_) next.log->goLive();
             current_ = next.kind == Job::Kind::Render ? next.frame : nullptr;
         } else {
             current_ = nullptr;
@@ -533,7 +559,8 @@ class Run {
 
     void finishInOrder(Job& job) {
         if (stopRequested())
-            return decide({Outcome::Kind::UserAbort, "", job.kind == Job::Kind::Render ? job.frame : nullptr});
+            return decide({Outcome::Kind::UserAbort, "",
+                           job.kind == Job::Kind::Render ? job.frame : nullptr});
         if (job.kind == Job::Kind::Stop) return decide(job.stop);
         const FrameSpec& frame = *job.frame;
         const size_t index = job.position + 1;
@@ -542,8 +569,9 @@ class Run {
             kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});
             progress_.finished(frame.number, true);
             if (o_.verbose)
-                say(TextStream::Render, fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
-                                                    frame.number, index, seq_.frames.size(), frame.output.string()));
+                say(TextStream::Render,
+                    fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
+                                frame.number, index, seq_.frames.size(), frame.output.string()));
             return;
         }
         FrameLog& log = *job.log;
@@ -554,33 +582,42 @@ class Run {
                 job.temporary.clear();
                 if (journal_) {
                     std::lock_guard lock(journalMutex_);
-                    journal_->record(frame.number, clockText(frame.clock), frame.output, job.fileSize, job.fileHash);
+                    journal_->record(frame.number, clockText(frame.clock), frame.output,
+                                     job.fileSize, job.fileHash);
                 }
             } catch (const std::exception& e) {
-                log.message(sdl::Stream::Fatal, fmt::format("error: frame {}: {}", frame.number, e.what()));
+                log.message(sdl::Stream::Fatal,
+                            fmt::format("error: frame {}: {}", frame.number, e.what()));
                 job.failed = true;
             }
             job.commitSeconds = secondsSince(start);
             job.writeSeconds += job.commitSeconds;
         }
         if (job.failed) {
-            if (o_.outputToFile) log.save(frame.log);
+            if (o_.outputToFile) saveLog(log, frame);
             return decide({Outcome::Kind::Fatal, "", &frame});
         }
         ++finished_;
-        records_.push_back({frame.number, frame.clock, frame.output.filename().string(), job.stats.rays,
-                            std::move(job.shapeTests), job.parseSeconds, job.prepareSeconds, job.renderSeconds,
-                            job.writeSeconds, job.commitSeconds});
-        const double seconds = job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
-        const std::string where = o_.outputToFile ? frame.output.string() : std::string("(no file)");
+        records_.push_back({frame.number, frame.clock, frame.output.filename().string(),
+                            job.stats.rays, std::move(job.shapeTests), job.parseSeconds,
+                            job.prepareSeconds, job.renderSeconds, job.writeSeconds,
+                            job.commitSeconds});
+        const double seconds =
+            job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
+        const std::string where =
+            o_.outputToFile ? frame.output.string() : std::string("(no file)");
         if (o_.verbose) {
-            log.message(TextStream::Render,
-                        fmt::format("frame {} ({} of {}): {}\n", frame.number, index, seq_.frames.size(), where));
-            log.message(TextStream::Statistic,
-                        fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n", frame.number, seconds,
-                                    job.stats.rays.camera, job.stats.rays.shadow));
+            log.message(TextStream::Render, fmt::format("frame {} ({} of {}): {}\n", frame.number,
+                                                        index, seq_.frames.size(), where));
+            log.message(
+                TextStream::Statistic,
+                fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n", frame.number,
+                            seconds, job.stats.rays.camera, job.stats.rays.shadow));
         }
-        if (o_.outputToFile) log.save(frame.log);
+        // The image is complete and journalled already: a log that cannot
+        // be written ends the run but keeps the frame.
+        if (o_.outputToFile && !saveLog(log, frame))
+            return decide({Outcome::Kind::Fatal, "", &frame});
         progress_.finished(frame.number, false);
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
             case HookAction::Continue:
@@ -594,6 +631,18 @@ class Run {
                 return decide({Outcome::Kind::UserAbort, "", nullptr});
             case HookAction::Fatal:
                 return decide({Outcome::Kind::Fatal, "Post_Frame_Command failed", &frame});
+        }
+    }
+
+    // Writes the frame's log; on failure says why (on the console: the log
+    // itself is what failed) and returns false.
+    bool saveLog(FrameLog& log, const FrameSpec& frame) const {
+        try {
+            log.save(frame.log);
+            return true;
+        } catch (const std::exception& e) {
+            say(TextStream::Fatal, fmt::format("error: frame {}: {}\n", frame.number, e.what()));
+            return false;
         }
     }
 
@@ -621,20 +670,10 @@ class Run {
         const fs::path dir = seq_.frames.front().output.parent_path();
         const fs::path path = (dir.empty() ? fs::path(".") : dir) / seq_.statisticsName;
         const std::string text = sequenceJson(figures(), records_, kept_);
-        const fs::path temporary = path.parent_path() / fmt::format(".{}.{}.tmp", seq_.statisticsName, getpid());
-        {
-            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-            out << text;
-            if (!out) {
-                say(TextStream::Warning, fmt::format("frameray: warning: cannot write {}\n", path.string()));
-                return;
-            }
-        }
-        std::error_code ec;
-        fs::rename(temporary, path, ec);
-        if (ec) {
-            fs::remove(temporary, ec);
-            say(TextStream::Warning, fmt::format("frameray: warning: cannot write {}\n", path.string()));
+        try {
+            util::replaceFileDurably(path, text);
+        } catch (const std::exception& e) {
+            say(TextStream::Warning, fmt::format("frameray: warning: {}\n", e.what()));
         }
     }
 
@@ -682,9 +721,10 @@ class Run {
     }
 
     std::string stopMessage() const {
-        return fmt::format("frameray: interrupted; {} of {} frames are finished{}\n", finished_.load(),
-                           seq_.frames.size(),
-                           journal_ ? " - run again with +C (Continue_Trace=on) to render the rest" : "");
+        return fmt::format(
+            "frameray: interrupted; {} of {} frames are finished{}\n", finished_.load(),
+            seq_.frames.size(),
+            journal_ ? " - run again with +C (Continue_Trace=on) to render the rest" : "");
     }
 
     int userAbort() {
@@ -749,11 +789,15 @@ class Run {
 }  // namespace
 
 int runSequence(const options::RenderOptions& o, const Sequence& seq) {
+    // The image module (OpenImageIO) loads on another core while the first
+    // frame parses (image/codecs.h).
+    if (o.outputToFile && !seq.frames.empty()) image::preloadCodecs();
     if (seq.frames.empty()) {
         // More shards than frames: nothing is this shard's.
         if (o.verbose)
-            std::fprintf(stderr, "frameray: shard %d of %d has no frames of the %zu in the sequence\n", seq.shardIndex,
-                         seq.shardCount, seq.framesInAllShards);
+            std::fprintf(stderr,
+                         "frameray: shard %d of %d has no frames of the %zu in the sequence\n",
+                         seq.shardIndex, seq.shardCount, seq.framesInAllShards);
         return 0;
     }
     // Shell-outs are refused before anything runs unless allowed.

@@ -1,12 +1,13 @@
 #include "anim/journal.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "util/durable_file.h"
 
 namespace frameray::anim {
 
@@ -24,11 +25,20 @@ void fnv(std::uint64_t& h, const char* data, size_t n) {
     }
 }
 
-std::string header(std::uint64_t settingsHash) { return fmt::format("frameray-journal 1 {:016x}", settingsHash); }
+std::string header(std::uint64_t settingsHash) {
+    return fmt::format("frameray-journal 1 {:016x}", settingsHash);
+}
+
+std::string entryLine(const JournalEntry& e) {
+    return fmt::format("frame {} {} {} {:016x} {}\n", e.number, e.clock, e.size, e.hash,
+                       e.fileName);
+}
 
 }  // namespace
 
-std::string clockText(double clock) { return fmt::format("{:.17g}", clock); }
+std::string clockText(double clock) {
+    return fmt::format("{:.17g}", clock);
+}
 
 std::uint64_t hashText(const std::string& text) {
     std::uint64_t h = kFnvOffset;
@@ -67,7 +77,9 @@ Journal::Journal(fs::path path, std::uint64_t settingsHash, bool resume) : path_
                     std::istringstream ls(line);
                     std::string word, hashHex;
                     JournalEntry e;
-                    if (!(ls >> word >> e.number >> e.clock >> e.size >> hashHex) || word != "frame") continue;
+                    if (!(ls >> word >> e.number >> e.clock >> e.size >> hashHex) ||
+                        word != "frame")
+                        continue;
                     ls >> std::ws;
                     std::getline(ls, e.fileName);
                     if (hashHex.size() != 16 || e.fileName.empty()) continue;
@@ -86,33 +98,17 @@ Journal::Journal(fs::path path, std::uint64_t settingsHash, bool resume) : path_
     if (keep) {
         // Rewrite the journal with the entries kept, so a cut-off last line
         // does not glue itself to the next record.
-        const fs::path tmp = path_.string() + ".tmp";
-        std::FILE* f = std::fopen(tmp.c_str(), "w");
-        if (!f) throw std::runtime_error(fmt::format("cannot write the journal '{}'", tmp.string()));
-        std::fprintf(f, "%s\n", header(settingsHash).c_str());
-        for (const auto& [n, e] : entries_)
-            std::fprintf(f, "frame %d %s %ju %016llx %s\n", e.number, e.clock.c_str(), e.size,
-                         static_cast<unsigned long long>(e.hash), e.fileName.c_str());
-        std::fflush(f);
-        fsync(fileno(f));
-        std::fclose(f);
-        std::error_code ec;
-        fs::rename(tmp, path_, ec);
-        if (ec) throw std::runtime_error(fmt::format("cannot write the journal '{}': {}", path_.string(), ec.message()));
-        file_ = std::fopen(path_.c_str(), "a");
+        std::string text = header(settingsHash) + "\n";
+        for (const auto& [n, e] : entries_) text += entryLine(e);
+        util::replaceFileDurably(path_, text);
+        file_ = std::make_unique<util::DurableAppendFile>(path_, false);
     } else {
-        file_ = std::fopen(path_.c_str(), "w");
-        if (file_) {
-            std::fprintf(file_, "%s\n", header(settingsHash).c_str());
-            std::fflush(file_);
-        }
+        file_ = std::make_unique<util::DurableAppendFile>(path_, true);
+        file_->append(header(settingsHash) + "\n");
     }
-    if (!file_) throw std::runtime_error(fmt::format("cannot write the journal '{}'", path_.string()));
 }
 
-Journal::~Journal() {
-    if (file_) std::fclose(file_);
-}
+Journal::~Journal() = default;
 
 bool Journal::verified(int number, const std::string& clock, const fs::path& image) const {
     const auto it = entries_.find(number);
@@ -130,17 +126,17 @@ bool Journal::verified(int number, const std::string& clock, const fs::path& ima
 void Journal::record(int number, const std::string& clock, const fs::path& image) {
     std::uintmax_t size = 0;
     const auto h = hashFile(image, &size);
-    if (!h) throw std::runtime_error(fmt::format("cannot read back '{}' for the journal", image.string()));
+    if (!h)
+        throw std::runtime_error(
+            fmt::format("cannot read back '{}' for the journal", image.string()));
     record(number, clock, image, size, *h);
 }
 
-void Journal::record(int number, const std::string& clock, const fs::path& image, std::uintmax_t size,
-                     std::uint64_t hash) {
-    std::fprintf(file_, "frame %d %s %ju %016llx %s\n", number, clock.c_str(), size,
-                 static_cast<unsigned long long>(hash), image.filename().c_str());
-    std::fflush(file_);
-    fsync(fileno(file_));
-    entries_[number] = JournalEntry{number, clock, size, hash, image.filename().string()};
+void Journal::record(int number, const std::string& clock, const fs::path& image,
+                     std::uintmax_t size, std::uint64_t hash) {
+    const JournalEntry e{number, clock, size, hash, image.filename().string()};
+    file_->append(entryLine(e));
+    entries_[number] = e;
 }
 
 }  // namespace frameray::anim

@@ -10,11 +10,15 @@
 #pragma once
 
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+
+namespace frameray::util {
+class DurableAppendFile;
+}
 
 namespace frameray::anim {
 
@@ -27,11 +31,12 @@ struct JournalEntry {
 };
 
 // FNV-1a 64 of a file's bytes; nullopt when it cannot be read.
-std::optional<std::uint64_t> hashFile(const std::filesystem::path& path, std::uintmax_t* sizeOut = nullptr);
+std::optional<std::uint64_t> hashFile(const std::filesystem::path& path,
+                                      std::uintmax_t* sizeOut = nullptr);
 std::uint64_t hashText(const std::string& text);
 
 class Journal {
-public:
+  public:
     // Reads `path` when `resume` is set and its settings hash matches;
     // otherwise starts it afresh. Throws std::runtime_error when it cannot
     // be written.
@@ -47,17 +52,17 @@ public:
     void record(int number, const std::string& clock, const std::filesystem::path& image);
     // The same with the file's size and hash already known (hashed off the
     // serial stage, from the temporary file before its rename).
-    void record(int number, const std::string& clock, const std::filesystem::path& image, std::uintmax_t size,
-                std::uint64_t hash);
+    void record(int number, const std::string& clock, const std::filesystem::path& image,
+                std::uintmax_t size, std::uint64_t hash);
 
     // Whether a resume found an older journal written with other settings.
     bool discardedStale() const { return discardedStale_; }
     const std::filesystem::path& path() const { return path_; }
 
-private:
+  private:
     std::filesystem::path path_;
     std::map<int, JournalEntry> entries_;
-    std::FILE* file_ = nullptr;
+    std::unique_ptr<util::DurableAppendFile> file_;
     bool discardedStale_ = false;
 };
 

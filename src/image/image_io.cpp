@@ -1,7 +1,5 @@
 #include "image/image_io.h"
 
-#include <OpenImageIO/imageio.h>
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -11,7 +9,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "image/codecs.h"
 #include "image/gif_decoder.h"
+#include "util/durable_file.h"
 
 namespace frameray::image {
 
@@ -25,10 +25,11 @@ struct TypeInfo {
     const char* extension;
 };
 constexpr TypeInfo kTypes[] = {
-    {FileType::PNG, "png", ".png"},   {FileType::TGA, "targa", ".tga"}, {FileType::TGA_RLE, "targa", ".tga"},
-    {FileType::PPM, "pnm", ".ppm"},   {FileType::EXR, "openexr", ".exr"},
-    {FileType::HDR, "hdr", ".hdr"},   {FileType::JPEG, "jpeg", ".jpg"},
-    {FileType::TIFF, "tiff", ".tif"}, {FileType::BMP, "bmp", ".bmp"},
+    {FileType::PNG, "png", ".png"},       {FileType::TGA, "targa", ".tga"},
+    {FileType::TGA_RLE, "targa", ".tga"}, {FileType::PPM, "pnm", ".ppm"},
+    {FileType::EXR, "openexr", ".exr"},   {FileType::HDR, "hdr", ".hdr"},
+    {FileType::JPEG, "jpeg", ".jpg"},     {FileType::TIFF, "tiff", ".tif"},
+    {FileType::BMP, "bmp", ".bmp"},
 };
 
 const TypeInfo& info(FileType t) {
@@ -51,14 +52,19 @@ std::vector<T> quantize(const std::vector<float>& values, int bits, double conta
     return out;
 }
 
-bool hasDeepChannels(FileType t) { return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF; }
+bool hasDeepChannels(FileType t) {
+    return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF;
+}
 
 }  // namespace
 
-const char* extensionFor(FileType type) { return info(type).extension; }
+const char* extensionFor(FileType type) {
+    return info(type).extension;
+}
 
 fs::path temporaryPathFor(const fs::path& path) {
-    return path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
+    return path.parent_path() /
+           fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
 }
 
 bool isTemporaryFor(const std::string& name, const std::string& target, long& pid) {
@@ -78,76 +84,51 @@ void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image)
 
 fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage& image) {
     const TypeInfo& ti = info(type);
-    auto out = OIIO::ImageOutput::create(ti.oiioFormat);
-    if (!out) throw std::runtime_error(fmt::format("no image writer for {}: {}", ti.oiioFormat, OIIO::geterror()));
-
     const bool floatFile = type == FileType::EXR || type == FileType::HDR;
     const int bits = std::clamp(image.bitDepth, 1, hasDeepChannels(type) ? 16 : 8);
     const bool deep = bits > 8;
-    const OIIO::TypeDesc format =
-        floatFile ? OIIO::TypeDesc::HALF : (deep ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, format);
-    if (image.channels == 4) spec.alpha_channel = 3;
-    if (type == FileType::TGA_RLE) spec.attribute("compression", "rle");
-    if (type == FileType::TGA) spec.attribute("compression", "none");
-
-    // Unique per process and target, in the same folder so rename is atomic.
-    const fs::path tmp = temporaryPathFor(path);
-    if (!out->open(tmp.string(), spec))
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(), out->geterror()));
-    bool ok;
+    EncodeRequest request;
+    request.format = ti.oiioFormat;
+    request.width = image.width;
+    request.height = image.height;
+    request.channels = image.channels;
+    if (type == FileType::TGA_RLE) request.compression = "rle";
+    if (type == FileType::TGA) request.compression = "none";
+    std::vector<uint16_t> samples16;
+    std::vector<uint8_t> samples8;
     if (floatFile) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.values.data());
+        request.pixelType = PixelType::Half;
+        request.pixels = image.values.data();
     } else if (deep) {
-        const auto q = quantize<uint16_t>(image.values, bits, 65535.0);
-        ok = out->write_image(OIIO::TypeDesc::UINT16, q.data());
+        samples16 = quantize<uint16_t>(image.values, bits, 65535.0);
+        request.pixelType = PixelType::UInt16;
+        request.pixels = samples16.data();
     } else {
-        const auto q = quantize<uint8_t>(image.values, bits, 255.0);
-        ok = out->write_image(OIIO::TypeDesc::UINT8, q.data());
+        samples8 = quantize<uint8_t>(image.values, bits, 255.0);
+        request.pixelType = PixelType::UInt8;
+        request.pixels = samples8.data();
     }
-    const std::string writeError = ok ? std::string() : out->geterror();
-    ok = out->close() && ok;
-    std::error_code ec;
-    if (!ok) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot write '{}': {}", path.string(),
-                                             writeError.empty() ? out->geterror() : writeError));
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = codecs().encode(request);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(fmt::format("cannot encode '{}': {}", path.string(), e.what()));
     }
-    // On disk before it is renamed and journalled: a frame the journal
-    // calls finished must survive a power cut.
-    const int fd = ::open(tmp.c_str(), O_RDONLY);
-    const bool synced = fd >= 0 && ::fsync(fd) == 0;
-    if (fd >= 0) ::close(fd);
-    if (!synced) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot write '{}': cannot flush it to disk", path.string()));
-    }
+    // Unique per process and target, in the same folder so the rename is
+    // atomic; on the device before it is renamed and journalled, so a frame
+    // the journal calls finished survives a power cut.
+    const fs::path tmp = temporaryPathFor(path);
+    util::writeFileDurably(
+        tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
     return tmp;
 }
 
 void commitTemporary(const fs::path& tmp, const fs::path& path) {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(fmt::format("cannot move the finished frame to '{}': {}", path.string(), ec.message()));
-    }
+    util::renameDurably(tmp, path);
 }
 
 EncodedImage read(const fs::path& path) {
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    EncodedImage img;
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    img.bitDepth = static_cast<int>(spec.format.size() * 8);
-    img.values.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.values.data()))
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), in->geterror()));
-    in->close();
-    return img;
+    return codecs().read(path.string());
 }
 
 namespace {
@@ -179,29 +160,7 @@ SourceImage readSource(const fs::path& path) {
         src.palette = std::move(gif.palette);
         return src;
     }
-    // Keep alpha as stored: OpenImageIO would otherwise multiply it into
-    // the colour of PNG and TGA files.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in)
-        throw std::runtime_error(
-            fmt::format("cannot read '{}': {}", path.string(), OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    EncodedImage& img = src.pixels;
-    img.width = spec.width;
-    img.height = spec.height;
-    // Channels past RGBA (EXR layers) are not needed.
-    const int channels = std::min(spec.nchannels, 4);
-    img.channels = channels;
-    img.bitDepth = static_cast<int>(spec.format.size() * 8);
-    img.values.resize(static_cast<size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.values.data()))
-        throw std::runtime_error(
-            fmt::format("cannot read '{}': {}", path.string(), in->geterror()));
-    src.declaredGamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
-    in->close();
-    return src;
+    return codecs().readSource(path.string());
 }
 
 }  // namespace frameray::image

@@ -175,8 +175,19 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     Vec3 geometric = obj.normalAt(p);
     // Shade the side facing the viewer.
     if (dot(geometric, viewDir) > 0) geometric = -geometric;
-    return shadeTexture(obj.texture ? *obj.texture : defaultTexture(), ray, obj, p, p, viewDir,
-                        geometric, state, counts);
+    const scene::Texture& own = obj.texture ? *obj.texture : defaultTexture();
+    if (obj.componentTextures.empty())
+        return shadeTexture(own, ray, obj, p, p, viewDir, geometric, state, counts);
+    // A blob's component textures: each is shaded and the colours blended
+    // (as povray 3.7 does). povray skips a texture whose weight is under
+    // adc_bailout without giving its share to the others (measured: weights
+    // under 1/255 leave no trace, at every threshold).
+    RGB color(0.0);
+    obj.visitTextures(p, own, [&](const scene::Texture& t, double w) {
+        if (w * state.weight < scene_.globals.adcBailout) return;
+        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, state, counts) * w;
+    });
+    return color;
 }
 
 RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray,

@@ -232,9 +232,20 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
     Hit hit;
     while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
         const scene::Object& obj = *hit.object;
-        if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
         const Vec3 p = ray.at(hit.t);
-        const RGB through = obj.texture->throughAt(p);
+        RGB through(0.0);
+        if (obj.componentTextures.empty()) {
+            if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
+            through = obj.texture->throughAt(p);
+        } else {
+            // A blob's component textures, blended as for shading (an
+            // untextured part with the default texture is opaque).
+            const scene::Texture opaque;
+            obj.visitTextures(p, obj.texture ? *obj.texture : opaque,
+                              [&](const scene::Texture& t, double w) {
+                                  if (&t != &opaque) through += t.throughAt(p) * w;
+                              });
+        }
         if (through.isBlack()) return RGB(0.0);
         passed *= through;
         if (passed.isBlack()) return passed;

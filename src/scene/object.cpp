@@ -1,7 +1,9 @@
 #include "scene/object.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include "scene/blob.h"
 #include "scene/csg.h"
 
 namespace frameray::scene {
@@ -75,6 +77,12 @@ void Object::transformBy(const Transform& t) {
         auto moved = std::make_shared<Texture>(*texture);
         moved->transformBy(t);
         texture = moved;
+    }
+    for (auto& component : componentTextures) {
+        if (!component) continue;
+        auto moved = std::make_shared<Texture>(*component);
+        moved->transformBy(t);
+        component = moved;
     }
 }
 
@@ -161,6 +169,8 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, Su
 
 bool Object::isPatch() const { return shape && shape->isPatch(); }
 
+bool Object::warnsAsPatch() const { return shape && shape->warnsAsPatch(); }
+
 namespace {
 
 
@@ -184,6 +194,29 @@ bool Object::insideInverted(const Vec3& p) const { return insideAs(*this, p, tru
 
 Vec3 Object::normalAt(const Vec3& p) const {
     return shape->worldNormal(transform.inversePoint(p), transform);
+}
+
+void Object::visitTextures(const Vec3& p, const Texture& own,
+                           const std::function<void(const Texture&, double)>& visit) const {
+    const auto* blob = dynamic_cast<const Blob*>(shape.get());
+    if (componentTextures.empty() || !blob) return visit(own, 1.0);
+    const Vec3 q = transform.inversePoint(p);
+    const auto& components = blob->components();
+    const size_t n = std::min(components.size(), componentTextures.size());
+    double total = 0;
+    for (size_t i = 0; i < n; ++i) total += std::fabs(components[i].field(q));
+    if (!(total > 0)) return visit(own, 1.0);
+    // The untextured components' shares go to the object's texture at once.
+    double ownWeight = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const double w = std::fabs(components[i].field(q)) / total;
+        if (w == 0) continue;
+        if (componentTextures[i])
+            visit(*componentTextures[i], w);
+        else
+            ownWeight += w;
+    }
+    if (ownWeight > 0) visit(own, ownWeight);
 }
 
 // --- bounds -----------------------------------------------------------------

@@ -9,11 +9,12 @@
 // queries below take and return world-space values.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
-#include "scene/shapes.h"
 #include "scene/interior.h"
+#include "scene/shapes.h"
 #include "scene/texture.h"
 
 namespace frameray::scene {
@@ -49,6 +50,11 @@ struct Object {
     // Null: the nearest ancestor's texture, finally the default texture
     // (resolved once the object is placed in the scene, see csg.h).
     std::shared_ptr<const Texture> texture;
+    // A blob whose components carry textures: one per component (null: the
+    // object's own texture), blended at each point by how much each
+    // component adds to the field there (povray 3.7: weights |field_i| /
+    // sum |field_j|, measured). Empty for everything else.
+    std::vector<std::shared_ptr<const Texture>> componentTextures;
     // Null: the nearest ancestor's interior, finally none (air, ior 1).
     // Primitives sharing one Interior are one region for refraction.
     std::shared_ptr<const Interior> interior;
@@ -86,6 +92,11 @@ struct Object {
     bool insideInverted(const Vec3& p) const;
     // Unit normal of a primitive's surface at a world point on it.
     Vec3 normalAt(const Vec3& p) const;
+    // The textures colouring world point p and their weights (summing to
+    // 1): `own` (the object's resolved texture) alone, except for a blob
+    // with componentTextures.
+    void visitTextures(const Vec3& p, const Texture& own,
+                       const std::function<void(const Texture&, double)>& visit) const;
 
     // Conservative world bounds of what a ray can hit, and of where
     // inside() can be true. Empty when there is nothing; infinite when
@@ -99,6 +110,7 @@ struct Object {
     // Whether nothing can ever be inside, inverted or not (patches, and
     // CSG built from them only in ways that keep this).
     bool isPatch() const;
+    bool warnsAsPatch() const;
 };
 
 }  // namespace frameray::scene

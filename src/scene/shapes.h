@@ -39,6 +39,9 @@ public:
     // whether or not they are inverted (povray: "Patch objects not allowed
     // in intersection", and difference { sphere triangle } keeps no sphere).
     virtual bool isPatch() const { return false; }
+    // Whether povray warns "Patch objects not allowed in intersection" for
+    // it (not for a parametric, which encloses nothing all the same).
+    virtual bool warnsAsPatch() const { return isPatch(); }
     // Object-space bounds of the surface; Bounds::infinite() for unbounded
     // shapes.
     virtual Bounds bounds() const = 0;

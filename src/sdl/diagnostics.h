@@ -3,6 +3,7 @@
 // macro chain that led there); and "did you mean" spelling suggestions.
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -24,11 +25,15 @@ std::string formatNotes(const std::vector<std::string>& notes);
 
 // Thrown for any error in a scene file; what() is the full formatted
 // diagnostic followed by its notes. One error ends the frame's parse.
+// The error keeps its source file alive: a lexer error in an include file
+// unwinds past the last owner of that file, and the location is read again
+// when the include chain is added.
 class SdlError : public std::runtime_error {
   public:
     SdlError(const SourceLoc& loc, const std::string& message, std::vector<std::string> notes = {})
         : std::runtime_error(formatDiagnostic(Severity::Error, loc, message) + formatNotes(notes)),
           loc_(loc),
+          file_(loc.file ? loc.file->weak_from_this().lock() : nullptr),
           message_(message),
           notes_(std::move(notes)) {}
 
@@ -38,6 +43,7 @@ class SdlError : public std::runtime_error {
 
   private:
     SourceLoc loc_;
+    std::shared_ptr<const SourceFile> file_;
     std::string message_;
     std::vector<std::string> notes_;
 };

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "sdl/float_functions.h"
+#include "scene/noise.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
@@ -143,6 +144,19 @@ bool Interpreter::startsStringExpression(const Token& t) {
     return t.kind == TokenKind::Word &&
            std::find(std::begin(kStringFunctions), std::end(kStringFunctions), t.kw) !=
                std::end(kStringFunctions);
+}
+
+std::string Interpreter::parsePathname() {
+    const bool outer = pathnameMode_;
+    pathnameMode_ = true;
+    try {
+        std::string name = parseString();
+        pathnameMode_ = outer;
+        return name;
+    } catch (...) {
+        pathnameMode_ = outer;
+        throw;
+    }
 }
 
 std::string Interpreter::parseString() {
@@ -524,9 +538,21 @@ Value Interpreter::parsePrimary() {
         case TokenKind::Number:
             next();
             return t.number;
-        case TokenKind::String:
+        case TokenKind::String: {
+            const TokenizedFile& file = *cursors_.back().file;
+            if (pathnameMode_) {
+                next();
+                return file.rawString(t);
+            }
+            if (t.unknownEscape) {
+                const SourceLoc at{file.source.get(), t.line, file.unknownEscapeColumn(t)};
+                throw SdlError(at,
+                               "illegal escape sequence in string (a '\\' must be written '\\\\')",
+                               includeChain(at));
+            }
             next();
             return std::string(t.text);
+        }
         case TokenKind::End:
             fail(t, "unexpected end of file in an expression");
         case TokenKind::Symbol:
@@ -697,6 +723,16 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         case Keyword::kw_vcross: {
             auto a = parseArguments(2, 2, fn);
             return VectorValue::fromVec3(cross(vec(a[0]), vec(a[1])));
+        }
+        case Keyword::kw_vturbulence: {
+            // vturbulence(Lambda, Omega, Octaves, P): the displacement a
+            // turbulence warp with these parameters gives at P.
+            auto a = parseArguments(4, 4, fn);
+            scene::Turbulence turb;
+            turb.lambda = static_cast<float>(f(a[0]));
+            turb.omega = static_cast<float>(f(a[1]));
+            turb.octaves = static_cast<int>(f(a[2]));
+            return VectorValue::fromVec3(scene::vectorTurbulence(vec(a[3]), turb));
         }
         case Keyword::kw_vnormalize:
             return VectorValue::fromVec3(normalize(vec(parseArguments(1, 1, fn)[0])));

@@ -1,11 +1,11 @@
 // Text and binary file directives: #fopen, #read, #write, #fclose. Files
 // are how frames pass state to each other, so they are closed (flushed) at
 // the end of every parse.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "sdl/interpreter.h"
 
@@ -31,6 +31,18 @@ void skipSeparators(const FileHandle& f, size_t& pos) {
 
 // One item of a data file: a number, a <vector> or a "string". Returns
 // false with a reason when the text there is none of them.
+// Up to `limit` bytes of `in` (a file that grows while read stops there).
+std::string readAtMost(std::istream& in, size_t limit) {
+    std::string text;
+    std::vector<char> chunk(size_t(1) << 16);
+    while (text.size() < limit && in) {
+        in.read(chunk.data(),
+                static_cast<std::streamsize>(std::min(chunk.size(), limit - text.size())));
+        text.append(chunk.data(), static_cast<size_t>(in.gcount()));
+    }
+    return text;
+}
+
 bool readItem(FileHandle& f, Value& out, std::string& error) {
     size_t& p = f.pos;
     const std::string& s = f.content;
@@ -97,17 +109,19 @@ struct BinaryFormat {
     bool bigEndian;
 };
 constexpr BinaryFormat kBinaryFormats[] = {
-    {Keyword::kw_uint8, 1, false, false},    {Keyword::kw_sint8, 1, true, false},
-    {Keyword::kw_uint16be, 2, false, true},  {Keyword::kw_uint16le, 2, false, false},
-    {Keyword::kw_sint16be, 2, true, true},   {Keyword::kw_sint16le, 2, true, false},
-    {Keyword::kw_sint32be, 4, true, true},   {Keyword::kw_sint32le, 4, true, false},
+    {Keyword::kw_uint8, 1, false, false},   {Keyword::kw_sint8, 1, true, false},
+    {Keyword::kw_uint16be, 2, false, true}, {Keyword::kw_uint16le, 2, false, false},
+    {Keyword::kw_sint16be, 2, true, true},  {Keyword::kw_sint16le, 2, true, false},
+    {Keyword::kw_sint32be, 4, true, true},  {Keyword::kw_sint32le, 4, true, false},
 };
 
 void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
     const double lo = f.isSigned ? -std::ldexp(1.0, f.bytes * 8 - 1) : 0.0;
-    const double hi = f.isSigned ? std::ldexp(1.0, f.bytes * 8 - 1) - 1 : std::ldexp(1.0, f.bytes * 8) - 1;
+    const double hi =
+        f.isSigned ? std::ldexp(1.0, f.bytes * 8 - 1) - 1 : std::ldexp(1.0, f.bytes * 8) - 1;
     // Rounded as floor(x + 0.5), as povray does (-2.5 -> -2).
-    const auto word = static_cast<uint32_t>(static_cast<int64_t>(std::clamp(std::floor(value + 0.5), lo, hi)));
+    const auto word =
+        static_cast<uint32_t>(static_cast<int64_t>(std::clamp(std::floor(value + 0.5), lo, hi)));
     for (int i = 0; i < f.bytes; ++i) {
         const int shift = 8 * (f.bigEndian ? f.bytes - 1 - i : i);
         out.put(static_cast<char>((word >> shift) & 0xFF));
@@ -117,16 +131,24 @@ void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
 }  // namespace
 
 void Interpreter::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
-    if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty()) fail(at, refusal);
+    if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty())
+        fail(at, refusal);
+    // Scene files, data, images and fonts are read whole: a device or pipe
+    // (/dev/zero, a FIFO) could block or never end.
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+        fail(at,
+             fmt::format("cannot read '{}': not a regular file (a folder, device or pipe)", name));
 }
 
 void Interpreter::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
-    if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty()) fail(at, refusal);
+    if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty())
+        fail(at, refusal);
 }
 
 void Interpreter::directiveFopen(const Token& at) {
     const std::string id = expectIdentifier();
-    const std::string name = parseString();
+    const std::string name = parsePathname();
     const Token mode = next();
     auto handle = std::make_shared<FileHandle>();
     handle->name = name;
@@ -134,28 +156,38 @@ void Interpreter::directiveFopen(const Token& at) {
         case Keyword::kw_read: {
             const fs::path path = findIncludeFile(name);
             if (!path.empty()) checkReadable(path, name, at);
-            std::ifstream in(path.empty() ? fs::path(name) : path, std::ios::binary);
+            std::ifstream in;
+            if (!path.empty()) in.open(path, std::ios::binary);
             if (path.empty() || !in)
-                fail(at, frame_.refuseFileWrites.empty()
-                             ? fmt::format("cannot open '{}' for reading", name)
-                             : fmt::format("cannot open '{}' for reading; if an earlier frame writes it, {}", name,
-                                           frame_.refuseFileWrites));
-            std::ostringstream text;
-            text << in.rdbuf();
-            handle->content = text.str();
+                fail(at,
+                     frame_.refuseFileWrites.empty()
+                         ? fmt::format("cannot open '{}' for reading", name)
+                         : fmt::format(
+                               "cannot open '{}' for reading; if an earlier frame writes it, {}",
+                               name, frame_.refuseFileWrites));
+            handle->content = readAtMost(in, frame_.limits.readFileBytes + 1);
+            if (handle->content.size() > frame_.limits.readFileBytes)
+                fail(at, fmt::format("cannot read '{}': larger than {} MiB, the limit for a file "
+                                     "read with #read",
+                                     name, frame_.limits.readFileBytes >> 20));
             break;
         }
         case Keyword::kw_write:
         case Keyword::kw_append:
             if (!frame_.refuseFileWrites.empty())
-                fail(at, fmt::format("'{}' is opened for {}: {}", name, mode.kw == Keyword::kw_append ? "append" : "write",
+                fail(at, fmt::format("'{}' is opened for {}: {}", name,
+                                     mode.kw == Keyword::kw_append ? "append" : "write",
                                      frame_.refuseFileWrites));
             checkWritable(name, name, at);
             handle->writing = true;
-            handle->out.open(name, std::ios::binary | (mode.kw == Keyword::kw_append ? std::ios::app : std::ios::trunc));
+            handle->out.open(name,
+                             std::ios::binary |
+                                 (mode.kw == Keyword::kw_append ? std::ios::app : std::ios::trunc));
             if (!handle->out) fail(at, fmt::format("cannot open '{}' for writing", name));
             break;
-        default: fail(mode, fmt::format("expected read, write or append after the file name, found {}", describeToken(mode)));
+        default:
+            fail(mode, fmt::format("expected read, write or append after the file name, found {}",
+                                   describeToken(mode)));
     }
     openFiles_.push_back(handle);
     declare(id, FilePtr(handle), false);
@@ -181,13 +213,16 @@ void Interpreter::directiveRead(const Token& at) {
     const std::string id = expectIdentifier();
     Value* v = find(id);
     if (!v)
-        fail(idToken, fmt::format("'{}' is not an open file: a file read to its end is closed and its identifier "
-                                  "undefined (test defined({}) before #read)",
-                                  id, id));
+        fail(idToken,
+             fmt::format(
+                 "'{}' is not an open file: a file read to its end is closed and its identifier "
+                 "undefined (test defined({}) before #read)",
+                 id, id));
     if (!std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("expected a file identifier opened for reading, found '{}'", id));
     const FilePtr file = std::get<FilePtr>(*v);
-    if (file->writing) fail(idToken, fmt::format("file '{}' was opened for writing, not reading", file->name));
+    if (file->writing)
+        fail(idToken, fmt::format("file '{}' was opened for writing, not reading", file->name));
     while (accept(Sym::Comma)) {
         const Token target = rawPeek();
         const std::string name = expectIdentifier();
@@ -195,7 +230,8 @@ void Interpreter::directiveRead(const Token& at) {
         size_t index = 0;
         if (peek().is(Sym::LBracket)) {
             Value* a = find(name);
-            if (!a || !std::holds_alternative<ArrayPtr>(*a)) fail(target, fmt::format("'{}' is not an array", name));
+            if (!a || !std::holds_alternative<ArrayPtr>(*a))
+                fail(target, fmt::format("'{}' is not an array", name));
             array = std::get<ArrayPtr>(*a);
             index = parseArrayIndex(*array, target);
         }
@@ -230,7 +266,8 @@ void Interpreter::directiveWrite(const Token& at) {
     if (!v || !std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("expected a file identifier opened for writing, found '{}'", id));
     const FilePtr file = std::get<FilePtr>(*v);
-    if (!file->writing) fail(idToken, fmt::format("file '{}' was opened for reading, not writing", file->name));
+    if (!file->writing)
+        fail(idToken, fmt::format("file '{}' was opened for reading, not writing", file->name));
     while (accept(Sym::Comma)) {
         const BinaryFormat* binary = nullptr;
         for (const auto& f : kBinaryFormats)

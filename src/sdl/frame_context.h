@@ -50,6 +50,12 @@ struct FrameContext {
         size_t arrayElements = size_t(1) << 24;
         size_t totalArrayElements = size_t(1) << 26;
         size_t stringLength = size_t(1) << 24;  // bytes in one string value
+        // Instructions one function evaluation may run (about a second;
+        // CompiledFunction::operations), checked before evaluating it while
+        // parsing and before a shape takes it.
+        double functionOperations = 1e9;
+        // Bytes of one file opened with #fopen ... read (read whole).
+        size_t readFileBytes = size_t(1) << 28;
     } limits;
 };
 

@@ -25,6 +25,7 @@ class FunctionCompiler {
     std::shared_ptr<CompiledFunction> compileBody() {
         ternary();
         fn_->slotCount = maxSlots_;
+        fn_->countOperations();
         return fn_;
     }
 
@@ -389,6 +390,7 @@ std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
     fn->paramCount = paramCount;
     fn->natives.push_back(std::move(native));
     fn->code.push_back({FnOp::Native, 0});
+    fn->countOperations();
     return fn;
 }
 
@@ -463,7 +465,18 @@ std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Toke
     if (fn.compiled->paramCount > 3)
         fail(at, fmt::format("{} takes {} parameters; here it is given only x, y, z",
                              fn.compiled->name, fn.compiled->paramCount));
+    checkFunctionCost(*fn.compiled, at);
     return fn.compiled;
+}
+
+void Interpreter::checkFunctionCost(const CompiledFunction& function, const Token& at) {
+    const double limit = frame_.limits.functionOperations;
+    if (limit > 0 && function.operations > limit)
+        fail(at,
+             fmt::format(
+                 "this function runs about {:.3g} operations per evaluation (its calls of other "
+                 "functions multiply); more than {:.3g} would not finish",
+                 function.operations, limit));
 }
 
 Value Interpreter::callFunction(const FunctionValue& function, const Token& at) {
@@ -476,6 +489,7 @@ Value Interpreter::callFunction(const FunctionValue& function, const Token& at) 
     std::vector<double> values;
     for (const Value& v : args) values.push_back(toFloat(v, at));
     values.resize(std::max<size_t>(values.size(), static_cast<size_t>(expected)), 0.0);
+    checkFunctionCost(*function.compiled, at);
     try {
         return function.compiled->eval(values.data());
     } catch (const std::runtime_error& e) {

@@ -612,18 +612,29 @@ fs::path Interpreter::findIncludeFile(const std::string& name) const {
 }
 
 void Interpreter::directiveInclude(const Token& at) {
-    const std::string name = parseString();
+    const std::string name = parsePathname();
     if (includeDepth_ >= frame_.limits.includeFiles)
         fail(at,
              fmt::format("#include nested more than {} levels deep", frame_.limits.includeFiles));
     const fs::path path = findIncludeFile(name);
     if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
     checkReadable(path, name, at);
-    auto file = cache_.get(path);
+    const SourceLoc callSite = loc(at);
+    std::shared_ptr<const TokenizedFile> file;
+    try {
+        file = cache_.get(path);
+    } catch (const SdlError& e) {
+        // A lexer error in the include: its file has no cursor yet, so the
+        // chain starts at this #include.
+        std::vector<std::string> notes{fmt::format("in file included from {}:{}:{}",
+                                                   callSite.file->path(), callSite.line,
+                                                   callSite.column)};
+        for (auto& note : includeChain(callSite)) notes.push_back(std::move(note));
+        throw SdlError(e.loc(), e.message(), std::move(notes));
+    }
     if (!file) fail(at, fmt::format("cannot read include file '{}'", path.string()));
     // A new symbol table for the file's #local identifiers.
     scopes_.emplace_back();
-    const SourceLoc callSite = loc(at);
     cursors_.push_back({file, 0, CursorKind::File, scopes_.size() - 1, blocks_.size(), false});
     cursors_.back().callSite = callSite;
     ++includeDepth_;

@@ -178,8 +178,9 @@ class Interpreter {
     void invokeMacro(const Token& nameToken, const Macro& macro);
     Value bareIdentifierArgument();  // monostate when the argument is not one
     std::filesystem::path findIncludeFile(const std::string& name) const;
-    // Fails at `at` when the frame's FileAccessPolicy refuses the file
-    // (file_io.cpp); `name` is how the scene named it.
+    // Fails at `at` when the frame's FileAccessPolicy refuses the file, or
+    // when it is no regular file (file_io.cpp); `name` is how the scene
+    // named it.
     void checkReadable(const std::filesystem::path& path, const std::string& name, const Token& at);
     void checkWritable(const std::filesystem::path& path, const std::string& name, const Token& at);
 
@@ -241,7 +242,15 @@ class Interpreter {
     VectorValue parseVector();         // float promoted to <f,f,f>
     Vec3 parseVec3();
     Color parseColor();  // with optional color/colour keyword
+    // Fails at `at` when one evaluation of `function` would run more than
+    // the frame's limit of operations (functions.cpp).
+    void checkFunctionCost(const CompiledFunction& function, const Token& at);
     std::string parseString();
+    // A file name (#include, #fopen, image, height-field and font files): a
+    // string expression whose literals keep their backslashes, as povray
+    // reads them ("dir\\x.inc" is not an escape there).
+    std::string parsePathname();
+    bool pathnameMode_ = false;
     bool startsStringExpression(const Token& t);
     Value parseTernary();
     Value parseLogical();
@@ -364,6 +373,9 @@ class Interpreter {
     // (parse_sweep_shapes.cpp), each after its '{' ---
     std::shared_ptr<const scene::Shape> parseSuperellipsoid(const Token& kind);
     std::shared_ptr<const scene::Shape> parseIsosurface(const Token& kind);
+    std::shared_ptr<const scene::Shape> parseParametric(const Token& kind);
+    // contained_by { box { A, B } | sphere { C, R } } after 'contained_by'.
+    void parseContainedBy(bool& sphere, Vec3& boxLo, Vec3& boxHi, Vec3& center, double& radius);
     std::shared_ptr<const scene::Shape> parseSphereSweep(const Token& kind);
     std::shared_ptr<const scene::Shape> parseLathe(const Token& kind);
     std::shared_ptr<const scene::Shape> parseSor(const Token& kind);
@@ -395,6 +407,9 @@ class Interpreter {
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture_;
     bool defaultTextureSet_ = false;
+    // The component textures of the blob parseBlob just read, for
+    // parseObject to attach (empty when no component has one).
+    std::vector<std::shared_ptr<const scene::Texture>> blobComponentTextures_;
     bool declarationBeforeVersion_ = false;
     int includeDepth_ = 0;
     int nesting_ = 0;                   // NestingGuard levels held

@@ -287,10 +287,12 @@ class Lexer {
                     break;
                 }
                 default:
-                    // Unknown escapes keep both characters (Windows paths in
-                    // old scenes rely on it).
+                    // Both characters kept; the interpreter reports the
+                    // escape where the string is used as a string (file
+                    // names take the raw text instead).
                     value += '\\';
                     value += e;
+                    t.unknownEscape = true;
                     break;
             }
         }
@@ -307,6 +309,40 @@ class Lexer {
 };
 
 }  // namespace
+
+namespace {
+
+// The characters after a backslash that form an escape (lexString).
+bool isKnownEscape(char e) {
+    return std::string_view("abfnrtv0\\'\"u").find(e) != std::string_view::npos;
+}
+
+// The raw text of the string starting at the opening quote `open` of `line`.
+std::string_view rawBetweenQuotes(std::string_view line, uint32_t open) {
+    if (open == 0 || open > line.size()) return {};
+    size_t end = open;  // index just after the opening quote
+    while (end < line.size() && line[end] != '"') end += line[end] == '\\' ? 2 : 1;
+    return line.substr(open, std::min(end, line.size()) - open);
+}
+
+}  // namespace
+
+std::string TokenizedFile::rawString(const Token& t) const {
+    if (t.kind != TokenKind::String) return std::string(t.text);
+    return std::string(rawBetweenQuotes(source->lineText(static_cast<int>(t.line)), t.column));
+}
+
+uint32_t TokenizedFile::unknownEscapeColumn(const Token& t) const {
+    if (t.kind != TokenKind::String || !t.unknownEscape) return 0;
+    const std::string_view raw =
+        rawBetweenQuotes(source->lineText(static_cast<int>(t.line)), t.column);
+    for (size_t i = 0; i + 1 < raw.size(); ++i) {
+        if (raw[i] != '\\') continue;
+        if (!isKnownEscape(raw[i + 1])) return t.column + 1 + static_cast<uint32_t>(i);
+        ++i;
+    }
+    return t.column;
+}
 
 std::shared_ptr<const TokenizedFile> tokenize(std::shared_ptr<const SourceFile> source) {
     return Lexer(std::move(source)).run();

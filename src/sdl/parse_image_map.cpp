@@ -143,7 +143,7 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
                 s.type = item.kw;
             }
             s.nameAt = peek();
-            s.name = parseString();
+            s.name = parsePathname();
             haveFile = true;
             continue;
         }

@@ -363,7 +363,7 @@ void Interpreter::parseHeightField(scene::Object& obj) {
                                  describeToken(source)));
         }
         const Token nameAt = peek();
-        const std::string name = parseString();
+        const std::string name = parsePathname();
         // The same per-frame image cache as image maps (parse_image_map.cpp).
         const image::SourceImage& source = loadSourceImage(name, nameAt);
         const image::EncodedImage& img = source.pixels;

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "scene/blob.h"
 #include "scene/polynomial_shapes.h"
@@ -76,21 +77,52 @@ std::shared_ptr<const scene::Shape> Interpreter::parsePolynomialShape(const Toke
 std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
     using Component = scene::Blob::Component;
     std::vector<Component> components;
+    // Each component's own texture (null: the blob object's), in blob
+    // space; handed to parseObject through blobComponentTextures_.
+    std::vector<std::shared_ptr<const scene::Texture>> textures;
     double threshold = 1;
-    // A component's transformations, applied in order after its geometry.
+    // A component's transformations, applied in order after its geometry
+    // (and to its texture when they follow it), and its texture, started
+    // from the default texture as an object's is.
     auto parseComponentModifiers = [&](Component& c, const char* what) {
+        std::optional<scene::Texture> texture;
+        auto editTexture = [&]() -> scene::Texture& {
+            if (!texture) texture = defaultTexture_;
+            return *texture;
+        };
         for (;;) {
-            if (accept(Sym::RBrace)) return;
+            if (accept(Sym::RBrace)) {
+                textures.push_back(texture ? std::make_shared<const scene::Texture>(*texture)
+                                           : nullptr);
+                return;
+            }
             Transform t;
             const Token at = peek();
             if (parseTransformation(t)) {
                 c.toBlob = c.transformed ? c.toBlob.then(t) : t;
                 c.transformed = true;
+                if (texture) texture->transformBy(t);
                 continue;
             }
-            if (at.is(Keyword::kw_texture) || at.is(Keyword::kw_pigment) ||
-                at.is(Keyword::kw_normal) || at.is(Keyword::kw_finish))
-                unsupported(at, "a texture on a blob component");
+            if (at.is(Keyword::kw_pigment)) {
+                editTexture().pigment = parsePigment();
+                continue;
+            }
+            if (at.is(Keyword::kw_normal)) {
+                scene::Texture& tx = editTexture();
+                tx.normal = parseNormal(tx.normal.get());
+                continue;
+            }
+            if (at.is(Keyword::kw_finish)) {
+                scene::Texture& tx = editTexture();
+                tx.finish = *parseFinish(&tx.finish);
+                continue;
+            }
+            if (at.is(Keyword::kw_texture)) {
+                scene::Texture& tx = editTexture();
+                tx = parseLayeredTextures(tx.map ? nullptr : &tx);
+                continue;
+            }
             fail(at, fmt::format("expected a transformation or '}}' in a blob {}, found {}", what,
                                  describeToken(at)));
         }
@@ -135,12 +167,19 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
             expect(Sym::Comma, "',' between the radius and the centre");
             c.a = parseVec3();
             components.push_back(c);
+            textures.push_back(nullptr);
         } else {
             if (components.empty()) fail(t, "Need at least one component in a blob.");
             break;
         }
         if (!components.empty() && components.back().radius <= 0)
             fail(t, "a blob component needs a positive radius");
+    }
+    blobComponentTextures_.clear();
+    for (const auto& texture : textures) {
+        if (!texture) continue;
+        blobComponentTextures_ = std::move(textures);
+        break;
     }
     return std::make_shared<scene::Blob>(std::move(components), threshold, false);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "scene/isosurface.h"
+#include "scene/parametric.h"
 #include "scene/prism.h"
 #include "scene/sphere_sweep.h"
 #include "scene/spline_revolution.h"
@@ -138,6 +139,32 @@ std::shared_ptr<const scene::Shape> Interpreter::parseSuperellipsoid(const Token
     return std::make_shared<scene::Superellipsoid>(e, n);
 }
 
+void Interpreter::parseContainedBy(bool& sphere, Vec3& boxLo, Vec3& boxHi, Vec3& center,
+                                   double& radius) {
+    expect(Sym::LBrace, "'{' after 'contained_by'");
+    const Token shape = next();
+    expect(Sym::LBrace, "'{' after the container's kind");
+    if (shape.is(Keyword::kw_box)) {
+        const Vec3 a = parseVec3();
+        expect(Sym::Comma, "',' between the corners");
+        const Vec3 b = parseVec3();
+        sphere = false;
+        boxLo = vmin(a, b);
+        boxHi = vmax(a, b);
+    } else if (shape.is(Keyword::kw_sphere)) {
+        center = parseVec3();
+        expect(Sym::Comma, "',' between the centre and the radius");
+        radius = std::fabs(parseFloat());
+        sphere = true;
+    } else {
+        fail(shape,
+             fmt::format("contained_by takes a box or a sphere, found {}", describeToken(shape)));
+    }
+    if (!peek().is(Sym::RBrace)) unsupported(peek(), "modifiers of a shape's container");
+    next();
+    expect(Sym::RBrace, "'}' closing 'contained_by'");
+}
+
 std::shared_ptr<const scene::Shape> Interpreter::parseIsosurface(const Token& kind) {
     scene::IsosurfaceSettings s;
     const Token fnAt = peek();
@@ -149,33 +176,10 @@ std::shared_ptr<const scene::Shape> Interpreter::parseIsosurface(const Token& ki
         const Token t = peek();
         if (t.kind != TokenKind::Word) break;
         switch (t.kw) {
-            case Keyword::kw_contained_by: {
+            case Keyword::kw_contained_by:
                 next();
-                expect(Sym::LBrace, "'{' after 'contained_by'");
-                const Token shape = next();
-                expect(Sym::LBrace, "'{' after the container's kind");
-                if (shape.is(Keyword::kw_box)) {
-                    const Vec3 a = parseVec3();
-                    expect(Sym::Comma, "',' between the corners");
-                    const Vec3 b = parseVec3();
-                    s.sphereContainer = false;
-                    s.boxLo = vmin(a, b);
-                    s.boxHi = vmax(a, b);
-                } else if (shape.is(Keyword::kw_sphere)) {
-                    s.center = parseVec3();
-                    expect(Sym::Comma, "',' between the centre and the radius");
-                    s.radius = std::fabs(parseFloat());
-                    s.sphereContainer = true;
-                } else {
-                    fail(shape, fmt::format("contained_by takes a box or a sphere, found {}",
-                                            describeToken(shape)));
-                }
-                if (!peek().is(Sym::RBrace))
-                    unsupported(peek(), "modifiers of an isosurface's container");
-                next();
-                expect(Sym::RBrace, "'}' closing 'contained_by'");
+                parseContainedBy(s.sphereContainer, s.boxLo, s.boxHi, s.center, s.radius);
                 continue;
-            }
             case Keyword::kw_threshold:
                 next();
                 s.threshold = parseFloat();
@@ -226,6 +230,72 @@ std::shared_ptr<const scene::Shape> Interpreter::parseIsosurface(const Token& ki
     if (s.accuracy <= 0) fail(kind, "isosurface accuracy must be greater than 0");
     if (s.maxGradient <= 0) fail(kind, "isosurface max_gradient must be greater than 0");
     return std::make_shared<scene::Isosurface>(std::move(s));
+}
+
+// parametric { function { X } function { Y } function { Z } <u1, v1>, <u2, v2>
+// contained_by { ... } max_gradient G accuracy A precompute D, x, y, z }.
+std::shared_ptr<const scene::Shape> Interpreter::parseParametric(const Token& kind) {
+    scene::ParametricSettings s;
+    std::shared_ptr<const CompiledFunction>* slots[3] = {&s.fx, &s.fy, &s.fz};
+    for (auto* slot : slots) {
+        const Token fnAt = peek();
+        if (!accept(Keyword::kw_function))
+            fail(fnAt,
+                 fmt::format("expected 'function' in parametric, found {}", describeToken(fnAt)));
+        *slot = parseXyzFunction(fnAt);
+        accept(Sym::Comma);  // povray takes a comma after each function
+    }
+    const VectorValue lo = parseVector();
+    expect(Sym::Comma, "',' between the parametric's (u, v) corners");
+    const VectorValue hi = parseVector();
+    s.uMin = lo.v[0];
+    s.vMin = lo.v[1];
+    s.uMax = hi.v[0];
+    s.vMax = hi.v[1];
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokenKind::Word) break;
+        switch (t.kw) {
+            case Keyword::kw_contained_by:
+                next();
+                parseContainedBy(s.sphereContainer, s.boxLo, s.boxHi, s.center, s.radius);
+                continue;
+            case Keyword::kw_accuracy:
+                next();
+                s.accuracy = std::fabs(parseFloat());
+                continue;
+            case Keyword::kw_max_gradient:
+                next();
+                s.maxGradient = std::fabs(parseFloat());
+                continue;
+            case Keyword::kw_precompute: {
+                // povray tabulates the first levels of its subdivision to
+                // go faster; the surface is the same, so only the syntax
+                // is checked: a depth, then some of x, y, z.
+                next();
+                const Token depthAt = peek();
+                const double depth = parseFloat();
+                if (depth < 1 || depth > 20) fail(depthAt, "Precompute: invalid depth (1 to 20)");
+                for (;;) {
+                    accept(Sym::Comma);
+                    const Token axis = peek();
+                    if (axis.is(Keyword::kw_x) || axis.is(Keyword::kw_y) || axis.is(Keyword::kw_z))
+                        next();
+                    else
+                        break;
+                }
+                continue;
+            }
+            default:
+                break;
+        }
+        break;
+    }
+    if (s.accuracy <= 0) fail(kind, "parametric accuracy must be greater than 0");
+    if (s.maxGradient <= 0) fail(kind, "parametric max_gradient must be greater than 0");
+    if (s.uMin > s.uMax) std::swap(s.uMin, s.uMax);
+    if (s.vMin > s.vMax) std::swap(s.vMin, s.vMax);
+    return std::make_shared<scene::Parametric>(std::move(s));
 }
 
 std::shared_ptr<const scene::Shape> Interpreter::parseSphereSweep(const Token& kind) {

@@ -118,7 +118,7 @@ void Interpreter::parseTextObject(scene::Object& obj) {
     std::shared_ptr<scene::TtfFont> font;
     if (accept(Keyword::kw_ttf)) {
         const Token nameAt = peek();
-        font = openFont(parseString(), nameAt);
+        font = openFont(parsePathname(), nameAt);
     } else if (accept(Keyword::kw_internal)) {
         const int id = static_cast<int>(parseFloat());
         // Named apart from file names so a scene's own "timrom.ttf" is

@@ -48,7 +48,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_superellipsoid, true},
     {Keyword::kw_sphere_sweep, true},
     {Keyword::kw_isosurface, true},
-    {Keyword::kw_parametric, false},
+    {Keyword::kw_parametric, true},
     {Keyword::kw_mesh, true},
     {Keyword::kw_mesh2, true},
     {Keyword::kw_height_field, true},
@@ -178,6 +178,9 @@ ObjectPtr Interpreter::parseObject() {
             break;
         default:
             obj->shape = parseShape(kind);
+            // A blob's component textures (parseBlob).
+            obj->componentTextures = std::move(blobComponentTextures_);
+            blobComponentTextures_.clear();
             break;
     }
 
@@ -227,7 +230,7 @@ void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
         // povray's warning (its wording, for difference too); the triangle
         // still takes part, enclosing nothing.
         if (csg.op != scene::CsgOp::Union && csg.op != scene::CsgOp::Merge &&
-            csg.children.back()->isPatch())
+            csg.children.back()->warnsAsPatch())
             warn(at, "Patch objects not allowed in intersection.");
     }
     if (csg.children.size() < 2) warn(kind, "Should have at least 2 objects in csg.");
@@ -336,6 +339,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             return parseSuperellipsoid(kind);
         case Keyword::kw_isosurface:
             return parseIsosurface(kind);
+        case Keyword::kw_parametric:
+            return parseParametric(kind);
         case Keyword::kw_sphere_sweep:
             return parseSphereSweep(kind);
         case Keyword::kw_lathe:

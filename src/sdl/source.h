@@ -9,9 +9,11 @@
 
 namespace frameray::sdl {
 
-// The full text of one scene, include or macro file.
-class SourceFile {
-public:
+// The full text of one scene, include or macro file. Held by shared_ptr
+// (tokens point into it); an SdlError keeps its file alive through
+// weak_from_this, since the error may outlive the tokens of a failed include.
+class SourceFile : public std::enable_shared_from_this<SourceFile> {
+  public:
     SourceFile(std::string path, std::string text);
 
     const std::string& path() const { return path_; }
@@ -19,7 +21,7 @@ public:
     // Text of line `line` (1-based) without its line terminator.
     std::string_view lineText(int line) const;
 
-private:
+  private:
     std::string path_;
     std::string text_;
     std::vector<uint32_t> lineStarts_;

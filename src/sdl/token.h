@@ -53,6 +53,10 @@ struct Token {
     uint32_t line = 0, column = 0;
     std::string_view text;  // Word spelling, String contents (escapes decoded)
     double number = 0;      // for Number
+    // String: holds an escape the language does not define ("\\q"). An
+    // error in a string expression, as in povray; file names take the
+    // string's raw text, where backslashes are no escapes (see rawString).
+    bool unknownEscape = false;
 
     bool is(Sym s) const { return kind == TokenKind::Symbol && sym == s; }
     bool is(Keyword k) const { return kind == TokenKind::Word && kw == k; }
@@ -66,6 +70,13 @@ struct TokenizedFile {
     std::deque<std::string> decodedStrings;  // storage for String token text
 
     SourceLoc locOf(const Token& t) const { return {source.get(), t.line, t.column}; }
+    // A String token's text as written between its quotes, escapes not
+    // decoded: povray reads file names (#include, #fopen, image and font
+    // files) this way, so "dir\\x.inc" names a file with a backslash.
+    std::string rawString(const Token& t) const;
+    // The 1-based column of the first escape a String token holds that the
+    // language does not define (0 when there is none).
+    uint32_t unknownEscapeColumn(const Token& t) const;
 };
 
 // Describes a token for messages: "'{'", "identifier 'Foo'", "end of file"...

@@ -168,4 +168,10 @@ double CompiledFunction::eval(const double* args) const {
     return sp > 0 ? stack[sp - 1] : 0.0;
 }
 
+void CompiledFunction::countOperations() {
+    operations = static_cast<double>(code.size());
+    for (const FnInstr& in : code)
+        if (in.op == FnOp::Call) operations += callees[static_cast<size_t>(in.a)]->operations;
+}
+
 }  // namespace frameray

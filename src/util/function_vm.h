@@ -77,6 +77,11 @@ class CompiledFunction {
     std::vector<FnInstr> code;
     std::vector<std::shared_ptr<const CompiledFunction>> callees;
     std::vector<std::shared_ptr<const NativeFunction>> natives;
+    // Instructions one evaluation runs, counting each call as the callee's
+    // own count (each sum/prod loop body once): calls of calls multiply, so
+    // a chain of functions each calling the previous one twice reaches
+    // 2^40 in 40 lines. Set by the compiler (countOperations).
+    double operations = 0;
     // Why this function (or one it calls) cannot run yet: empty when it
     // can. Shapes check it before rendering so no frame stops midway.
     std::string unavailable;
@@ -84,6 +89,8 @@ class CompiledFunction {
     // Evaluates with `paramCount` arguments. Throws std::runtime_error for
     // a call of a function that cannot run yet.
     double eval(const double* args) const;
+    // Sets `operations` from the code and the callees' counts.
+    void countOperations();
 };
 
 }  // namespace frameray

@@ -14,6 +14,8 @@
 # line, the caret line) equal EXPECTED (or as many lines as EXPECTED has,
 # when that is more: the notes giving the include and macro chain).
 set -uo pipefail
+# shellcheck source=../support/check_rejected.sh
+source "$(dirname "$0")/../support/check_rejected.sh"
 
 if [ $# -ne 3 ]; then
     echo "usage: $0 FRAMERAY SCENE EXPECTED" >&2
@@ -43,30 +45,12 @@ echo "+ cd $scene_dir && $frameray $scene -F -D +W8 +H8 +O$scratch/$name.png ${e
 (cd "$scene_dir" && "$frameray" "$scene" -F -D +W8 +H8 "+O$scratch/$name.png" "${extra[@]}" >"$scratch/stdout" 2>"$stderr_file")
 status=$?
 
-echo "--- frameray's standard error (exit status $status):"
-cat "$stderr_file"
-echo "---"
-
-result=0
-if [ $status -eq 0 ]; then
-    echo "language_error: $name: frameray accepted a scene with an error (exit status 0)" >&2
-    result=1
-elif [ $status -ge 128 ]; then
-    echo "language_error: $name: frameray crashed (exit status $status)" >&2
-    result=1
-fi
-
 # An EXPECTED of more than three lines also checks the notes that follow
 # (the include and macro chain). Paths in the folder above the scene's
 # (a refused '../x') are shown as '..'.
-lines="$(wc -l < "$expected")"
-[ "$lines" -lt 3 ] && lines=3
-actual="$(head -n "$lines" "$stderr_file" | sed "s|$scene_dir/||g; s|$(dirname "$scene_dir")|..|g")"
-if ! diff -u --label "$(basename "$expected") (expected)" --label "stderr of frameray (first 3 lines)" \
-    "$expected" <(printf '%s\n' "$actual"); then
-    echo "language_error: $name: the diagnostic differs from the expected one" >&2
-    result=1
-fi
+result=0
+check_rejected "language_error: $name" "$status" "$stderr_file" "$expected" 3 \
+    "s|$scene_dir/||g; s|$(dirname "$scene_dir")|..|g" || result=1
 # A refused write must not have happened (restrict_write_* tests).
 if [ -e /tmp/frameray_restrict_test.txt ] || [ -e "$(dirname "$scene_dir")/frameray_restrict_test.txt" ]; then
     case "$name" in restrict_write_*)

@@ -11,6 +11,8 @@
 # 127 (an error, not a crash) and the first lines of its standard error
 # equal NAME.expected (as many lines as that file has).
 set -uo pipefail
+# shellcheck source=../support/check_rejected.sh
+source "$(dirname "$0")/../support/check_rejected.sh"
 
 if [ $# -ne 2 ]; then
     echo "usage: $0 FRAMERAY NAME" >&2
@@ -33,24 +35,8 @@ echo "+ cd $dir && frameray ${args[*]}"
     "$frameray" "${args[@]}" "+O$scratch/out.png" >"$scratch/stdout" 2>"$scratch/stderr")
 status=$?
 
-echo "--- frameray's standard error (exit status $status):"
-cat "$scratch/stderr"
-echo "---"
-
 result=0
-if [ $status -eq 0 ]; then
-    echo "options_error: $name: frameray accepted the options (exit status 0)" >&2
-    result=1
-elif [ $status -ge 128 ]; then
-    echo "options_error: $name: frameray crashed (exit status $status)" >&2
-    result=1
-fi
-lines="$(wc -l < "$expected")"
-actual="$(head -n "$lines" "$scratch/stderr" | sed "s|$dir/||g")"
-if ! diff -u --label "$name.expected" --label "stderr of frameray" "$expected" <(printf '%s\n' "$actual"); then
-    echo "options_error: $name: the diagnostic differs from the expected one" >&2
-    result=1
-fi
+check_rejected "options_error: $name" "$status" "$scratch/stderr" "$expected" 1 "s|$dir/||g" || result=1
 # A refused shell command must not have run.
 if [ -e "$scratch/ran" ]; then
     echo "options_error: $name: a refused shell command ran" >&2

@@ -3,7 +3,9 @@
 # with Sturm=1, and checks with frameray-speckles that neither render has a
 # NaN/Inf pixel and that the default render has no isolated speckle against
 # the Sturm render (two independent solvers: closed forms with Newton
-# polishing, and Sturm sequences with Illinois refinement). Called by CTest:
+# polishing, and Sturm sequences with Illinois refinement; for the swept and
+# numerical shapes of sweep_cases.pov, Sturm=1 is a high-accuracy setting
+# of the same solver). Called by CTest:
 #
 #     run_speckles.sh FRAMERAY SPECKLES SCENE OUTDIR "CASES" OPTIONS...
 #

@@ -1,4 +1,4 @@
-// Superellipsoid, isosurface, lathe, sor, prism and sphere_sweep: hits
+// Superellipsoid, isosurface, parametric, lathe, sor, prism and sphere_sweep: hits
 // against known geometry, inside tests, normals and parsing.
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 #include "render/renderer.h"
 #include "render/world.h"
 #include "scene/isosurface.h"
+#include "scene/parametric.h"
 #include "scene/prism.h"
 #include "scene/sphere_sweep.h"
 #include "scene/spline_revolution.h"
@@ -126,6 +127,139 @@ TEST(Isosurface, RayFromTheSurfaceDoesNotHitItself) {
     // Leaving at a grazing angle and leaving straight out.
     EXPECT_TRUE(hitsOf(iso, {hit, {1, 0.3, 0}}).empty());
     EXPECT_TRUE(hitsOf(iso, {hit, hit}).empty());
+}
+
+// The unit sphere as x = cos u sin v, y = cos v, z = sin u sin v.
+ParametricSettings parametricSphere(ParsedScene& p) {
+    auto fn = [&](const char* name) {
+        const auto* f = std::get_if<sdl::FunctionPtr>(p.interp.lookup(name));
+        EXPECT_NE(f, nullptr);
+        return (*f)->compiled;
+    };
+    ParametricSettings s;
+    s.fx = fn("FX");
+    s.fy = fn("FY");
+    s.fz = fn("FZ");
+    s.uMax = 2 * M_PI;
+    s.vMax = M_PI;
+    s.sphereContainer = true;
+    s.radius = 1.01;
+    return s;
+}
+
+const char* kSphereFunctions =
+    "#declare FX = function { cos(u)*sin(v) }\n"
+    "#declare FY = function { cos(v) }\n"
+    "#declare FZ = function { sin(u)*sin(v) }\n";
+
+TEST(Parametric, FindsTheFirstCrossingOfTheSphereExactly) {
+    ParsedScene p(kSphereFunctions);
+    const Parametric sphere(parametricSphere(p));
+    const Ray r{{0.3, -0.2, -5}, {0, 0, 1}};
+    const auto ts = hitsOf(sphere, r);
+    // Only the first crossing, as povray reports.
+    ASSERT_EQ(ts.size(), 1u);
+    const double half = std::sqrt(1 - 0.09 - 0.04);
+    EXPECT_NEAR(ts[0], 5 - half, 1e-9);
+    const Vec3 n = sphere.normal(r.at(ts[0]));
+    EXPECT_NEAR(std::fabs(n.x), 0.3, 1e-6);
+    EXPECT_NEAR(std::fabs(n.z), half, 1e-6);
+    // Near a pole, where d/du vanishes: still a unit, finite normal.
+    const Vec3 pole = sphere.normal({0, 1, 0});
+    EXPECT_NEAR(std::fabs(pole.y), 1, 1e-4);
+    // From inside the sphere: the far wall.
+    const auto inner = hitsOf(sphere, {{0, 0, 0}, {1, 0, 0}});
+    ASSERT_EQ(inner.size(), 1u);
+    EXPECT_NEAR(inner[0], 1, 1e-9);
+    // It encloses nothing.
+    EXPECT_FALSE(sphere.inside({0, 0, 0}));
+    EXPECT_TRUE(sphere.isPatch());
+    EXPECT_FALSE(sphere.warnsAsPatch());
+}
+
+TEST(Parametric, RayFromTheSurfaceDoesNotHitItself) {
+    ParsedScene p(kSphereFunctions);
+    const Parametric sphere(parametricSphere(p));
+    const Ray r{{0.2, 0.1, -5}, {0, 0, 1}};
+    const auto ts = hitsOf(sphere, r);
+    ASSERT_EQ(ts.size(), 1u);
+    const Vec3 hit = r.at(ts[0]);
+    EXPECT_TRUE(hitsOf(sphere, {hit, hit}).empty());
+}
+
+TEST(Parametric, UnderestimatedMaxGradientStillFindsTheSurface) {
+    // x = 4u: gradient 4 against max_gradient 0.01 (povray renders it).
+    ParsedScene p(
+        "#declare FX = function { 4*u }\n#declare FY = function { 0.2*sin(8*u)*v }\n"
+        "#declare FZ = function { 4*v }\n");
+    ParametricSettings s = parametricSphere(p);
+    s.uMin = s.vMin = -0.3;
+    s.uMax = s.vMax = 0.3;
+    s.sphereContainer = false;
+    s.boxLo = Vec3(-2);
+    s.boxHi = Vec3(2);
+    s.maxGradient = 0.01;
+    const Parametric sheet(s);
+    int found = 0;
+    for (double x = -1.1; x <= 1.1; x += 0.1) {
+        const auto ts = hitsOf(sheet, {{x, 3, 0.37}, {0, -1, 0}});
+        if (ts.size() != 1) continue;
+        ++found;
+        const double u = x / 4, v = 0.37 / 4;
+        EXPECT_NEAR(3 - ts[0], 0.2 * std::sin(8 * u) * v, 1e-9);
+    }
+    EXPECT_EQ(found, 23);
+}
+
+TEST(SweepShapesParse, Parametric) {
+    ParsedScene p(
+        "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1>\n"
+        "  contained_by { box { <-1, -1, -1>, <2, 2, 1> } } max_gradient 2 accuracy 0.0001\n"
+        "  precompute 10 x, z }\n"
+        "intersection { box { -1, 1 } parametric { function { u } function { v } function { 0 }\n"
+        "  <0, 0>, <1, 1> precompute 5, x, y, z } }\n");
+    ASSERT_EQ(p.scene.objects.size(), 2u);
+    EXPECT_STREQ(p.scene.objects[0]->shape->name(), "parametric");
+    EXPECT_DOUBLE_EQ(p.scene.objects[0]->shape->bounds().hi.x, 2);
+    // povray gives no "Patch objects" warning for a parametric.
+    EXPECT_EQ(p.sink.warnings.find("Patch objects"), std::string::npos);
+    EXPECT_NE(parseErrorOf("parametric { function { u } function { v } <0, 0>, <1, 1> }"), "");
+    EXPECT_NE(parseErrorOf("parametric { function { u } function { v } function { 0 } <0, 0>, "
+                           "<1, 1> precompute 21 x }")
+                  .find("invalid depth"),
+              std::string::npos);
+}
+
+TEST(BlobTextures, ComponentTexturesAreBlendedByFieldShare) {
+    ParsedScene p(
+        "blob { threshold 0.5\n"
+        "  sphere { <-0.5, 0, 0>, 1, 1 pigment { rgb <1, 0, 0> } }\n"
+        "  sphere { <0.5, 0, 0>, 1, 1 }\n"
+        "  sphere { <0, 0, 0.5>, 1, -1 pigment { rgb <0, 0, 1> } translate x }\n"
+        "  pigment { rgb <0, 1, 0> } }\n");
+    ASSERT_EQ(p.scene.objects.size(), 1u);
+    const Object& obj = *p.scene.objects[0];
+    ASSERT_EQ(obj.componentTextures.size(), 3u);
+    EXPECT_NE(obj.componentTextures[0], nullptr);
+    EXPECT_EQ(obj.componentTextures[1], nullptr);
+    // At the origin both positive components add 0.5625; the negative one
+    // (moved to <1, 0, 0.5>, d^2 = 1.25) adds nothing.
+    RGB sum(0.0);
+    double weights = 0;
+    obj.visitTextures({0, 0, 0}, *obj.texture, [&](const Texture& t, double w) {
+        sum += t.pigment->at({0, 0, 0}).rgb * w;
+        weights += w;
+    });
+    EXPECT_NEAR(weights, 1, 1e-12);
+    EXPECT_NEAR(sum.r, 0.5, 1e-12);
+    EXPECT_NEAR(sum.g, 0.5, 1e-12);
+    EXPECT_NEAR(sum.b, 0, 1e-12);
+    // Near the negative component its share counts by magnitude.
+    sum = RGB(0.0);
+    obj.visitTextures({0.6, 0, 0.3}, *obj.texture, [&](const Texture& t, double w) {
+        sum += t.pigment->at({0, 0, 0}).rgb * w;
+    });
+    EXPECT_GT(sum.b, 0.01);
 }
 
 TEST(Lathe, LinearProfileIsACylinderWall) {

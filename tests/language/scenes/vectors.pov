@@ -1,6 +1,6 @@
 // Language test: vector literals and expressions, promotion of floats and
 // short vectors, dot items, built-in vector identifiers and the vector
-// functions vaxis_rotate, vcross, vrotate and vnormalize.
+// functions vaxis_rotate, vcross, vrotate, vnormalize and vturbulence.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #fopen Out "vectors.out" write
@@ -84,4 +84,9 @@ global_settings { assumed_gamma 1.0 }
 #write (Out, "vaxis_rotate diagonal ", vstr(3, vaxis_rotate(<1,0,0>, <1,1,1>, 120), ",", 0, 9), "\n")
 #write (Out, "vaxis_rotate 37 ", vstr(3, vaxis_rotate(<1,2,3>, <-1,0.5,2>, 37), ",", 0, 9), "\n")
 #write (Out, "vector functions nested ", RV(vnormalize(vcross(vrotate(x, <0,0,45>), z))), "\n")
+// vturbulence(Lambda, Omega, Octaves, P): povray's turbulence vector.
+#for (I, 0, 4)
+  #write (Out, "vturbulence ", I, " ", vstr(3, vturbulence(2 + I*0.1, 0.5, 6 - I, <0.3 + I, 0.2*I, 0.1 - I*3.7>), ",", 0, 9), "\n")
+#end
+#write (Out, "vturbulence far ", vstr(3, vturbulence(1.5, 0.7, 3, <1e3, -20.5, 7>), ",", 0, 9), "\n")
 #fclose Out

@@ -1,0 +1,39 @@
+// Error test: an isosurface whose function multiplies through calls of
+// calls (2^34 operations per evaluation) is refused when the shape takes it.
+#version 3.7;
+#declare F0 = function { x*x + y*y + z*z - 1 }
+#declare F1 = function { F0(x, y, z) + F0(x, y, z) }
+#declare F2 = function { F1(x, y, z) + F1(x, y, z) }
+#declare F3 = function { F2(x, y, z) + F2(x, y, z) }
+#declare F4 = function { F3(x, y, z) + F3(x, y, z) }
+#declare F5 = function { F4(x, y, z) + F4(x, y, z) }
+#declare F6 = function { F5(x, y, z) + F5(x, y, z) }
+#declare F7 = function { F6(x, y, z) + F6(x, y, z) }
+#declare F8 = function { F7(x, y, z) + F7(x, y, z) }
+#declare F9 = function { F8(x, y, z) + F8(x, y, z) }
+#declare F10 = function { F9(x, y, z) + F9(x, y, z) }
+#declare F11 = function { F10(x, y, z) + F10(x, y, z) }
+#declare F12 = function { F11(x, y, z) + F11(x, y, z) }
+#declare F13 = function { F12(x, y, z) + F12(x, y, z) }
+#declare F14 = function { F13(x, y, z) + F13(x, y, z) }
+#declare F15 = function { F14(x, y, z) + F14(x, y, z) }
+#declare F16 = function { F15(x, y, z) + F15(x, y, z) }
+#declare F17 = function { F16(x, y, z) + F16(x, y, z) }
+#declare F18 = function { F17(x, y, z) + F17(x, y, z) }
+#declare F19 = function { F18(x, y, z) + F18(x, y, z) }
+#declare F20 = function { F19(x, y, z) + F19(x, y, z) }
+#declare F21 = function { F20(x, y, z) + F20(x, y, z) }
+#declare F22 = function { F21(x, y, z) + F21(x, y, z) }
+#declare F23 = function { F22(x, y, z) + F22(x, y, z) }
+#declare F24 = function { F23(x, y, z) + F23(x, y, z) }
+#declare F25 = function { F24(x, y, z) + F24(x, y, z) }
+#declare F26 = function { F25(x, y, z) + F25(x, y, z) }
+#declare F27 = function { F26(x, y, z) + F26(x, y, z) }
+#declare F28 = function { F27(x, y, z) + F27(x, y, z) }
+#declare F29 = function { F28(x, y, z) + F28(x, y, z) }
+#declare F30 = function { F29(x, y, z) + F29(x, y, z) }
+#declare F31 = function { F30(x, y, z) + F30(x, y, z) }
+#declare F32 = function { F31(x, y, z) + F31(x, y, z) }
+#declare F33 = function { F32(x, y, z) + F32(x, y, z) }
+#declare F34 = function { F33(x, y, z) + F33(x, y, z) }
+isosurface { function { F34(x, y, z) } contained_by { box { -2, 2 } } }
