@@ -339,8 +339,41 @@ double wrapAboveOne(double v) {
 }
 }  // namespace
 
-double Pattern::raw(const Vec3& p) const {
+namespace {
+
+// slope: the normal's elevation towards the slope direction, 0 facing
+// away, 0.5 across, 1 along it; plus the weighted altitude.
+double slopeValue(const Pattern& pat, const Vec3& p, const Vec3& n) {
+    auto mapRange = [](double v, double lo, double hi) {
+        return hi != lo ? (v - lo) / (hi - lo) : v;
+    };
+    const double sLen = length(pat.slopeDirection), aLen = length(pat.altitudeDirection);
+    double s = 0;
+    if (sLen > 0) {
+        const double c = std::clamp(dot(n, pat.slopeDirection) / sLen, -1.0, 1.0);
+        s = mapRange(0.5 + std::asin(c) / std::numbers::pi, pat.slopeLow, pat.slopeHigh);
+    }
+    if (aLen == 0) return s;
+    const double a =
+        mapRange(dot(p, pat.altitudeDirection) / aLen, pat.altitudeLow, pat.altitudeHigh);
+    return (sLen * s + aLen * a) / (sLen + aLen);
+}
+
+}  // namespace
+
+double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
     switch (kind) {
+        case PatternKind::Slope:
+        case PatternKind::Aoi: {
+            if (!surface) return 0.0;  // no surface (pattern functions, media)
+            // povray takes the world-space normal and ray as they are: the
+            // object's and the pattern's transformations do not turn them
+            // (measured: slope y under rotate z*30 or scale <1,3,1> is
+            // unchanged).
+            const SurfaceInfo& s = *surface;
+            if (kind == PatternKind::Slope) return slopeValue(*this, p, s.normal);
+            return std::acos(std::clamp(dot(s.normal, s.direction), -1.0, 1.0)) / std::numbers::pi;
+        }
         case PatternKind::Gradient:
             return wrapAboveOne(dot(p, gradient));
         case PatternKind::Function: {
@@ -410,8 +443,8 @@ double Pattern::raw(const Vec3& p) const {
     }
 }
 
-double Pattern::value(const Vec3& p) const {
-    return wave(raw(patternPoint(p)));
+double Pattern::value(const Vec3& p, const SurfaceInfo* surface) const {
+    return wave(raw(patternPoint(p), surface));
 }
 
 double Pattern::wave(double rawValue) const {

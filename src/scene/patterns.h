@@ -24,6 +24,14 @@ namespace frameray::scene {
 struct Object;
 class Pigment;
 
+// What a pattern may know of the surface besides the point (slope and aoi):
+// the unit (perturbed) surface normal facing the viewer and the unit ray
+// direction, both in world space whatever the pattern's space.
+struct SurfaceInfo {
+    Vec3 normal;
+    Vec3 direction;
+};
+
 enum class PatternKind {
     // colour-list patterns
     Checker,
@@ -53,6 +61,9 @@ enum class PatternKind {
     Facets,
     // density_file df3 (density_file.h)
     DensityFile,
+    // slope { } and aoi: values from the surface normal and the ray
+    Slope,
+    Aoi,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
     Bozo,
@@ -110,6 +121,13 @@ struct Pattern {
     std::shared_ptr<const Object> object;              // object
     std::shared_ptr<const DensityFile> density;        // density_file
     int densityInterpolation = 0;                      // density_file's interpolate
+    // slope { S [, lo, hi] [altitude A [, lo, hi]] }: 0.5 + asin(n·Ŝ)/π and
+    // the point's height p·Â, each mapped by (v - lo) / (hi - lo) when a
+    // range is given, averaged with the weights |S| and |A| (measured).
+    Vec3 slopeDirection{0, 1, 0};
+    double slopeLow = 0, slopeHigh = 1;
+    Vec3 altitudeDirection{0, 0, 0};  // zero: no altitude
+    double altitudeLow = 0, altitudeHigh = 1;
     // The pattern's own `turbulence`: applied after every warp and
     // transformation, or used inside marble, wood and agate.
     std::optional<Turbulence> turbulence;
@@ -131,10 +149,10 @@ struct Pattern {
     int index(const Vec3& p) const;
     // Colour-mapped patterns: the pattern function at pattern-space point q
     // (after patternPoint), before the wave.
-    double raw(const Vec3& q) const;
+    double raw(const Vec3& q, const SurfaceInfo* surface = nullptr) const;
     // The colour map index at texture point p: raw() after frequency, phase
     // and the wave type.
-    double value(const Vec3& p) const;
+    double value(const Vec3& p, const SurfaceInfo* surface = nullptr) const;
     // Applies frequency, phase and the wave type to a raw value.
     double wave(double raw) const;
 };

@@ -103,6 +103,10 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Facets;
         case Keyword::kw_density_file:
             return PatternKind::DensityFile;
+        case Keyword::kw_slope:
+            return PatternKind::Slope;
+        case Keyword::kw_aoi:
+            return PatternKind::Aoi;
         default:
             return std::nullopt;
     }
@@ -214,6 +218,8 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         parseFractalHead(item, pattern.fractal);
     } else if (kind == scene::PatternKind::Function) {
         pattern.function = parseXyzFunction(item);
+    } else if (kind == scene::PatternKind::Slope) {
+        parseSlopeArguments(pattern);
     } else if (kind == scene::PatternKind::DensityFile) {
         // density_file df3 "NAME" [interpolate N]
         const Token type = next();
@@ -265,6 +271,35 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         pattern.waveType = scene::WaveType::Triangle;  // their default wave
     }
     pigment.setPattern(pattern);
+}
+
+// slope <S> | slope { <S> [, LO, HI] [altitude <A> [, LO, HI]] }
+void Interpreter::parseSlopeArguments(scene::Pattern& pattern) {
+    pattern.altitudeDirection = Vec3(0, 0, 0);
+    pattern.slopeLow = 0;
+    pattern.slopeHigh = 1;
+    pattern.altitudeLow = 0;
+    pattern.altitudeHigh = 1;
+    if (!accept(Sym::LBrace)) {
+        pattern.slopeDirection = parseVec3();
+        return;
+    }
+    auto range = [&](double& lo, double& hi) {
+        if (!accept(Sym::Comma)) return;
+        lo = parseFloat();
+        accept(Sym::Comma);
+        hi = parseFloat();
+    };
+    pattern.slopeDirection = parseVec3();
+    range(pattern.slopeLow, pattern.slopeHigh);
+    if (accept(Keyword::kw_altitude)) {
+        pattern.altitudeDirection = parseVec3();
+        range(pattern.altitudeLow, pattern.altitudeHigh);
+    }
+    const Token t = peek();
+    if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+        unsupported(t, fmt::format("'{}' in slope", t.text));
+    expect(Sym::RBrace, "'}' closing 'slope'");
 }
 
 void Interpreter::closeListPattern(const scene::Pattern& pattern) {
@@ -510,6 +545,8 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             continue;
         }
         if (patternKeyword(item.kw)) {
+            if (item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi))
+                unsupported(item, fmt::format("'{}' as a normal", item.text));
             parsePatternKeyword(holder, true);
             havePattern = true;
             if (holder.pattern().isList()) {
