@@ -190,10 +190,9 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     return color;
 }
 
-RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray,
-                         const scene::Object& obj, const Vec3& p, const Vec3& texP,
-                         const Vec3& viewDir, const Vec3& geometric, const State& state,
-                         RayCounts& counts) const {
+RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
+                         const Vec3& p, const Vec3& texP, const Vec3& viewDir,
+                         const Vec3& geometric, const State& state, RayCounts& counts) const {
     // A patterned texture: povray 3.7 shades each texture the pattern
     // picks (with its own reflection and transmission) and blends the
     // shaded colours by their weights (measured).
@@ -201,9 +200,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray,
         RGB color(0.0);
         const Vec3 q = top.transform.inversePoint(texP);
         const Vec3 entry = top.map->entryPoint(q);
-        top.map->visit(q, [&](const scene::Texture& t, double w) {
-            color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, state, counts) * w;
-        });
+        const scene::SurfaceInfo surface{geometric, viewDir};
+        top.map->visit(
+            q,
+            [&](const scene::Texture& t, double w) {
+                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, state, counts) * w;
+            },
+            &surface);
         return color;
     }
     const double eps = selfHitEpsilon(p, ray);
@@ -259,7 +262,10 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray,
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
         n = tex.perturbNormal(texP, geometric);
-        const Color surface = tex.pigment->at(tex.transform.inversePoint(texP));
+        // slope and aoi see the perturbed normal facing the viewer and the
+        // ray (measured: aoi follows a bumps normal).
+        const scene::SurfaceInfo info{n, viewDir};
+        const Color surface = tex.pigment->at(tex.transform.inversePoint(texP), &info);
         pigment = surface.rgb;
         const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, counts);
         color += i == 0 ? local : through * local;

@@ -7,12 +7,27 @@
 
 namespace frameray::scene {
 
+namespace {
+
+// Cells hash by their coordinates' low 12 bits (two's complement, so -1 is
+// 4095), unlike solid noise's offset lattice (measured).
+int cellHash(int ix, int iy, int iz) {
+    return kLatticeHash[kLatticeHash[kLatticeHash[ix & 0xFFF] ^ (iy & 0xFFF)] ^ (iz & 0xFFF)];
+}
+
+}  // namespace
+
 Vec3 crackleFeaturePoint(int ix, int iy, int iz) {
-    // Cells hash by their coordinates' low 12 bits (two's complement, so
-    // -1 is 4095), unlike solid noise's offset lattice (measured).
-    const int h =
-        kLatticeHash[kLatticeHash[kLatticeHash[ix & 0xFFF] ^ (iy & 0xFFF)] ^ (iz & 0xFFF)];
+    const int h = cellHash(ix, iy, iz);
     return {ix + kCrackleTable[h], iy + kCrackleTable[h + 1], iz + kCrackleTable[h + 2]};
+}
+
+double cellsValue(const Vec3& p) {
+    constexpr double kNudge = 1e-10;
+    const int ix = static_cast<int>(std::floor(p.x + kNudge));
+    const int iy = static_cast<int>(std::floor(p.y + kNudge));
+    const int iz = static_cast<int>(std::floor(p.z + kNudge));
+    return kCrackleTable[static_cast<std::size_t>(cellHash(ix, iy, iz))];
 }
 
 namespace {

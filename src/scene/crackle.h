@@ -30,4 +30,10 @@ double crackle(const Vec3& p, const CrackleSettings& settings, NoiseGenerator ge
 // The feature point of the unit cell whose low corner is (ix, iy, iz).
 Vec3 crackleFeaturePoint(int ix, int iy, int iz);
 
+// The cells pattern: one random value in [0, 1) per unit cube. povray takes
+// it from the same table as crackle's feature points (measured: the value
+// of cell c is the x offset of crackle's feature point in c), with the cube
+// found after the block patterns' 1e-10 nudge.
+double cellsValue(const Vec3& p);
+
 }  // namespace frameray::scene

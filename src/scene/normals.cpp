@@ -16,7 +16,8 @@ constexpr Vec3 kTetrahedron[4] = {{0.942809041, -0.333333333, 0.0},
 
 bool isNormalPattern(PatternKind k) {
     return k == PatternKind::Bumps || k == PatternKind::Dents || k == PatternKind::Wrinkles ||
-           k == PatternKind::Ripples || k == PatternKind::Waves;
+           k == PatternKind::Ripples || k == PatternKind::Waves || k == PatternKind::Quilted ||
+           k == PatternKind::Facets;
 }
 
 // Normals go into pattern space with the transpose of each transformation
@@ -37,8 +38,9 @@ double cycloidal(double v) {
     return std::sin(v * 2.0 * std::numbers::pi);
 }
 
-// The vector a built-in normal pattern adds at pattern-space point q.
-Vec3 normalPatternVector(const Normal& nm, const Vec3& q) {
+// The vector a built-in normal pattern adds at pattern-space point q to the
+// unit pattern-space normal m.
+Vec3 normalPatternVector(const Normal& nm, const Vec3& q, const Vec3& m) {
     const Pattern& pat = nm.pattern;
     switch (pat.kind) {
         case PatternKind::Bumps:
@@ -70,6 +72,12 @@ Vec3 normalPatternVector(const Normal& nm, const Vec3& q) {
             }
             return sum;
         }
+        case PatternKind::Quilted:
+            // povray's quilted normal adds the quilt offset itself rather
+            // than sampling the pattern's slope (measured).
+            return quiltOffset(q, pat.control0, pat.control1) * nm.amount;
+        case PatternKind::Facets:
+            return facetsNormal(q, m, pat.facets, pat.crackle.metric) - m;
         default:
             return {};
     }
@@ -173,7 +181,7 @@ Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n) const {
         m = bumpMapNormal(*bumpMap, amount, pattern.patternPoint(p), m);
     } else if (isNormalPattern(pattern.kind)) {
         // The normal patterns make their own vectors and ignore a slope_map.
-        m += normalPatternVector(*this, pattern.patternPoint(p));
+        m += normalPatternVector(*this, pattern.patternPoint(p), m);
     } else {
         // povray's fudge factor: -5 times the bump size per sample, as a
         // slope relative to the default accuracy of 0.02 (measured).

@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <numbers>
 
+#include "scene/object.h"
+#include "scene/texture.h"
+
 namespace frameray::scene {
 
 namespace {
@@ -50,6 +53,40 @@ int hexagonIndex(const Vec3& p) {
     return static_cast<int>(m < 0 ? m + 3 : m);
 }
 
+// Unit squares in the xz plane coloured so that no two sharing an edge or
+// a corner match: going round a 2×2 block from the origin's square the
+// indices are 0, 1 (z + 1), 2 (x + 1, z + 1), 3 (x + 1) (measured).
+int squareIndex(const Vec3& p) {
+    const auto ix = static_cast<long long>(std::floor(p.x + kBlockTolerance));
+    const auto iz = static_cast<long long>(std::floor(p.z + kBlockTolerance));
+    const int zOdd = static_cast<int>(iz & 1);
+    return (ix & 1) == 0 ? zOdd : 3 - zOdd;
+}
+
+// Equilateral triangles of unit side in the xz plane, in rows along x of
+// height sqrt(3)/2. In the sheared coordinates u = x - z/sqrt3,
+// v = 2z/sqrt3 every unit cell holds a lower and an upper triangle; with
+// k = (floor u - floor v) mod 3 the lower one takes (6 - 2k) mod 6 and the
+// upper one (3 + 2k) mod 6 (measured from povray's renders).
+int triangularIndex(const Vec3& p) {
+    constexpr double kSqrt3 = 1.7320508075688772;
+    const double u = p.x - p.z / kSqrt3, v = p.z * 2.0 / kSqrt3;
+    const double fu = std::floor(u), fv = std::floor(v);
+    long long k = (static_cast<long long>(fu) - static_cast<long long>(fv)) % 3;
+    if (k < 0) k += 3;
+    const bool upper = (u - fu) + (v - fv) >= 1.0;
+    return static_cast<int>(upper ? (3 + 2 * k) % 6 : (6 - 2 * k) % 6);
+}
+
+// The six pyramids from the origin through the faces of a cube: +x 0,
+// +y 1, +z 2, -x 3, -y 4, -z 5 by the largest coordinate (measured).
+int cubicIndex(const Vec3& p) {
+    const double ax = std::abs(p.x), ay = std::abs(p.y), az = std::abs(p.z);
+    if (ax >= ay && ax >= az) return p.x >= 0 ? 0 : 3;
+    if (ay >= az) return p.y >= 0 ? 1 : 4;
+    return p.z >= 0 ? 2 : 5;
+}
+
 // Bricks of brickSize laid in courses along y.
 // The mortar fills the top end of each cell in every axis. Index 0 is the
 // mortar, 1 the brick.
@@ -74,18 +111,49 @@ double quiltCurve(double t, double c0, double c1) {
     return t * t * t + 3.0 * t * u * u * c0 + 3.0 * t * t * u * c1;
 }
 
-double quilted(const Vec3& p, double c0, double c1) {
-    Vec3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5};
-    v = v * quiltCurve(length(v), c0, c1);
-    return (std::abs(v.x) + std::abs(v.y) + std::abs(v.z)) / 3.0;
+}  // namespace
+
+Vec3 quiltOffset(const Vec3& p, double c0, double c1) {
+    const Vec3 v{p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5,
+                 p.z - std::floor(p.z) - 0.5};
+    return v * quiltCurve(length(v), c0, c1);
 }
 
+namespace {
+
+// The mean of the absolute coordinates of the offset from the unit cube's
+// centre, scaled along its length by the quilt curve. povray scales the
+// result by 2/sqrt(3), written as 1.154700538 (measured to 1e-15), and
+// keeps the controls in single precision (the parser rounds them).
+double quilted(const Vec3& p, double c0, double c1) {
+    const Vec3 v = quiltOffset(p, c0, c1);
+    return (std::abs(v.x) + std::abs(v.y) + std::abs(v.z)) / 3.0 * 1.154700538;
+}
+
+// The angle of (x, y) about the z axis in turns, measured from -y
+// counter-clockwise (so +x is a quarter turn), 0 on the axis (measured).
+double spiralTurns(double x, double y, double rad) {
+    if (rad == 0) return 0;
+    const double a = std::asin(y / rad);
+    const double phi = x < 0 ? 1.5 * std::numbers::pi - a : 0.5 * std::numbers::pi + a;
+    return phi / kTwoPi;
+}
+
+// The triangle wave of period 1 rising from 0 at whole numbers to 1 at
+// halves (spiral2's building block).
+double triangle(double v) {
+    const double f = v - std::floor(v);
+    return f < 0.5 ? 2.0 * f : 2.0 * (1.0 - f);
+}
+
+// spiral1: z + distance from the z axis + arms · angle, unwrapped (the wave
+// wraps it). spiral2 adds the triangle waves of that sum and of the
+// distance alone, which makes the arms cross (both fitted to povray's
+// values to 1e-13).
 double spiral(const Vec3& p, int arms, bool second) {
-    const double r = std::hypot(p.x, p.y);
-    const double a = turns(p.x, p.y) * arms;
-    double v = second ? a - r : a + r;
-    (void)p.z;
-    return v;
+    const double rad = std::hypot(p.x, p.y);
+    const double sum = p.z + rad + arms * spiralTurns(p.x, p.y, rad);
+    return second ? triangle(sum) + triangle(rad) : sum;
 }
 
 // The wave sources of ripples and waves: povray places number_of_waves
@@ -218,7 +286,13 @@ int Pattern::listSize(PatternKind kind) {
         case PatternKind::Hexagon:
             return 3;
         case PatternKind::Brick:
+        case PatternKind::Object:
             return 2;
+        case PatternKind::Square:
+            return 4;
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return 6;
         default:
             return 0;
     }
@@ -233,12 +307,31 @@ int Pattern::index(const Vec3& point) const {
             return hexagonIndex(p);
         case PatternKind::Brick:
             return brickIndex(p, brickSize, mortar);
+        case PatternKind::Object:
+            return object && object->inside(p) ? 1 : 0;
+        case PatternKind::Square:
+            return squareIndex(p);
+        case PatternKind::Triangular:
+            return triangularIndex(p);
+        case PatternKind::Cubic:
+            return cubicIndex(p);
         default:
             return 0;
     }
 }
 
 namespace {
+
+// pigment_pattern's grey: povray weighs the channels 0.297, 0.589, 0.114
+// in single precision, products and sums alike (measured to 1e-17), and
+// ignores filter and transmit; the grey is not clamped.
+double pigmentGrey(const RGB& c) {
+    const float r = static_cast<float>(c.r) * 0.297f;
+    const float g = static_cast<float>(c.g) * 0.589f;
+    const float b = static_cast<float>(c.b) * 0.114f;
+    return static_cast<double>(r + g + b);
+}
+
 // gradient and function patterns wrap values above one into [0, 1) before
 // frequency and phase, but leave negative ones alone (measured).
 double wrapAboveOne(double v) {
@@ -246,8 +339,41 @@ double wrapAboveOne(double v) {
 }
 }  // namespace
 
-double Pattern::raw(const Vec3& p) const {
+namespace {
+
+// slope: the normal's elevation towards the slope direction, 0 facing
+// away, 0.5 across, 1 along it; plus the weighted altitude.
+double slopeValue(const Pattern& pat, const Vec3& p, const Vec3& n) {
+    auto mapRange = [](double v, double lo, double hi) {
+        return hi != lo ? (v - lo) / (hi - lo) : v;
+    };
+    const double sLen = length(pat.slopeDirection), aLen = length(pat.altitudeDirection);
+    double s = 0;
+    if (sLen > 0) {
+        const double c = std::clamp(dot(n, pat.slopeDirection) / sLen, -1.0, 1.0);
+        s = mapRange(0.5 + std::asin(c) / std::numbers::pi, pat.slopeLow, pat.slopeHigh);
+    }
+    if (aLen == 0) return s;
+    const double a =
+        mapRange(dot(p, pat.altitudeDirection) / aLen, pat.altitudeLow, pat.altitudeHigh);
+    return (sLen * s + aLen * a) / (sLen + aLen);
+}
+
+}  // namespace
+
+double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
     switch (kind) {
+        case PatternKind::Slope:
+        case PatternKind::Aoi: {
+            if (!surface) return 0.0;  // no surface (pattern functions, media)
+            // povray takes the world-space normal and ray as they are: the
+            // object's and the pattern's transformations do not turn them
+            // (measured: slope y under rotate z*30 or scale <1,3,1> is
+            // unchanged).
+            const SurfaceInfo& s = *surface;
+            if (kind == PatternKind::Slope) return slopeValue(*this, p, s.normal);
+            return std::acos(std::clamp(dot(s.normal, s.direction), -1.0, 1.0)) / std::numbers::pi;
+        }
         case PatternKind::Gradient:
             return wrapAboveOne(dot(p, gradient));
         case PatternKind::Function: {
@@ -276,6 +402,12 @@ double Pattern::raw(const Vec3& p) const {
             return spiral(p, arms, false);
         case PatternKind::Spiral2:
             return spiral(p, arms, true);
+        case PatternKind::Cells:
+            return cellsValue(p);
+        case PatternKind::DensityFile:
+            return density ? density->value(p, densityInterpolation) : 0.0;
+        case PatternKind::PigmentPattern:
+            return pigment ? pigmentGrey(pigment->at(p).rgb) : 0.0;
         case PatternKind::Bozo:
         case PatternKind::Spotted:
         case PatternKind::Bumps:
@@ -311,8 +443,8 @@ double Pattern::raw(const Vec3& p) const {
     }
 }
 
-double Pattern::value(const Vec3& p) const {
-    return wave(raw(patternPoint(p)));
+double Pattern::value(const Vec3& p, const SurfaceInfo* surface) const {
+    return wave(raw(patternPoint(p), surface));
 }
 
 double Pattern::wave(double rawValue) const {
@@ -342,7 +474,16 @@ double Pattern::wave(double rawValue) const {
 
 double PatternFunction::eval(const double* args) const {
     const Vec3 p{args[0], args[1], args[2]};
-    return pattern_.isList() ? pattern_.index(p) : pattern_.value(p);
+    if (!pattern_.isList()) return pattern_.value(p);
+    // A list pattern gives its index as it is (5 for cubic's -z) unless
+    // frequency, phase or the wave type differ from their defaults; then
+    // the index goes through them like a mapped value (measured: checker
+    // frequency 0.5 phase 0.1 gives 0.6 for index 1, brick frequency 3
+    // phase 0.2 gives fmod(3.2, 1.00001)).
+    const double index = pattern_.index(p);
+    const bool plain =
+        pattern_.frequency == 1 && pattern_.phase == 0 && pattern_.waveType == WaveType::Ramp;
+    return plain ? index : pattern_.wave(index);
 }
 
 }  // namespace frameray::scene

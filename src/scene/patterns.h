@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "scene/crackle.h"
+#include "scene/density_file.h"
+#include "scene/facets.h"
 #include "scene/fractals.h"
 #include "scene/image_map.h"
 #include "scene/noise.h"
@@ -19,11 +21,25 @@
 
 namespace frameray::scene {
 
+struct Object;
+class Pigment;
+
+// What a pattern may know of the surface besides the point (slope and aoi):
+// the unit (perturbed) surface normal facing the viewer and the unit ray
+// direction, both in world space whatever the pattern's space.
+struct SurfaceInfo {
+    Vec3 normal;
+    Vec3 direction;
+};
+
 enum class PatternKind {
     // colour-list patterns
     Checker,
     Hexagon,
     Brick,
+    Square,      // 4 colours
+    Triangular,  // 6 colours
+    Cubic,       // 6 colours
     // colour-mapped patterns
     Gradient,
     Onion,
@@ -36,6 +52,18 @@ enum class PatternKind {
     Quilted,
     Spiral1,
     Spiral2,
+    Cells,
+    // pigment_pattern { }: the grey value of a pigment
+    PigmentPattern,
+    // object { }: a list pattern, index 1 inside the object, 0 outside
+    Object,
+    // facets (normals only, facets.h)
+    Facets,
+    // density_file df3 (density_file.h)
+    DensityFile,
+    // slope { } and aoi: values from the surface normal and the ray
+    Slope,
+    Aoi,
     // noise-based colour-mapped patterns (spotted is bozo with another
     // default colour map)
     Bozo,
@@ -64,6 +92,10 @@ inline constexpr int kWaveSourceCount = 10;
 Vec3 waveSourceCenter(int i);
 double waveSourceFrequency(int i);
 
+// quilted's offset from the unit cube's centre, scaled by the quilt curve
+// of its length (the pattern averages its coordinates; the normal adds it).
+Vec3 quiltOffset(const Vec3& p, double control0, double control1);
+
 enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
 struct Pattern {
@@ -83,7 +115,19 @@ struct Pattern {
     std::shared_ptr<const ImageMap> image;             // image_pattern
     std::shared_ptr<const CompiledFunction> function;  // function { ... }
     CrackleSettings crackle;                           // crackle's form, metric, offset, solid
-    FractalSettings fractal;                           // mandel and julia
+    FractalSettings fractal;                           // mandel, julia and magnet
+    FacetsSettings facets;                             // facets (normals only)
+    std::shared_ptr<const Pigment> pigment;            // pigment_pattern
+    std::shared_ptr<const Object> object;              // object
+    std::shared_ptr<const DensityFile> density;        // density_file
+    int densityInterpolation = 0;                      // density_file's interpolate
+    // slope { S [, lo, hi] [altitude A [, lo, hi]] }: 0.5 + asin(n·Ŝ)/π and
+    // the point's height p·Â, each mapped by (v - lo) / (hi - lo) when a
+    // range is given, averaged with the weights |S| and |A| (measured).
+    Vec3 slopeDirection{0, 1, 0};
+    double slopeLow = 0, slopeHigh = 1;
+    Vec3 altitudeDirection{0, 0, 0};  // zero: no altitude
+    double altitudeLow = 0, altitudeHigh = 1;
     // The pattern's own `turbulence`: applied after every warp and
     // transformation, or used inside marble, wood and agate.
     std::optional<Turbulence> turbulence;
@@ -105,17 +149,18 @@ struct Pattern {
     int index(const Vec3& p) const;
     // Colour-mapped patterns: the pattern function at pattern-space point q
     // (after patternPoint), before the wave.
-    double raw(const Vec3& q) const;
+    double raw(const Vec3& q, const SurfaceInfo* surface = nullptr) const;
     // The colour map index at texture point p: raw() after frequency, phase
     // and the wave type.
-    double value(const Vec3& p) const;
+    double value(const Vec3& p, const SurfaceInfo* surface = nullptr) const;
     // Applies frequency, phase and the wave type to a raw value.
     double wave(double raw) const;
 };
 
 // `function { pattern { ... } }`: a pattern's value as a function of x, y,
-// z — the colour-list index for checker, hexagon and brick, otherwise the
-// value after frequency, phase and the wave (measured against povray).
+// z — the colour-list index for list patterns (through frequency, phase
+// and the wave when any of them is not the default), otherwise the value
+// after frequency, phase and the wave (measured against povray).
 class PatternFunction final : public NativeFunction {
   public:
     explicit PatternFunction(Pattern pattern) : pattern_(std::move(pattern)) {}

@@ -55,8 +55,9 @@ void Pigment::setPigmentMap(std::vector<MapEntry> map) {
     kind_ = Kind::PigmentMapped;
 }
 
-Color Pigment::at(const Vec3& point) const {
+Color Pigment::at(const Vec3& point, const SurfaceInfo* surface) const {
     if (kind_ == Kind::Solid) return color_;
+    const SurfaceInfo* sub = surface;  // world-space: the same for sub-pigments
     // Sub-pigments are evaluated in this pigment's space, at the point its
     // warps displaced (povray: the entries of a turbulent map are
     // turbulent too; measured).
@@ -65,10 +66,10 @@ Color Pigment::at(const Vec3& point) const {
     switch (kind_) {
         case Kind::List: {
             const auto i = static_cast<std::size_t>(pattern_.index(point));
-            return i < list_.size() && list_[i] ? list_[i]->at(p) : Color();
+            return i < list_.size() && list_[i] ? list_[i]->at(p, sub) : Color();
         }
         case Kind::ColorMapped:
-            return colorMap_.at(pattern_.value(point));
+            return colorMap_.at(pattern_.value(point, surface));
         case Kind::PigmentMapped: {
             if (pigmentMap_.empty()) return Color();
             if (average_) {
@@ -78,7 +79,7 @@ Color Pigment::at(const Vec3& point) const {
                 double filter = 0, transmit = 0;
                 for (const MapEntry& e : pigmentMap_) {
                     if (e.value == 0) continue;
-                    const Color c = e.pigment->at(p);
+                    const Color c = e.pigment->at(p, sub);
                     rgb += c.rgb * e.value;
                     filter += c.filter * e.value;
                     transmit += c.transmit * e.value;
@@ -87,17 +88,17 @@ Color Pigment::at(const Vec3& point) const {
                 if (total == 0) return Color();
                 return Color(rgb * (1.0 / total), filter / total, transmit / total);
             }
-            const double v = pattern_.value(point);
-            if (v <= pigmentMap_.front().value) return pigmentMap_.front().pigment->at(p);
+            const double v = pattern_.value(point, surface);
+            if (v <= pigmentMap_.front().value) return pigmentMap_.front().pigment->at(p, sub);
             std::size_t hi = 1;
             while (hi < pigmentMap_.size() && pigmentMap_[hi].value <= v) ++hi;
-            if (hi == pigmentMap_.size()) return pigmentMap_.back().pigment->at(p);
+            if (hi == pigmentMap_.size()) return pigmentMap_.back().pigment->at(p, sub);
             const MapEntry& a = pigmentMap_[hi - 1];
             const MapEntry& b = pigmentMap_[hi];
             const double span = b.value - a.value;
-            if (span <= 0) return b.pigment->at(p);
+            if (span <= 0) return b.pigment->at(p, sub);
             const double t = (v - a.value) / span, s = 1.0 - t;
-            const Color ca = a.pigment->at(p), cb = b.pigment->at(p);
+            const Color ca = a.pigment->at(p, sub), cb = b.pigment->at(p, sub);
             return Color(ca.rgb * s + cb.rgb * t, ca.filter * s + cb.filter * t,
                          ca.transmit * s + cb.transmit * t);
         }

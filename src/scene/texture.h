@@ -32,7 +32,8 @@ class Pigment {
 
     // Colour at a point in the texture's space; the pigment's own
     // transformation is applied here.
-    Color at(const Vec3& p) const;
+    // `surface`: the normal and ray in the same space as p (slope, aoi).
+    Color at(const Vec3& p, const SurfaceInfo* surface = nullptr) const;
     const Color& solidColor() const { return color_; }
     Kind kind() const { return kind_; }
     bool isSolid() const { return kind_ == Kind::Solid; }
@@ -148,7 +149,7 @@ struct TextureMap {
     // point q: one or two for a map (povray 3.7 shades both and blends the
     // results, measured), one for a list pattern, all for `average`.
     template <typename Visit>
-    void visit(const Vec3& q, Visit&& visit) const;
+    void visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface = nullptr) const;
 
     // Moves the pattern and every entry by t.
     void transformBy(const Transform& t);
@@ -199,7 +200,7 @@ struct Texture {
 };
 
 template <typename Visit>
-void TextureMap::visit(const Vec3& q, Visit&& visit) const {
+void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface) const {
     if (entries.empty()) return;
     switch (mode) {
         case Mode::List: {
@@ -218,7 +219,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit) const {
         case Mode::Values:
             break;
     }
-    const double v = holder.pattern().value(q);
+    const double v = holder.pattern().value(q, surface);
     if (v <= entries.front().value) return visit(*entries.front().texture, 1.0);
     std::size_t hi = 1;
     while (hi < entries.size() && entries[hi].value <= v) ++hi;

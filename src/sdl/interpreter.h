@@ -356,7 +356,12 @@ class Interpreter {
     // A pattern keyword and its arguments (gradient's vector...), without
     // a colour list; isPatternKeyword tells whether `t` is one.
     bool isPatternKeyword(const Token& t) const;
-    void parsePatternKeyword(scene::Pigment& holder);
+    // `inNormal`: the pattern belongs to a normal (facets is allowed).
+    void parsePatternKeyword(scene::Pigment& holder, bool inNormal = false);
+    // The object pattern's list entries sit inside its braces: callers
+    // call this after reading a list pattern's entries.
+    void closeListPattern(const scene::Pattern& pattern);
+    void parseSlopeArguments(scene::Pattern& pattern);  // after 'slope'
     std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
     // --- texture bodies and maps (parse_texture_maps.cpp) ---
     void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`

@@ -196,6 +196,7 @@ bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
             if (peek().is(Keyword::kw_texture)) entry = parseTexture(nullptr);
             map.entries.push_back({static_cast<double>(i), std::move(entry)});
         }
+        closeListPattern(map.holder.pattern());
         return true;
     }
     // Pattern modifiers (turbulence, warps, wave types...).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 #include "sdl/interpreter.h"
@@ -34,6 +35,12 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Hexagon;
         case Keyword::kw_brick:
             return PatternKind::Brick;
+        case Keyword::kw_square:
+            return PatternKind::Square;
+        case Keyword::kw_triangular:
+            return PatternKind::Triangular;
+        case Keyword::kw_cubic:
+            return PatternKind::Cubic;
         case Keyword::kw_gradient:
             return PatternKind::Gradient;
         case Keyword::kw_onion:
@@ -78,9 +85,28 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Crackle;
         case Keyword::kw_mandel:
         case Keyword::kw_julia:
+        case Keyword::kw_magnet:
             return PatternKind::Fractal;
-        // quilted, spiral1 and spiral2 do not match povray yet: they stay
-        // "not supported yet" until they do.
+        case Keyword::kw_quilted:
+            return PatternKind::Quilted;
+        case Keyword::kw_spiral1:
+            return PatternKind::Spiral1;
+        case Keyword::kw_spiral2:
+            return PatternKind::Spiral2;
+        case Keyword::kw_cells:
+            return PatternKind::Cells;
+        case Keyword::kw_pigment_pattern:
+            return PatternKind::PigmentPattern;
+        case Keyword::kw_object:
+            return PatternKind::Object;
+        case Keyword::kw_facets:
+            return PatternKind::Facets;
+        case Keyword::kw_density_file:
+            return PatternKind::DensityFile;
+        case Keyword::kw_slope:
+            return PatternKind::Slope;
+        case Keyword::kw_aoi:
+            return PatternKind::Aoi;
         default:
             return std::nullopt;
     }
@@ -91,11 +117,20 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
     const Color blue(RGB(0, 0, 1)), green(RGB(0, 1, 0)), red(RGB(1, 0, 0));
     switch (kind) {
         case PatternKind::Checker:
+        case PatternKind::Object:  // outside, inside (measured)
             return {blue, green};
         case PatternKind::Hexagon:
             return {blue, green, red};
         case PatternKind::Brick:
             return {Color(RGB(0.5)), Color(RGB(0.6, 0.15, 0.15))};
+        // square, triangular and cubic: red, green, blue, yellow, cyan,
+        // magenta (measured).
+        case PatternKind::Square:
+            return {red, green, blue, Color(RGB(1, 1, 0))};
+        case PatternKind::Triangular:
+        case PatternKind::Cubic:
+            return {
+                red, green, blue, Color(RGB(1, 1, 0)), Color(RGB(0, 1, 1)), Color(RGB(1, 0, 1))};
         default:
             return {};
     }
@@ -162,9 +197,11 @@ bool Interpreter::isPatternKeyword(const Token& t) const {
     return patternKeyword(t.kw).has_value();
 }
 
-void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
+void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
     const Token item = next();
     const scene::PatternKind kind = *patternKeyword(item.kw);
+    if (kind == scene::PatternKind::Facets && !inNormal)
+        fail(item, "'facets' can only be used in a normal");
     scene::Pattern pattern = pigment.pattern();
     pattern.kind = kind;
     if (kind == scene::PatternKind::Gradient) {
@@ -173,15 +210,100 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment) {
         if (len == 0) fail(item, "gradient vector is zero");
         pattern.gradient = g * (1.0 / len);
     } else if (kind == scene::PatternKind::Spiral1 || kind == scene::PatternKind::Spiral2) {
+        // The number of arms is truncated to a whole number (measured);
+        // spirals default to the triangle wave like marble and wood.
         pattern.arms = static_cast<int>(parseFloat());
+        pattern.waveType = scene::WaveType::Triangle;
     } else if (kind == scene::PatternKind::Fractal) {
         parseFractalHead(item, pattern.fractal);
     } else if (kind == scene::PatternKind::Function) {
         pattern.function = parseXyzFunction(item);
+    } else if (kind == scene::PatternKind::Slope) {
+        parseSlopeArguments(pattern);
+    } else if (kind == scene::PatternKind::DensityFile) {
+        // density_file df3 "NAME" [interpolate N]
+        const Token type = next();
+        if (!type.is(Keyword::kw_df3))
+            fail(type,
+                 fmt::format("expected 'df3' after 'density_file', found {}", describeToken(type)));
+        const Token at = peek();
+        const std::string name = parseString();
+        const std::filesystem::path path = findIncludeFile(name);
+        if (path.empty()) fail(at, fmt::format("Cannot open file '{}'.", name));
+        checkReadable(path, name, at);
+        try {
+            pattern.density =
+                std::make_shared<const scene::DensityFile>(scene::DensityFile::read(path));
+        } catch (const std::runtime_error& e) {
+            fail(at, e.what());
+        }
+        if (accept(Keyword::kw_interpolate)) {
+            const Token n = peek();
+            const double mode = parseFloat();
+            if (mode < 0 || mode > 2)
+                fail(n, fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
+            pattern.densityInterpolation = static_cast<int>(mode);
+        }
+    } else if (kind == scene::PatternKind::PigmentPattern) {
+        expect(Sym::LBrace, "'{' after 'pigment_pattern'");
+        auto inner = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
+        parsePigmentBody(*inner, Sym::RBrace);
+        expect(Sym::RBrace, "'}' closing 'pigment_pattern'");
+        pattern.pigment = std::move(inner);
+    } else if (kind == scene::PatternKind::Object) {
+        // object { IDENTIFIER | OBJECT  [ENTRY_OUTSIDE, ENTRY_INSIDE] }: the
+        // closing brace comes after the list entries (closeListPattern).
+        expect(Sym::LBrace, "'{' after 'object'");
+        const Token t = peek();
+        ObjectPtr obj;
+        if (t.isIdentifier()) {
+            const Value* v = lookup(std::string(t.text));
+            if (!v || !std::holds_alternative<ObjectPtr>(*v))
+                fail(t, fmt::format("expected an object in the object pattern, found {}",
+                                    describeToken(t)));
+            next();
+            obj = std::get<ObjectPtr>(*v);
+        } else {
+            obj = parseObject();
+        }
+        pattern.object = std::move(obj);
     } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
         pattern.waveType = scene::WaveType::Triangle;  // their default wave
     }
     pigment.setPattern(pattern);
+}
+
+// slope <S> | slope { <S> [, LO, HI] [altitude <A> [, LO, HI]] }
+void Interpreter::parseSlopeArguments(scene::Pattern& pattern) {
+    pattern.altitudeDirection = Vec3(0, 0, 0);
+    pattern.slopeLow = 0;
+    pattern.slopeHigh = 1;
+    pattern.altitudeLow = 0;
+    pattern.altitudeHigh = 1;
+    if (!accept(Sym::LBrace)) {
+        pattern.slopeDirection = parseVec3();
+        return;
+    }
+    auto range = [&](double& lo, double& hi) {
+        if (!accept(Sym::Comma)) return;
+        lo = parseFloat();
+        accept(Sym::Comma);
+        hi = parseFloat();
+    };
+    pattern.slopeDirection = parseVec3();
+    range(pattern.slopeLow, pattern.slopeHigh);
+    if (accept(Keyword::kw_altitude)) {
+        pattern.altitudeDirection = parseVec3();
+        range(pattern.altitudeLow, pattern.altitudeHigh);
+    }
+    const Token t = peek();
+    if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+        unsupported(t, fmt::format("'{}' in slope", t.text));
+    expect(Sym::RBrace, "'}' closing 'slope'");
+}
+
+void Interpreter::closeListPattern(const scene::Pattern& pattern) {
+    if (pattern.kind == scene::PatternKind::Object) expect(Sym::RBrace, "'}' closing 'object'");
 }
 
 bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
@@ -203,9 +325,17 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
                     n.isIdentifier() && lookup(std::string(n.text)) &&
                     std::holds_alternative<PigmentPtr>(*lookup(std::string(n.text)));
                 if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
+                // povray's newer list patterns (object, square, triangular,
+                // cubic) take colours only in a pigment.
+                const bool coloursOnly = *kind != scene::PatternKind::Checker &&
+                                         *kind != scene::PatternKind::Hexagon &&
+                                         *kind != scene::PatternKind::Brick;
+                if (coloursOnly && (n.is(Keyword::kw_pigment) || isPigmentId))
+                    fail(n, fmt::format("the {} pattern takes colours, not pigments", item.text));
                 list[i] = parsePigmentListEntry();
             }
             pigment.setList(std::move(list));
+            closeListPattern(pigment.pattern());
         }
         return true;
     }
@@ -241,13 +371,13 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
         case Keyword::kw_control0: {
             next();
             const double c = parseFloat();
-            editPattern([&](scene::Pattern& p) { p.control0 = c; });
+            editPattern([&](scene::Pattern& p) { p.control0 = static_cast<float>(c); });
             return true;
         }
         case Keyword::kw_control1: {
             next();
             const double c = parseFloat();
-            editPattern([&](scene::Pattern& p) { p.control1 = c; });
+            editPattern([&](scene::Pattern& p) { p.control1 = static_cast<float>(c); });
             return true;
         }
         case Keyword::kw_frequency: {
@@ -323,6 +453,21 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             next();
             editPattern([&](scene::Pattern& p) { p.crackle.solid = true; });
             return true;
+        case Keyword::kw_coords:
+        case Keyword::kw_size: {
+            if (pigment.pattern().kind != scene::PatternKind::Facets) return false;
+            next();
+            const double v = parseFloat();
+            editPattern([&](scene::Pattern& p) {
+                // coords C tilts by C (the cell size stays `size`);
+                // measured: the coords value does not scale the cells.
+                if (item.kw == Keyword::kw_coords)
+                    p.facets.coords = v;
+                else
+                    p.facets.size = v;
+            });
+            return true;
+        }
         case Keyword::kw_agate_turb: {
             next();
             const double a = parseFloat();
@@ -400,7 +545,9 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             continue;
         }
         if (patternKeyword(item.kw)) {
-            parsePatternKeyword(holder);
+            if (item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi))
+                unsupported(item, fmt::format("'{}' as a normal", item.text));
+            parsePatternKeyword(holder, true);
             havePattern = true;
             if (holder.pattern().isList()) {
                 // A list pattern takes one normal per index.
@@ -416,11 +563,17 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                 }
                 while (static_cast<int>(normal.map.size()) < count)
                     normal.map.push_back({static_cast<double>(normal.map.size()), nullptr});
+                closeListPattern(holder.pattern());
                 continue;
             }
             if (normal.mapMode == scene::Normal::MapMode::List)
                 normal.mapMode = scene::Normal::MapMode::None;
-            // An optional bump size follows the pattern.
+            // An optional bump size follows the pattern; the fractals write
+            // it after a comma (mandel ITERATIONS, BUMP_SIZE).
+            if (holder.pattern().kind == scene::PatternKind::Fractal && accept(Sym::Comma)) {
+                normal.amount = parseFloat();
+                continue;
+            }
             if (bumpSizeFollows()) normal.amount = parseFloat();
             continue;
         }
@@ -470,11 +623,28 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     return std::make_shared<const scene::Normal>(normal);
 }
 
-// mandel ITERATIONS | julia <C>, ITERATIONS
+// mandel ITERATIONS | julia <C>, ITERATIONS | magnet 1|2 (mandel | julia <C>,)
+// ITERATIONS
 void Interpreter::parseFractalHead(const Token& kind, scene::FractalSettings& f) {
+    using Kind = scene::FractalSettings::Kind;
     f = scene::FractalSettings{};
-    if (kind.is(Keyword::kw_julia)) {
-        f.julia = true;
+    Token form = kind;
+    int magnetType = 0;
+    if (kind.is(Keyword::kw_magnet)) {
+        const Token at = peek();
+        const double t = parseFloat();
+        if (t != 1 && t != 2) fail(at, fmt::format("magnet type must be 1 or 2, found {}", t));
+        magnetType = static_cast<int>(t);
+        form = next();
+        if (!form.is(Keyword::kw_mandel) && !form.is(Keyword::kw_julia))
+            fail(form, fmt::format("expected 'mandel' or 'julia' after 'magnet {}', found {}",
+                                   magnetType, describeToken(form)));
+    }
+    const bool julia = form.is(Keyword::kw_julia);
+    f.kind = magnetType == 0   ? (julia ? Kind::Julia : Kind::Mandel)
+             : magnetType == 1 ? (julia ? Kind::Magnet1Julia : Kind::Magnet1Mandel)
+                               : (julia ? Kind::Magnet2Julia : Kind::Magnet2Mandel);
+    if (julia) {
         const VectorValue c = parseVector();
         f.cx = c.v[0];
         f.cy = c.v[1];
@@ -487,9 +657,11 @@ void Interpreter::parseFractalHead(const Token& kind, scene::FractalSettings& f)
 }
 
 // exponent N | interior TYPE, FACTOR | exterior TYPE, FACTOR (after the
-// keyword). Only the types frameray matches to povray are accepted.
+// keyword). povray rejects the same values (types outside 0..6, exponent
+// on a magnet).
 void Interpreter::parseFractalItem(const Token& item, scene::FractalSettings& f) {
     if (item.is(Keyword::kw_exponent)) {
+        if (f.isMagnet()) fail(item, "'exponent' can only be used with mandel or julia");
         const Token at = peek();
         const double e = parseFloat();
         if (e < 2 || e > 33 || e != std::floor(e))
@@ -499,15 +671,16 @@ void Interpreter::parseFractalItem(const Token& item, scene::FractalSettings& f)
         return;
     }
     const Token at = peek();
-    const int type = static_cast<int>(parseFloat());
+    const double typeValue = parseFloat();
     accept(Sym::Comma);
     const double factor = parseFloat();
+    const int type = static_cast<int>(typeValue);  // truncated like povray's
+    if (type < 0 || type > 6)
+        fail(at, fmt::format("fractal {} type must be 0 to 6, found {}", item.text, typeValue));
     if (item.is(Keyword::kw_interior)) {
-        if (type != 0) unsupported(at, fmt::format("fractal interior type {}", type));
         f.interiorType = type;
         f.interiorFactor = factor;
     } else {
-        if (type != 0 && type != 1) unsupported(at, fmt::format("fractal exterior type {}", type));
         f.exteriorType = type;
         f.exteriorFactor = factor;
     }

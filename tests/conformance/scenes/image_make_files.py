@@ -106,3 +106,16 @@ for y in range(32):
         v = max(0.0, 1.0 - d * d) * 200 + (50 if abs(x - y) < 2 else 0)
         hf_idx.append(min(250, int(v)))
 write_gif('mesh_hf_heights.gif', 32, 32, hf_idx, hf_palette)
+
+# 16 x 16 x 16 8-bit df3 density for tex_density_file.pov: a soft blob
+# plus a tilted ripple (header: three big-endian 16-bit sizes).
+n = 16
+density = []
+for k in range(n):
+    for j in range(n):
+        for i in range(n):
+            x, y, z = [(c + 0.5) / n - 0.5 for c in (i, j, k)]
+            r = math.sqrt(x * x + y * y + z * z)
+            v = max(0.0, 1 - 2 * r) * 0.7 + 0.3 * (0.5 + 0.5 * math.sin(12 * x + 7 * y - 5 * z))
+            density.append(int(round(min(1, v) * 255)))
+open('density_blob.df3', 'wb').write(struct.pack('>HHH', n, n, n) + bytes(density))
