@@ -126,16 +126,38 @@ void TextShape::glyphHits(const Glyph& g, const Ray& ray, double tMin, double tM
     ts.resize(kept);
 }
 
+bool TextShape::RaySpan::misses(const Bounds& b) const {
+    return b.hi.x < lo.x || b.lo.x > hi.x || b.hi.y < lo.y || b.lo.y > hi.y;
+}
+
+// Where the ray runs inside the text's bounds, as an xy rectangle: glyphs
+// outside it need no slab test. A ray seen from the front crosses the thin
+// text in a short span, so it meets one or two glyphs of a long line.
+bool TextShape::span(const Ray& ray, double tMin, double tMax, RaySpan& s) const {
+    double ta = std::max(tMin, kMinDepth), tb = tMax;
+    if (!slab(ray, bounds_, ta, tb)) return false;
+    const Vec3 a = ray.origin + ray.direction * ta, b = ray.origin + ray.direction * tb;
+    s.lo = {std::min(a.x, b.x), std::min(a.y, b.y)};
+    s.hi = {std::max(a.x, b.x), std::max(a.y, b.y)};
+    return true;
+}
+
 void TextShape::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
     const size_t from = ts.size();
-    for (const Glyph& g : glyphs_) glyphHits(g, ray, tMin, tMax, ts);
+    RaySpan s;
+    if (!span(ray, tMin, tMax, s)) return;
+    for (const Glyph& g : glyphs_)
+        if (!s.misses(g.box)) glyphHits(g, ray, tMin, tMax, ts);
     std::sort(ts.begin() + static_cast<std::ptrdiff_t>(from), ts.end());
 }
 
 bool TextShape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    RaySpan s;
+    if (!span(ray, tMin, tMax, s)) return false;
     std::vector<double>& hits = scratchHits();
     bool found = false;
     for (const Glyph& g : glyphs_) {
+        if (s.misses(g.box)) continue;
         hits.clear();
         // Later glyphs only matter nearer than the best hit so far.
         glyphHits(g, ray, tMin, tMax, hits);

@@ -58,6 +58,13 @@ class TextShape final : public Shape {
         double dx, dy;
         Bounds box;  // where its surface can be, in text space
     };
+    // The xy rectangle the ray covers inside the text's bounds: glyphs
+    // whose boxes miss it cannot be hit.
+    struct RaySpan {
+        Point2 lo, hi;
+        bool misses(const Bounds& b) const;
+    };
+    bool span(const Ray& ray, double tMin, double tMax, RaySpan& s) const;
     // Every crossing of glyph g in (tMin, tMax), appended to ts.
     void glyphHits(const Glyph& g, const Ray& ray, double tMin, double tMax,
                    std::vector<double>& ts) const;
