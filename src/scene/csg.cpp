@@ -13,7 +13,8 @@ bool keepsCrossing(const Object& node, size_t self, const Vec3& p) {
         if (j == self) continue;
         const Object& other = *kids[j];
         switch (node.op) {
-            case CsgOp::Union: return true;
+            case CsgOp::Union:
+                return true;
             case CsgOp::Merge:
                 if (other.inside(p)) return false;
                 break;
@@ -32,7 +33,8 @@ bool keepsCrossing(const Object& node, size_t self, const Vec3& p) {
 // child of a difference counts inverted.
 Bounds operandInsideBounds(const Object& node, size_t i) {
     const Object& child = *node.children[i];
-    return node.op == CsgOp::Difference && i > 0 ? child.insideInvertedBounds() : child.insideBounds();
+    return node.op == CsgOp::Difference && i > 0 ? child.insideInvertedBounds()
+                                                 : child.insideBounds();
 }
 
 // Whether the ray (from tMin on) passes through an axis-aligned box.
@@ -80,7 +82,8 @@ bool rayMeetsOperandBoxes(const Object& node, const Ray& ray, double tMin) {
 
 void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
              std::vector<SurfaceHit>& hits) {
-    if ((node.op == CsgOp::Intersection || node.op == CsgOp::Difference) && !rayMeetsOperandBoxes(node, ray, tMin))
+    if ((node.op == CsgOp::Intersection || node.op == CsgOp::Difference) &&
+        !rayMeetsOperandBoxes(node, ray, tMin))
         return;
     const size_t from = hits.size();
     for (size_t i = 0; i < node.children.size(); ++i) {
@@ -102,12 +105,15 @@ bool inside(const Object& node, const Vec3& p) {
     switch (node.op) {
         case CsgOp::Union:
         case CsgOp::Merge:
-            return std::any_of(kids.begin(), kids.end(), [&](const ObjectRef& c) { return c->inside(p); });
+            return std::any_of(kids.begin(), kids.end(),
+                               [&](const ObjectRef& c) { return c->inside(p); });
         case CsgOp::Intersection:
-            return std::all_of(kids.begin(), kids.end(), [&](const ObjectRef& c) { return c->inside(p); });
+            return std::all_of(kids.begin(), kids.end(),
+                               [&](const ObjectRef& c) { return c->inside(p); });
         case CsgOp::Difference:
             if (kids.empty() || !kids[0]->inside(p)) return false;
-            return std::all_of(kids.begin() + 1, kids.end(), [&](const ObjectRef& c) { return c->insideInverted(p); });
+            return std::all_of(kids.begin() + 1, kids.end(),
+                               [&](const ObjectRef& c) { return c->insideInverted(p); });
     }
     return false;
 }
@@ -145,10 +151,12 @@ Bounds insideBounds(const Object& node) {
 
 namespace {
 
-ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& texture, const Object& flags) {
+ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& texture,
+                  const Object& flags) {
     const bool needsTexture = !obj->texture && texture;
     const bool needsInterior = !obj->interior && flags.interior;
-    const bool needsFlags = (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
+    const bool needsFlags = (flags.noShadow && !obj->noShadow) ||
+                            (flags.noImage && !obj->noImage) ||
                             (flags.noReflection && !obj->noReflection) ||
                             (flags.doubleIlluminate && !obj->doubleIlluminate);
     if (!obj->isCsg() && !needsTexture && !needsInterior && !needsFlags) return obj;
@@ -160,11 +168,17 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
     copy->noReflection |= flags.noReflection;
     copy->doubleIlluminate |= flags.doubleIlluminate;
     for (ObjectRef& child : copy->children) child = inherit(child, copy->texture, *copy);
+    copy->childBounds.clear();
+    if (copy->isCsg() && copy->op == CsgOp::Union)
+        for (const ObjectRef& child : copy->children)
+            copy->childBounds.push_back(child->surfaceBounds().padded());
     return copy;
 }
 
 }  // namespace
 
-ObjectRef resolveInheritance(const ObjectRef& top) { return inherit(top, nullptr, Object{}); }
+ObjectRef resolveInheritance(const ObjectRef& top) {
+    return inherit(top, nullptr, Object{});
+}
 
 }  // namespace frameray::scene::csg

@@ -14,14 +14,14 @@ namespace {
 // nested queries (a bounding object tested inside a CSG child's query)
 // never share one. Keeps the ray callbacks free of allocations once warm.
 class ScratchHits {
-public:
+  public:
     ScratchHits() : hits_(acquire()) {}
     ~ScratchHits() { --depth(); }
     ScratchHits(const ScratchHits&) = delete;
     ScratchHits& operator=(const ScratchHits&) = delete;
     std::vector<SurfaceHit>& get() { return hits_; }
 
-private:
+  private:
     static std::vector<std::unique_ptr<std::vector<SurfaceHit>>>& pool() {
         thread_local std::vector<std::unique_ptr<std::vector<SurfaceHit>>> p;
         return p;
@@ -44,10 +44,14 @@ private:
 
 bool visibleTo(const Object& primitive, RayKind kind) {
     switch (kind) {
-        case RayKind::Camera: return !primitive.noImage;
-        case RayKind::Reflection: return !primitive.noReflection;
-        case RayKind::Shadow: return !primitive.noShadow;
-        case RayKind::Any: return true;
+        case RayKind::Camera:
+            return !primitive.noImage;
+        case RayKind::Reflection:
+            return !primitive.noReflection;
+        case RayKind::Shadow:
+            return !primitive.noShadow;
+        case RayKind::Any:
+            return true;
     }
     return true;
 }
@@ -58,7 +62,8 @@ std::shared_ptr<const Object> transformedCopy(const ObjectRef& obj, const Transf
     return copy;
 }
 
-Bounds intersectAll(Bounds b, const std::vector<ObjectRef>& objects, Bounds (Object::*bounds)() const) {
+Bounds intersectAll(Bounds b, const std::vector<ObjectRef>& objects,
+                    Bounds (Object::*bounds)() const) {
     for (const ObjectRef& o : objects) b = b.intersected(((*o).*bounds)());
     return b;
 }
@@ -96,19 +101,22 @@ namespace {
 bool passesBoundedBy(const Object& obj, const Ray& ray, double tMin) {
     for (const ObjectRef& bound : obj.boundedBy) {
         SurfaceHit ignored;
-        if (!bound->firstHit(ray, tMin, kInfinity, RayKind::Any, ignored) && !bound->inside(ray.origin))
+        if (!bound->firstHit(ray, tMin, kInfinity, RayKind::Any, ignored) &&
+            !bound->inside(ray.origin))
             return false;
     }
     return true;
 }
 
 bool insideAllClips(const Object& obj, const Vec3& p) {
-    return std::all_of(obj.clippedBy.begin(), obj.clippedBy.end(), [&](const ObjectRef& c) { return c->inside(p); });
+    return std::all_of(obj.clippedBy.begin(), obj.clippedBy.end(),
+                       [&](const ObjectRef& c) { return c->inside(p); });
 }
 
 }  // namespace
 
-void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind, std::vector<SurfaceHit>& hits) const {
+void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
+                     std::vector<SurfaceHit>& hits) const {
     // povray cuts an object at an undersized bound for what the camera
     // sees but not for the shadow it casts.
     if (kind != RayKind::Shadow && !boundedBy.empty() && !passesBoundedBy(*this, ray, tMin)) return;
@@ -117,7 +125,8 @@ void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind, std
         thread_local std::vector<double> ts;  // the shape call below never recurses
         ts.clear();
         // Object space without renormalising keeps t the same in every space.
-        const Ray local{transform.inversePoint(ray.origin), transform.inverseDirection(ray.direction)};
+        const Ray local{transform.inversePoint(ray.origin),
+                        transform.inverseDirection(ray.direction)};
         shape->allHits(local, tMin, tMax, ts);
         for (const double t : ts) hits.push_back({t, this});
     } else {
@@ -130,11 +139,13 @@ void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind, std
     hits.resize(kept);
 }
 
-bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, SurfaceHit& hit) const {
+bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind,
+                      SurfaceHit& hit) const {
     const bool plain = clippedBy.empty() && boundedBy.empty();
     if (shape && plain) {
         if (!visibleTo(*this, kind)) return false;
-        const Ray local{transform.inversePoint(ray.origin), transform.inverseDirection(ray.direction)};
+        const Ray local{transform.inversePoint(ray.origin),
+                        transform.inverseDirection(ray.direction)};
         double t;
         if (!shape->firstHit(local, tMin, tMax, t)) return false;
         hit = {t, this};
@@ -143,7 +154,10 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, Su
     if (!shape && plain && op == CsgOp::Union) {
         // The nearest child hit; no inside tests needed.
         bool found = false;
-        for (const ObjectRef& child : children) {
+        const bool cull = childBounds.size() == children.size();
+        for (size_t i = 0; i < children.size(); ++i) {
+            const ObjectRef& child = children[i];
+            if (cull && !childBounds[i].meets(ray, tMin, tMax)) continue;
             SurfaceHit h;
             if (child->firstHit(ray, tMin, tMax, kind, h)) {
                 hit = h;
@@ -167,19 +181,23 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind, Su
 
 // --- inside -----------------------------------------------------------------
 
-bool Object::isPatch() const { return shape && shape->isPatch(); }
+bool Object::isPatch() const {
+    return shape && shape->isPatch();
+}
 
-bool Object::warnsAsPatch() const { return shape && shape->warnsAsPatch(); }
+bool Object::warnsAsPatch() const {
+    return shape && shape->warnsAsPatch();
+}
 
 namespace {
-
 
 // The inside test with the object inverted `inverted` times more than
 // its own inverse flag says.
 bool insideAs(const Object& obj, const Vec3& p, bool inverted) {
     if (obj.isPatch()) return false;
     const bool inverse = obj.inverse != inverted;
-    const bool raw = obj.shape ? obj.shape->inside(obj.transform.inversePoint(p)) : csg::inside(obj, p);
+    const bool raw =
+        obj.shape ? obj.shape->inside(obj.transform.inversePoint(p)) : csg::inside(obj, p);
     const bool in = raw != inverse;
     // Inverting does not invert the clips (povray: difference { box
     // sphere clipped_by { plane } } removes the box beyond the plane).
@@ -188,9 +206,13 @@ bool insideAs(const Object& obj, const Vec3& p, bool inverted) {
 
 }  // namespace
 
-bool Object::inside(const Vec3& p) const { return insideAs(*this, p, false); }
+bool Object::inside(const Vec3& p) const {
+    return insideAs(*this, p, false);
+}
 
-bool Object::insideInverted(const Vec3& p) const { return insideAs(*this, p, true); }
+bool Object::insideInverted(const Vec3& p) const {
+    return insideAs(*this, p, true);
+}
 
 Vec3 Object::normalAt(const Vec3& p) const {
     return shape->worldNormal(transform.inversePoint(p), transform);
@@ -230,14 +252,16 @@ Bounds Object::surfaceBounds() const {
 Bounds Object::insideBounds() const {
     if (isPatch()) return {};
     Bounds raw = Bounds::infinite();
-    if (!inverse) raw = shape ? shape->insideBounds().transformed(transform) : csg::insideBounds(*this);
+    if (!inverse)
+        raw = shape ? shape->insideBounds().transformed(transform) : csg::insideBounds(*this);
     return intersectAll(raw, clippedBy, &Object::insideBounds);
 }
 
 Bounds Object::insideInvertedBounds() const {
     if (isPatch()) return {};
     Bounds raw = Bounds::infinite();
-    if (inverse) raw = shape ? shape->insideBounds().transformed(transform) : csg::insideBounds(*this);
+    if (inverse)
+        raw = shape ? shape->insideBounds().transformed(transform) : csg::insideBounds(*this);
     return intersectAll(raw, clippedBy, &Object::insideBounds);
 }
 

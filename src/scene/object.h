@@ -30,7 +30,7 @@ enum class RayKind {
     Camera,      // skips no_image surfaces (also rays refracted from camera rays)
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
-    Any,     // sees everything (bounding tests)
+    Any,         // sees everything (bounding tests)
 };
 
 // A crossing of an object's surface: the ray parameter and the primitive
@@ -69,6 +69,11 @@ struct Object {
     bool noReflection = false;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
 
+    // A union placed in the scene: each child's padded surface bounds, so
+    // firstHit skips the children a ray cannot meet (set by
+    // csg::resolveInheritance; empty: test every child).
+    std::vector<Bounds> childBounds;
+
     bool isCsg() const { return !shape; }
 
     // Applies `t` after everything so far: to the primitive's transform or
@@ -83,7 +88,8 @@ struct Object {
     // increasing t (the caller's vector is used as scratch beyond its end).
     // `kind` only decides whether bounded_by applies (not to shadow rays);
     // the flags are firstHit's to check.
-    void allHits(const Ray& ray, double tMin, double tMax, RayKind kind, std::vector<SurfaceHit>& hits) const;
+    void allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
+                 std::vector<SurfaceHit>& hits) const;
     // povray's inside test: the object's own region (toggled by inverse,
     // except for patches, which enclose nothing) within every clip.
     bool inside(const Vec3& p) const;

@@ -1,5 +1,6 @@
 #include "scene/ray.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frameray::scene {
@@ -16,6 +17,38 @@ Bounds Bounds::transformed(const Transform& t) const {
     Bounds out;
     for (int i = 0; i < 8; ++i)
         out.extend(t.point({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z}));
+    return out;
+}
+
+bool Bounds::meets(const Ray& ray, double tMin, double tMax) const {
+    if (isEmpty()) return false;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double l = lo[axis], h = hi[axis];
+        if (l == -kInfinity && h == kInfinity) continue;
+        const double o = ray.origin[axis], d = ray.direction[axis];
+        if (d == 0) {
+            if (o < l || o > h) return false;
+            continue;
+        }
+        double t0 = (l - o) / d, t1 = (h - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        tMin = std::max(tMin, t0);
+        tMax = std::min(tMax, t1);
+        if (tMin > tMax) return false;
+    }
+    return true;
+}
+
+Bounds Bounds::padded() const {
+    if (isEmpty()) return *this;
+    Bounds out = *this;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!std::isfinite(lo[axis]) || !std::isfinite(hi[axis])) continue;
+        const double pad = (hi[axis] - lo[axis]) * 1e-9 +
+                           (std::fabs(lo[axis]) + std::fabs(hi[axis])) * 1e-12 + 1e-300;
+        out.lo[axis] -= pad;
+        out.hi[axis] += pad;
+    }
     return out;
 }
 

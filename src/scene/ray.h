@@ -24,17 +24,31 @@ struct Bounds {
     Vec3 lo{kInfinity, kInfinity, kInfinity};
     Vec3 hi{-kInfinity, -kInfinity, -kInfinity};
 
-    static Bounds infinite() { return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}}; }
+    static Bounds infinite() {
+        return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
+    }
     bool isEmpty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
     bool isFinite() const;
-    void extend(const Vec3& p) { lo = vmin(lo, p); hi = vmax(hi, p); }
-    void extend(const Bounds& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
+    void extend(const Vec3& p) {
+        lo = vmin(lo, p);
+        hi = vmax(hi, p);
+    }
+    void extend(const Bounds& b) {
+        lo = vmin(lo, b.lo);
+        hi = vmax(hi, b.hi);
+    }
     // The common part; empty when the two do not overlap.
     Bounds intersected(const Bounds& b) const { return {vmax(lo, b.lo), vmin(hi, b.hi)}; }
     // Conservative bounds of this box's image under `t`: the box around
     // its eight transformed corners. Empty stays empty; a box that is
     // infinite along any axis becomes infinite along all of them.
     Bounds transformed(const Transform& t) const;
+    // Whether the ray passes through the box for some t in [tMin, tMax]
+    // (a slab test; infinite extents always pass).
+    bool meets(const Ray& ray, double tMin, double tMax) const;
+    // Grown by a relative margin, so rounding in meets() never rejects a
+    // surface that touches the box.
+    Bounds padded() const;
 };
 
 }  // namespace frameray::scene
