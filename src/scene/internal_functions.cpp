@@ -83,6 +83,307 @@ double torus(const double* a) {
     return std::sqrt(ring * ring + a[1] * a[1]) - a[4];
 }
 
+double sqr(double v) {
+    return v * v;
+}
+
+// A "field strength" function: the strength a[3] times an algebraic
+// surface's polynomial, saturated like every field function.
+template <double (*Poly)(double, double, double)>
+double fieldPoly(const double* a) {
+    return field(a[3] * Poly(a[0], a[1], a[2]));
+}
+
+// ---- Algebraic surfaces with only a field strength (polynomials fitted
+// to povray's values by least squares over 160 points each, then checked
+// at more points; the named factorisations are the classic equations). ----
+
+double crossedTrough(double x, double y, double z) {
+    return x * x * z * z - y;
+}
+
+double cubicSaddle(double x, double y, double z) {
+    return z + y * y * y - x * x * x;
+}
+
+// povray 3.7's f_odd gives exactly f_cushion's values (measured).
+double cushion(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return x2 + y2 - 2 * z2 + 2 * z2 * z + 2 * y2 * z - z2 * z2 - y2 * z2 - y2 * y2 + x2 * z2 -
+           2 * x2 * y2 - x2 * x2;
+}
+
+double devilsCurve(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return 0.36 * x2 - 0.25 * y2 + y2 * y2 - x2 * x2 - 2 * x2 * z2 - z2 * z2;
+}
+
+double glob(double x, double y, double z) {
+    const double x4 = sqr(x * x);
+    return 0.5 * x4 * x + 0.5 * x4 - y * y - z * z;
+}
+
+double heart(double x, double y, double z) {
+    const double z3 = z * z * z;
+    const double c = 2 * x * x + y * y + z * z - 1;
+    return -c * c * c + y * y * z3 + 0.1 * x * x * z3;
+}
+
+double huntSurface(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    const double c = x2 + y2 + z2 - 13;
+    return -(4 * c * c * c + 27 * sqr(3 * x2 + y2 - 4 * z2 - 12));
+}
+
+double kleinBottle(double x, double y, double z) {
+    const double r2 = x * x + y * y + z * z;
+    const double m = r2 - 2 * y - 1;
+    return -((r2 + 2 * y - 1) * (m * m - 8 * z * z) + 16 * x * z * m);
+}
+
+double kummerV1(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return x2 + y2 + z2 - 1 - (x2 * x2 + y2 * y2 + z2 * z2) + x2 * y2 + y2 * z2 + z2 * x2;
+}
+
+double lemniscateOfGerono(double x, double y, double z) {
+    return x * x - sqr(x * x) - y * y - z * z;
+}
+
+double mitre(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return y2 - y2 * z2 - y2 * y2 - 4 * x2 * (z2 + y2 + x2);
+}
+
+double nodalCubic(double /*x*/, double y, double z) {
+    return 6 * y * z - z * z * z - y * y * y;
+}
+
+double pillow(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return x2 * x2 + y2 * y2 + z2 * z2 - x2 - y2 - z2;
+}
+
+double piriform(double x, double y, double z) {
+    return sqr(x * x) - x * x * x + y * y + z * z;
+}
+
+double quarticParaboloid(double x, double y, double z) {
+    return y - sqr(x * x) - sqr(z * z);
+}
+
+double quarticSaddle(double x, double y, double z) {
+    return y - sqr(x * x) + sqr(z * z);
+}
+
+double steinersRoman(double x, double y, double z) {
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return -(x * y * z + y2 * z2 + x2 * z2 + x2 * y2);
+}
+
+double torusGumdrop(double x, double y, double z) {
+    const double x2 = x * x, yz = y * y + z * z;
+    return -(4 * (x2 * x2 + yz * yz) + 17 * x2 * yz - 20 * (x2 + yz) + 17);
+}
+
+double umbrella(double x, double y, double z) {
+    return y * z * z - x * x;
+}
+
+// Boy's surface: a sextic with √2 coefficients; fitted term by term.
+double boySurface(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    struct Term {
+        double c;
+        int px, py, pz;
+    };
+    const double r = std::sqrt(2.0);
+    const Term terms[] = {
+        {64, 0, 0, 3},        {-288, 0, 0, 4},     {-144, 0, 2, 2},      {-144, 2, 0, 2},
+        {432, 0, 0, 5},       {432 * r, 0, 3, 2},  {324, 0, 4, 1},       {-1296 * r, 2, 1, 2},
+        {648, 2, 2, 1},       {324, 4, 0, 1},      {-216, 0, 0, 6},      {324, 0, 2, 4},
+        {-432 * r, 0, 3, 3},  {-810, 0, 4, 2},     {-729, 0, 6, 0},      {648 * r, 1, 2, 3},
+        {-2916 * r, 1, 4, 1}, {324, 2, 0, 4},      {1296 * r, 2, 1, 3},  {-1620, 2, 2, 2},
+        {-2187, 2, 4, 0},     {-216 * r, 3, 0, 3}, {-1944 * r, 3, 2, 1}, {-810, 4, 0, 2},
+        {-2187, 4, 2, 0},     {972 * r, 5, 0, 1},  {-729, 6, 0, 0},
+    };
+    double xp[7], yp[7], zp[7];
+    xp[0] = yp[0] = zp[0] = 1;
+    for (int i = 1; i < 7; ++i) {
+        xp[i] = xp[i - 1] * x;
+        yp[i] = yp[i - 1] * y;
+        zp[i] = zp[i - 1] * z;
+    }
+    double sum = 0;
+    for (const Term& t : terms) sum += t.c * xp[t.px] * yp[t.py] * zp[t.pz];
+    // The "scale" parameter multiplies the value (measured: it does not
+    // scale the shape, whatever functions.inc says).
+    return field(a[3] * a[4] * sum);
+}
+
+// ---- Algebraic surfaces with shape parameters (a[3] is the field
+// strength; the dependence on each parameter was fitted separately, then
+// checked with all parameters random). ----
+
+double bicorn(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], s = a[4];
+    const double r2 = x * x + z * z;
+    return field(a[3] * (y * y * (s * s - r2) - sqr(r2 + 2 * s * y - s * s)));
+}
+
+double bifolia(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    return field(a[3] * (a[4] * y * (x * x + z * z) - sqr(x * x + y * y + z * z)));
+}
+
+double torus2(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], major = a[4], minor = a[5];
+    const double q = x * x + y * y + z * z + major * major - minor * minor;
+    return field(-a[3] * (q * q - 4 * major * major * (x * x + z * z)));
+}
+
+double hyperbolicTorus(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], major = a[4], minor = a[5];
+    const double q = x * x + y * y - z * z + major * major - minor * minor;
+    return field(-a[3] * (q * q - 4 * major * major * (x * x - z * z)));
+}
+
+double parabolicTorus(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double diff = a[4] * a[4] - a[5] * a[5], sum = a[4] * a[4] + a[5] * a[5];
+    return field(a[3] * (-sqr(x * x + y * y - z) + sum * (x * x - z) - diff * y * y - diff * diff));
+}
+
+double ovalsOfCassini(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], major = a[4], filling = a[5], thickness = a[6];
+    const double m2 = major * major;
+    return field(a[3] * (filling * filling - sqr(x * x + y * y + z * z + m2) +
+                         thickness * m2 * (x * x + z * z)));
+}
+
+double quarticCylinder(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], d = a[4], w = a[5];
+    const double r2 = x * x + z * z;
+    return field(a[3] * (w * w * (d * d - r2) - y * y * r2));
+}
+
+double witchOfAgnesi(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], w = a[4];
+    return field(a[3] * (w * (1 - y) - y * (x * x + z * z)));
+}
+
+double foliumSurface(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], neck = a[4], div = a[5];
+    const double yz = y * y + z * z;
+    return field(a[3] * (yz + (1 + div) * x * x - (4 * neck - div) * x * yz));
+}
+
+double kampyleOfEudoxus(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], dimple = a[4], c2 = a[5] * a[5];
+    return field(a[3] * (c2 * sqr(x * x) - dimple * dimple * c2 * x * x - y * y - z * z));
+}
+
+double strophoid(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], size = a[4], sharp = a[5], fat = a[6];
+    return field(a[3] * ((x - sharp) * (y * y + z * z) + fat * fat * x * x * (x + size)));
+}
+
+double kummerV2(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    return field(-a[3] * (x2 * x2 + y2 * y2 + z2 * z2 + a[4] * (x2 + y2 + z2) +
+                          a[5] * (x2 * y2 + y2 * z2 + z2 * x2) + a[6] * x * y * z - 1));
+}
+
+// The distance from the y axis minus a quartic in y: a surface of
+// revolution (no field saturation: measured).
+double poly4(const double* a) {
+    const double y = a[1];
+    return std::hypot(a[0], a[2]) - (a[3] + y * (a[4] + y * (a[5] + y * (a[6] + y * a[7]))));
+}
+
+// ---- 2-D curves, optionally revolved ("SOR"). The last three extra
+// parameters are the SOR switch, offset and angle: with the switch > 0 the
+// curve's x is the distance from the y axis minus the offset, and the
+// (x, y) plane is then turned by the angle in degrees; otherwise x and y
+// are used as they are, offset and angle ignored (measured). ----
+
+struct Plane {
+    double x, y;
+};
+
+Plane sorPlane(const double* a, int switchIndex) {
+    const double sw = a[switchIndex], offset = a[switchIndex + 1];
+    if (!(sw > 0)) return {a[0], a[1]};
+    const double u = std::hypot(a[0], a[2]) - offset;
+    const double t = a[switchIndex + 2] * (M_PI / 180);
+    const double c = std::cos(t), s = std::sin(t);
+    return {u * c - a[1] * s, u * s + a[1] * c};
+}
+
+double algbrCyl1(double x, double y) {
+    return y * y + std::abs(x) * x * x - x * x;
+}
+double algbrCyl2(double x, double y) {
+    return -y * y + 2 * y * y * y + 3 * x * x * y - sqr(y * y) - 2 * sqr(x * x);
+}
+double algbrCyl3(double x, double y) {
+    return -y * y + x * y * y + 2 * x * x * y - x * x * y * y - sqr(x * x);
+}
+double algbrCyl4(double x, double y) {
+    return y * y * y - 3 * x * x * y - sqr(x * x + y * y);
+}
+
+// The algebraic cylinders saturate at their own limit (extra parameter 2)
+// instead of 10.
+template <double (*Curve)(double, double)>
+double algebraicCylinder(const double* a) {
+    const Plane p = sorPlane(a, 5);
+    const double limit = a[4];
+    return std::clamp(a[3] * Curve(p.x, p.y), -limit, limit);
+}
+
+double devilsCurve2d(const double* a) {
+    const Plane p = sorPlane(a, 6);
+    const double x2 = p.x * p.x, y2 = p.y * p.y;
+    return field(a[3] * (a[4] * a[4] * x2 - a[5] * a[5] * y2 + y2 * y2 - x2 * x2));
+}
+
+double foliumSurface2d(const double* a) {
+    const Plane p = sorPlane(a, 6);
+    const double x = p.x, y2 = p.y * p.y, neck = a[4], div = a[5];
+    return field(-a[3] * (y2 + (1 + div) * x * x - (4 * neck - div) * x * y2));
+}
+
+double kampyleOfEudoxus2d(const double* a) {
+    const Plane p = sorPlane(a, 6);
+    const double x2 = p.x * p.x, c = a[5];
+    return field(a[3] * (c * c * x2 * x2 - a[4] * c * c * c * x2 - p.y * p.y));
+}
+
+double lemniscateOfGerono2d(const double* a) {
+    const Plane p = sorPlane(a, 6);
+    const double x2 = p.x * p.x, size = a[4], width = a[5];
+    return field(a[3] * (width * width * (size * size * x2 - x2 * x2) - p.y * p.y));
+}
+
+double piriform2d(const double* a) {
+    const Plane p = sorPlane(a, 7);
+    const double x = p.x, x3 = x * x * x;
+    return field(a[3] * (a[6] * a[6] * (a[4] * x3 + a[5] * x3 * x) - p.y * p.y));
+}
+
+double strophoid2d(const double* a) {
+    const Plane p = sorPlane(a, 7);
+    const double x = p.x, y2 = p.y * p.y;
+    return field(a[3] * ((x - a[5]) * y2 + a[6] * a[6] * x * x * (x + a[4])));
+}
+
+double witchOfAgnesi2d(const double* a) {
+    const Plane p = sorPlane(a, 6);
+    return field(a[3] * (a[5] - a[4] * a[4] * p.y - p.x * p.x * p.y));
+}
+
 double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
@@ -103,63 +404,63 @@ struct Entry {
 
 // functions.inc's internal functions by number (77 is unused).
 constexpr std::array<Entry, 79> kInternals = {{
-    {"f_algbr_cyl1", 5, nullptr},
-    {"f_algbr_cyl2", 5, nullptr},
-    {"f_algbr_cyl3", 5, nullptr},
-    {"f_algbr_cyl4", 5, nullptr},
-    {"f_bicorn", 2, nullptr},
-    {"f_bifolia", 2, nullptr},
+    {"f_algbr_cyl1", 5, algebraicCylinder<algbrCyl1>},
+    {"f_algbr_cyl2", 5, algebraicCylinder<algbrCyl2>},
+    {"f_algbr_cyl3", 5, algebraicCylinder<algbrCyl3>},
+    {"f_algbr_cyl4", 5, algebraicCylinder<algbrCyl4>},
+    {"f_bicorn", 2, bicorn},
+    {"f_bifolia", 2, bifolia},
     {"f_blob", 5, nullptr},
     {"f_blob2", 4, nullptr},
-    {"f_boy_surface", 2, nullptr},
+    {"f_boy_surface", 2, boySurface},
     {"f_comma", 1, nullptr},
     {"f_cross_ellipsoids", 4, nullptr},
-    {"f_crossed_trough", 1, nullptr},
-    {"f_cubic_saddle", 1, nullptr},
-    {"f_cushion", 1, nullptr},
-    {"f_devils_curve", 1, nullptr},
-    {"f_devils_curve_2d", 6, nullptr},
+    {"f_crossed_trough", 1, fieldPoly<crossedTrough>},
+    {"f_cubic_saddle", 1, fieldPoly<cubicSaddle>},
+    {"f_cushion", 1, fieldPoly<cushion>},
+    {"f_devils_curve", 1, fieldPoly<devilsCurve>},
+    {"f_devils_curve_2d", 6, devilsCurve2d},
     {"f_dupin_cyclid", 6, nullptr},
     {"f_ellipsoid", 3, ellipsoid},
     {"f_enneper", 1, nullptr},
     {"f_flange_cover", 4, nullptr},
-    {"f_folium_surface", 3, nullptr},
-    {"f_folium_surface_2d", 6, nullptr},
-    {"f_glob", 1, nullptr},
-    {"f_heart", 1, nullptr},
+    {"f_folium_surface", 3, foliumSurface},
+    {"f_folium_surface_2d", 6, foliumSurface2d},
+    {"f_glob", 1, fieldPoly<glob>},
+    {"f_heart", 1, fieldPoly<heart>},
     {"f_helical_torus", 10, nullptr},
     {"f_helix1", 7, nullptr},
     {"f_helix2", 7, nullptr},
     {"f_hex_x", 1, nullptr},
     {"f_hex_y", 1, nullptr},
     {"f_hetero_mf", 6, nullptr},
-    {"f_hunt_surface", 1, nullptr},
-    {"f_hyperbolic_torus", 3, nullptr},
+    {"f_hunt_surface", 1, fieldPoly<huntSurface>},
+    {"f_hyperbolic_torus", 3, hyperbolicTorus},
     {"f_isect_ellipsoids", 4, nullptr},
-    {"f_kampyle_of_eudoxus", 3, nullptr},
-    {"f_kampyle_of_eudoxus_2d", 6, nullptr},
-    {"f_klein_bottle", 1, nullptr},
-    {"f_kummer_surface_v1", 1, nullptr},
-    {"f_kummer_surface_v2", 4, nullptr},
-    {"f_lemniscate_of_gerono", 1, nullptr},
-    {"f_lemniscate_of_gerono_2d", 6, nullptr},
+    {"f_kampyle_of_eudoxus", 3, kampyleOfEudoxus},
+    {"f_kampyle_of_eudoxus_2d", 6, kampyleOfEudoxus2d},
+    {"f_klein_bottle", 1, fieldPoly<kleinBottle>},
+    {"f_kummer_surface_v1", 1, fieldPoly<kummerV1>},
+    {"f_kummer_surface_v2", 4, kummerV2},
+    {"f_lemniscate_of_gerono", 1, fieldPoly<lemniscateOfGerono>},
+    {"f_lemniscate_of_gerono_2d", 6, lemniscateOfGerono2d},
     {"f_mesh1", 5, nullptr},
-    {"f_mitre", 1, nullptr},
-    {"f_nodal_cubic", 1, nullptr},
-    {"f_odd", 1, nullptr},
-    {"f_ovals_of_cassini", 4, nullptr},
+    {"f_mitre", 1, fieldPoly<mitre>},
+    {"f_nodal_cubic", 1, fieldPoly<nodalCubic>},
+    {"f_odd", 1, fieldPoly<cushion>},
+    {"f_ovals_of_cassini", 4, ovalsOfCassini},
     {"f_paraboloid", 1, paraboloid},
-    {"f_parabolic_torus", 3, nullptr},
+    {"f_parabolic_torus", 3, parabolicTorus},
     {"f_ph", 0, phi},
-    {"f_pillow", 1, nullptr},
-    {"f_piriform", 1, nullptr},
-    {"f_piriform_2d", 7, nullptr},
-    {"f_poly4", 5, nullptr},
+    {"f_pillow", 1, fieldPoly<pillow>},
+    {"f_piriform", 1, fieldPoly<piriform>},
+    {"f_piriform_2d", 7, piriform2d},
+    {"f_poly4", 5, poly4},
     {"f_polytubes", 6, nullptr},
     {"f_quantum", 1, nullptr},
-    {"f_quartic_paraboloid", 1, nullptr},
-    {"f_quartic_saddle", 1, nullptr},
-    {"f_quartic_cylinder", 3, nullptr},
+    {"f_quartic_paraboloid", 1, fieldPoly<quarticParaboloid>},
+    {"f_quartic_saddle", 1, fieldPoly<quarticSaddle>},
+    {"f_quartic_cylinder", 3, quarticCylinder},
     {"f_r", 0, radius},
     {"f_ridge", 6, nullptr},
     {"f_ridged_mf", 6, nullptr},
@@ -168,17 +469,17 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_spikes", 5, nullptr},
     {"f_spikes_2d", 4, nullptr},
     {"f_spiral", 6, nullptr},
-    {"f_steiners_roman", 1, nullptr},
-    {"f_strophoid", 4, nullptr},
-    {"f_strophoid_2d", 7, nullptr},
+    {"f_steiners_roman", 1, fieldPoly<steinersRoman>},
+    {"f_strophoid", 4, strophoid},
+    {"f_strophoid_2d", 7, strophoid2d},
     {"f_superellipsoid", 2, superellipsoid},
     {"f_th", 0, theta},
     {"f_torus", 2, torus},
-    {"f_torus2", 3, nullptr},
-    {"f_torus_gumdrop", 1, nullptr},
-    {"f_umbrella", 1, nullptr},
-    {"f_witch_of_agnesi", 2, nullptr},
-    {"f_witch_of_agnesi_2d", 6, nullptr},
+    {"f_torus2", 3, torus2},
+    {"f_torus_gumdrop", 1, fieldPoly<torusGumdrop>},
+    {"f_umbrella", 1, fieldPoly<umbrella>},
+    {"f_witch_of_agnesi", 2, witchOfAgnesi},
+    {"f_witch_of_agnesi_2d", 6, witchOfAgnesi2d},
     {"f_noise3d", 0, noise3d},
     {"", 0, nullptr},
     {"f_noise_generator", 1, noiseGenerator},
