@@ -384,6 +384,68 @@ double witchOfAgnesi2d(const double* a) {
     return field(a[3] * (a[5] - a[4] * a[4] * p.y - p.x * p.x * p.y));
 }
 
+// ---- Blob-like fields. ----
+
+// Two polynomial blob components (strength · (1 - (r / radius)²)², zero
+// beyond the radius), centred at x = ∓separation/2; povray returns minus
+// their sum.
+double blob(const double* a) {
+    const double x = a[0], yz = a[1] * a[1] + a[2] * a[2], half = a[3] / 2;
+    auto component = [](double d2, double strength, double inverseRadius) {
+        const double t = 1 - inverseRadius * inverseRadius * d2;
+        return t > 0 ? strength * t * t : 0.0;
+    };
+    return -(component(sqr(x + half) + yz, a[4], a[5]) + component(sqr(x - half) + yz, a[6], a[7]));
+}
+
+// Two exponential blobs at the origin and at x = separation:
+// threshold - strength · (e^(-k r1²) + e^(-k r2²)).
+double blob2(const double* a) {
+    const double x = a[0], yz = a[1] * a[1] + a[2] * a[2], k = a[4];
+    return a[6] - a[5] * (std::exp(-k * (x * x + yz)) + std::exp(-k * (sqr(x - a[3]) + yz)));
+}
+
+// The exponents of three ellipsoids along the axes: each axis' own
+// coordinate squared plus e times the other two squared.
+std::array<double, 3> axisEllipsoids(const double* a, double e) {
+    const double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+    return {x2 + e * (y2 + z2), y2 + e * (x2 + z2), z2 + e * (x2 + y2)};
+}
+
+// The union (nearest ellipsoid) and intersection (farthest) of the three.
+double crossEllipsoids(const double* a) {
+    const auto q = axisEllipsoids(a, a[3]);
+    return a[6] - a[5] * std::exp(-a[4] * std::min({q[0], q[1], q[2]}));
+}
+
+double isectEllipsoids(const double* a) {
+    const auto q = axisEllipsoids(a, a[3]);
+    return a[6] - a[5] * std::exp(-a[4] * std::max({q[0], q[1], q[2]}));
+}
+
+// The three ellipsoids blended as exponential blobs.
+double flangeCover(const double* a) {
+    const auto q = axisEllipsoids(a, a[3]);
+    const double k = a[4];
+    return a[6] - a[5] * (std::exp(-k * q[0]) + std::exp(-k * q[1]) + std::exp(-k * q[2]));
+}
+
+// The blended ellipsoids (hollowness as the exponent scale) minus a
+// central sphere blob (roundness, fatness), all times the size.
+double spikes(const double* a) {
+    const auto q = axisEllipsoids(a, a[3]);
+    const double k = a[4], r2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    return a[5] * (std::exp(-k * q[0]) + std::exp(-k * q[1]) + std::exp(-k * q[2]) -
+                   a[7] * std::exp(-a[6] * r2));
+}
+
+// A height field: y minus a damped cosine bump.
+double spikes2d(const double* a) {
+    const double x = a[0], z = a[2];
+    return a[1] -
+           a[3] * std::cos(a[4] * x) * std::cos(a[5] * z) * std::exp(-a[6] * (x * x + z * z));
+}
+
 double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
@@ -410,11 +472,11 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_algbr_cyl4", 5, algebraicCylinder<algbrCyl4>},
     {"f_bicorn", 2, bicorn},
     {"f_bifolia", 2, bifolia},
-    {"f_blob", 5, nullptr},
-    {"f_blob2", 4, nullptr},
+    {"f_blob", 5, blob},
+    {"f_blob2", 4, blob2},
     {"f_boy_surface", 2, boySurface},
     {"f_comma", 1, nullptr},
-    {"f_cross_ellipsoids", 4, nullptr},
+    {"f_cross_ellipsoids", 4, crossEllipsoids},
     {"f_crossed_trough", 1, fieldPoly<crossedTrough>},
     {"f_cubic_saddle", 1, fieldPoly<cubicSaddle>},
     {"f_cushion", 1, fieldPoly<cushion>},
@@ -423,7 +485,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_dupin_cyclid", 6, nullptr},
     {"f_ellipsoid", 3, ellipsoid},
     {"f_enneper", 1, nullptr},
-    {"f_flange_cover", 4, nullptr},
+    {"f_flange_cover", 4, flangeCover},
     {"f_folium_surface", 3, foliumSurface},
     {"f_folium_surface_2d", 6, foliumSurface2d},
     {"f_glob", 1, fieldPoly<glob>},
@@ -436,7 +498,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_hetero_mf", 6, nullptr},
     {"f_hunt_surface", 1, fieldPoly<huntSurface>},
     {"f_hyperbolic_torus", 3, hyperbolicTorus},
-    {"f_isect_ellipsoids", 4, nullptr},
+    {"f_isect_ellipsoids", 4, isectEllipsoids},
     {"f_kampyle_of_eudoxus", 3, kampyleOfEudoxus},
     {"f_kampyle_of_eudoxus_2d", 6, kampyleOfEudoxus2d},
     {"f_klein_bottle", 1, fieldPoly<kleinBottle>},
@@ -466,8 +528,8 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_ridged_mf", 6, nullptr},
     {"f_rounded_box", 4, roundedBox},
     {"f_sphere", 1, sphere},
-    {"f_spikes", 5, nullptr},
-    {"f_spikes_2d", 4, nullptr},
+    {"f_spikes", 5, spikes},
+    {"f_spikes_2d", 4, spikes2d},
     {"f_spiral", 6, nullptr},
     {"f_steiners_roman", 1, fieldPoly<steinersRoman>},
     {"f_strophoid", 4, strophoid},
