@@ -446,6 +446,67 @@ double spikes2d(const double* a) {
            a[3] * std::cos(a[4] * x) * std::cos(a[5] * z) * std::exp(-a[6] * (x * x + z * z));
 }
 
+// ---- Helixes and the spiral. Their cross-section "type" t picks the norm
+// (|u|^p + |v|^p)^(1/p) with p = 2/t: 0 square, 1 circle, 2 diamond,
+// 3 concave diamond, fractions in between (measured at all of these). ----
+
+double crossSectionNorm(double u, double v, double type) {
+    u = std::abs(u);
+    v = std::abs(v);
+    if (type == 0) return std::max(u, v);
+    const double p = 2 / type;
+    return std::pow(std::pow(u, p) + std::pow(v, p), 1 / p);
+}
+
+// Helixes around the y axis: in the vertical half-plane through the point,
+// u is the distance from the major radius and v the angle to the nearest
+// of the n helixes divided by period · shape; (u, v) turned by the
+// cross-section angle. The helixes cross angle atan2(z, x) = π/n - period·y
+// (measured). povray caps the norm at ρ + R.
+double helix1(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double n = a[3], period = a[4], minor = a[5], major = a[6], shape = a[7];
+    const double rho = std::hypot(x, z);
+    const double spacing = 2 * M_PI / n;
+    double d = M_PI / n - std::atan2(z, x) - period * y;
+    d -= spacing * std::floor(d / spacing + 0.5);
+    const double u0 = rho - major, v0 = d / (period * shape);
+    const double t = a[9] * (M_PI / 180), c = std::cos(t), s = std::sin(t);
+    const double u = u0 * c + v0 * s, v = -u0 * s + v0 * c;
+    return std::min(crossSectionNorm(u, v, a[8]), rho + major) - minor;
+}
+
+// A twisted rod: in the horizontal slice at height y the cross-section is
+// centred at major · (cos θ, sin θ) with θ = period · y and turns with it.
+// povray 3.7 ignores the number of helixes, the shape and the rotation
+// angle here (measured).
+double helix2(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double period = a[4], minor = a[5], major = a[6];
+    const double t = period * y, c = std::cos(t), s = std::sin(t);
+    const double dx = x - major * c, dz = z - major * s;
+    return crossSectionNorm(dx * c + dz * s, -dx * s + dz * c, a[8]) - minor;
+}
+
+// An Archimedean spiral in the xz plane, windings a[3] apart, at radius
+// a[3] · (1/2 - atan2(z, x) / 2π) + k; the cross-section spans (u, y).
+// The norm is capped at the distance from the origin, and the value is at
+// least that distance minus the "outer diameter" (measured; povray uses
+// 1e-6 for the distance at the origin).
+double spiral(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], spacing = a[3];
+    const double rho = std::hypot(x, z);
+    double u = 1e-6;
+    if (rho != 0) {
+        const double s = rho + spacing * std::atan2(z, x) / (2 * M_PI) - spacing / 2;
+        u = s - spacing * std::floor(s / spacing + 0.5);
+    }
+    double r = std::sqrt(rho * rho + y * y);
+    const double outside = r - a[5];
+    if (r == 0) r = 1e-6;
+    return std::max(std::min(crossSectionNorm(u, y, a[8]), r) - a[4], outside);
+}
+
 double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
@@ -491,8 +552,8 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_glob", 1, fieldPoly<glob>},
     {"f_heart", 1, fieldPoly<heart>},
     {"f_helical_torus", 10, nullptr},
-    {"f_helix1", 7, nullptr},
-    {"f_helix2", 7, nullptr},
+    {"f_helix1", 7, helix1},
+    {"f_helix2", 7, helix2},
     {"f_hex_x", 1, nullptr},
     {"f_hex_y", 1, nullptr},
     {"f_hetero_mf", 6, nullptr},
@@ -530,7 +591,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_sphere", 1, sphere},
     {"f_spikes", 5, spikes},
     {"f_spikes_2d", 4, spikes2d},
-    {"f_spiral", 6, nullptr},
+    {"f_spiral", 6, spiral},
     {"f_steiners_roman", 1, fieldPoly<steinersRoman>},
     {"f_strophoid", 4, strophoid},
     {"f_strophoid_2d", 7, strophoid2d},
