@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 #include "scene/noise.h"
@@ -511,12 +512,111 @@ double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
 
+// povray picks the generator from the integer part of the parameter, two
+// lowest bits: 2 range-corrected, 3 (and -1) Perlin, anything else the
+// original (measured with -1 … 5).
+NoiseGenerator generatorParameter(double g, const char* function) {
+    switch (static_cast<int>(g) & 3) {
+        case 2:
+            return NoiseGenerator::RangeCorrected;
+        case 3:
+            throw std::runtime_error(std::string("not supported yet: noise_generator 3 in ") +
+                                     function);
+        default:
+            return NoiseGenerator::Original;
+    }
+}
+
 double noiseGenerator(const double* a) {
-    const int g = static_cast<int>(a[3]);
-    if (g == 3)
-        throw std::runtime_error("not supported yet: noise_generator 3 in f_noise_generator");
-    return solidNoise({a[0], a[1], a[2]},
-                      g == 1 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected);
+    return solidNoise({a[0], a[1], a[2]}, generatorParameter(a[3], "f_noise_generator"));
+}
+
+// Noise in [-1, 1] at p scaled by `scale`.
+double signedNoise(const double* a, double scale, NoiseGenerator g) {
+    return 2 * solidNoise({a[0] * scale, a[1] * scale, a[2] * scale}, g) - 1;
+}
+
+// Musgrave's ridged multifractal: each octave (1 - |noise|)-style ridges
+// weighted by the previous octave's signal times the gain, clamped to
+// [0, 1]; octave i scaled by lacunarity^(-i·H). Parameters H, lacunarity,
+// octaves (loop while i < octaves), offset, gain, generator.
+//
+// povray 3.7 computes the per-octave weights once, at the first call of
+// the run, and reuses them for every later call whatever its H, lacunarity
+// or octaves (more octaves than the first call read unset weights).
+// frameray uses each call's own parameters, which agrees whenever a scene
+// uses one parameter set (all of povray's example scenes do).
+double ridgedMf(const double* a) {
+    const double h = a[3], lacunarity = a[4], octaves = a[5], offset = a[6], gain = a[7];
+    const NoiseGenerator g = generatorParameter(a[8], "f_ridged_mf");
+    auto ridge = [&](double scale) {
+        const double s = offset - std::abs(signedNoise(a, scale, g));
+        return s * s;
+    };
+    double signal = ridge(1);
+    double result = signal, frequency = 1;
+    for (int i = 1; i < octaves; ++i) {
+        frequency *= lacunarity;
+        const double weight = std::clamp(signal * gain, 0.0, 1.0);
+        signal = ridge(frequency) * weight;
+        result += signal * std::pow(frequency, -h);
+    }
+    return result;
+}
+
+// Musgrave's heterogeneous terrain: value = offset + noise, then each
+// octave adds (noise + offset) · lacunarity^(-i·H) · value^T (T, extra
+// parameter 5, counts whole multiplications: T < 1 none). A fractional
+// octave count adds that fraction of one more octave, multiplied by the
+// value once whatever T is (measured).
+double heteroMf(const double* a) {
+    const double h = a[3], lacunarity = a[4], octaves = a[5], offset = a[6];
+    const int t = a[7] >= 1 ? static_cast<int>(a[7]) : 0;
+    const NoiseGenerator g = generatorParameter(a[8], "f_hetero_mf");
+    double value = offset + signedNoise(a, 1, g);
+    double frequency = 1;
+    int i = 1;
+    for (; i < octaves; ++i) {
+        frequency *= lacunarity;
+        double increment = (signedNoise(a, frequency, g) + offset) * std::pow(frequency, -h);
+        for (int k = 0; k < t; ++k) increment *= value;
+        value += increment;
+    }
+    const double remainder = octaves - std::floor(octaves);
+    if (remainder > 0) {
+        frequency *= lacunarity;
+        const double increment = (signedNoise(a, frequency, g) + offset) * std::pow(frequency, -h);
+        value += remainder * increment * value;
+    }
+    return value;
+}
+
+// |ridge - noise| normalised to [0, 1] (noise in [0, 1]), averaged over
+// octaves with weights omega^i at frequencies lambda^i, then the offset
+// subtracted and the result normalised the same way. At least one octave;
+// a fractional count adds that fraction of the next octave (measured).
+double ridge(const double* a) {
+    const double lambda = a[3], octaves = a[4], omega = a[5], offset = a[6], ridgeAt = a[7];
+    const NoiseGenerator g = generatorParameter(a[8], "f_ridge");
+    const double spread = std::abs(ridgeAt - 0.5) + 0.5;
+    auto term = [&](double scale) {
+        return std::abs(ridgeAt - solidNoise({a[0] * scale, a[1] * scale, a[2] * scale}, g)) /
+               spread;
+    };
+    const int whole = std::max(1, static_cast<int>(octaves));
+    double sum = 0, weights = 0, amplitude = 1, frequency = 1;
+    for (int i = 0; i < whole; ++i) {
+        sum += amplitude * term(frequency);
+        weights += amplitude;
+        amplitude *= omega;
+        frequency *= lambda;
+    }
+    const double remainder = octaves - std::floor(octaves);
+    if (remainder > 0) {
+        sum += remainder * amplitude * term(frequency);
+        weights += remainder * amplitude;
+    }
+    return (sum / weights - offset) / (std::abs(offset - 0.5) + 0.5);
 }
 
 struct Entry {
@@ -556,7 +656,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_helix2", 7, helix2},
     {"f_hex_x", 1, nullptr},
     {"f_hex_y", 1, nullptr},
-    {"f_hetero_mf", 6, nullptr},
+    {"f_hetero_mf", 6, heteroMf},
     {"f_hunt_surface", 1, fieldPoly<huntSurface>},
     {"f_hyperbolic_torus", 3, hyperbolicTorus},
     {"f_isect_ellipsoids", 4, isectEllipsoids},
@@ -585,8 +685,8 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_quartic_saddle", 1, fieldPoly<quarticSaddle>},
     {"f_quartic_cylinder", 3, quarticCylinder},
     {"f_r", 0, radius},
-    {"f_ridge", 6, nullptr},
-    {"f_ridged_mf", 6, nullptr},
+    {"f_ridge", 6, ridge},
+    {"f_ridged_mf", 6, ridgedMf},
     {"f_rounded_box", 4, roundedBox},
     {"f_sphere", 1, sphere},
     {"f_spikes", 5, spikes},
