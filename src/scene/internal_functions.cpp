@@ -512,6 +512,79 @@ double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
 
+// ---- Assorted shapes. ----
+
+// A torus (axis y, radii a[4], a[5], centred at (a[6], a[7], 0)) inverted
+// in the sphere of radius a[8] about the origin, times |p|⁴ to keep it a
+// polynomial; povray's version carries an extra -8(R² - r²)·dy·y' term
+// (y' the inverted y), measured by fitting each parameter separately.
+double dupinCyclid(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double major = a[4], minor = a[5], dx = a[6], dy = a[7], inversion = a[8];
+    const double r2 = x * x + y * y + z * z;
+    const double k = inversion * inversion / r2;
+    const double qx = x * k - dx, qy = y * k - dy, qz = z * k;
+    const double m2 = major * major, d = m2 - minor * minor;
+    const double q = qx * qx + qy * qy + qz * qz + d;
+    return field(-a[3] * (q * q - 4 * m2 * (qx * qx + qz * qz) + 8 * d * dy * y * k) * r2 * r2);
+}
+
+// A woven grid: threads along x at z = k·dz whose height follows
+// ±amplitude·cos(πx/dx), and threads along z at x = k·dx following
+// ∓amplitude·cos(πz/dz), the sign alternating from thread to thread. The
+// value is the distance to the nearer of the two threads on either side,
+// horizontal part times a[5], vertical part times a[7] (measured).
+double mesh1(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], dx = a[3], dz = a[4];
+    const double flat = a[5], amplitude = a[6], tall = a[7];
+    if (!(dx > 0) || !(dz > 0))
+        throw std::runtime_error("not supported yet: f_mesh1 with a thread distance <= 0");
+    double best = HUGE_VAL;
+    auto consider = [&](double across, double height, double k) {
+        const double sign = std::fmod(k, 2.0) != 0 ? -1.0 : 1.0;
+        best = std::min(best, std::hypot(across * flat, (y - sign * height) * tall));
+    };
+    const double kz = std::floor(z / dz), waveX = amplitude * std::cos(M_PI * x / dx);
+    for (double k : {kz, kz + 1}) consider(z - k * dz, waveX, k);
+    const double kx = std::floor(x / dx), waveZ = -amplitude * std::cos(M_PI * z / dz);
+    for (double k : {kx, kx + 1}) consider(x - k * dx, waveZ, k);
+    return best;
+}
+
+// Pointy-top hexagons of inradius √3/2 tiling the xy plane (centres in
+// rows 1.5 apart, every other row shifted by √3/2). f_hex_x is the
+// hexagonal norm of the offset from the cell's centre; f_hex_y the distance
+// to the nearest of the three lines through the centre at 0° and ±60°. The
+// extra parameter does nothing (measured).
+struct HexOffset {
+    double norm, dx, dy;
+};
+
+HexOffset hexOffset(double x, double y) {
+    const double s3 = std::sqrt(3.0);
+    HexOffset best{HUGE_VAL, 0, 0};
+    const double j0 = std::floor(y / 1.5);
+    for (double j : {j0, j0 + 1}) {
+        const double shift = std::fmod(j, 2.0) != 0 ? s3 / 2 : 0.0;
+        const double i = std::floor((x - shift) / s3 + 0.5);
+        const double dx = x - (i * s3 + shift), dy = y - 1.5 * j;
+        const double n = std::max(std::abs(dx), std::abs(0.5 * dx) + std::abs(s3 / 2 * dy));
+        if (n < best.norm) best = {n, dx, dy};
+    }
+    return best;
+}
+
+double hexX(const double* a) {
+    return hexOffset(a[0], a[1]).norm;
+}
+
+double hexY(const double* a) {
+    const HexOffset h = hexOffset(a[0], a[1]);
+    const double c = std::sqrt(3.0) / 2;
+    return std::min(
+        {std::abs(h.dy), std::abs(c * h.dx + 0.5 * h.dy), std::abs(c * h.dx - 0.5 * h.dy)});
+}
+
 // povray picks the generator from the integer part of the parameter, two
 // lowest bits: 2 range-corrected, 3 (and -1) Perlin, anything else the
 // original (measured with -1 … 5).
@@ -643,7 +716,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_cushion", 1, fieldPoly<cushion>},
     {"f_devils_curve", 1, fieldPoly<devilsCurve>},
     {"f_devils_curve_2d", 6, devilsCurve2d},
-    {"f_dupin_cyclid", 6, nullptr},
+    {"f_dupin_cyclid", 6, dupinCyclid},
     {"f_ellipsoid", 3, ellipsoid},
     {"f_enneper", 1, nullptr},
     {"f_flange_cover", 4, flangeCover},
@@ -654,8 +727,8 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_helical_torus", 10, nullptr},
     {"f_helix1", 7, helix1},
     {"f_helix2", 7, helix2},
-    {"f_hex_x", 1, nullptr},
-    {"f_hex_y", 1, nullptr},
+    {"f_hex_x", 1, hexX},
+    {"f_hex_y", 1, hexY},
     {"f_hetero_mf", 6, heteroMf},
     {"f_hunt_surface", 1, fieldPoly<huntSurface>},
     {"f_hyperbolic_torus", 3, hyperbolicTorus},
@@ -667,7 +740,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_kummer_surface_v2", 4, kummerV2},
     {"f_lemniscate_of_gerono", 1, fieldPoly<lemniscateOfGerono>},
     {"f_lemniscate_of_gerono_2d", 6, lemniscateOfGerono2d},
-    {"f_mesh1", 5, nullptr},
+    {"f_mesh1", 5, mesh1},
     {"f_mitre", 1, fieldPoly<mitre>},
     {"f_nodal_cubic", 1, fieldPoly<nodalCubic>},
     {"f_odd", 1, fieldPoly<cushion>},
