@@ -585,6 +585,22 @@ double hexY(const double* a) {
         {std::abs(h.dy), std::abs(c * h.dx + 0.5 * h.dy), std::abs(c * h.dx - 0.5 * h.dy)});
 }
 
+// int(a[3]) vertical tubes at horizontal distance poly(y) (a quartic with
+// coefficients a[4..8]) from the y axis, the k-th at angle 2πk/a[3] from
+// +z towards +x: the horizontal distance to the nearest one, 10000 when
+// there are none (measured, with fractional counts too).
+double polytubes(const double* a) {
+    const double x = a[0], y = a[1], z = a[2], count = a[3];
+    const double r = a[4] + y * (a[5] + y * (a[6] + y * (a[7] + y * a[8])));
+    double best = 10000;
+    const int n = count >= 1 ? static_cast<int>(count) : 0;
+    for (int k = 0; k < n; ++k) {
+        const double t = 2 * M_PI * k / count;
+        best = std::min(best, std::hypot(x - r * std::sin(t), z - r * std::cos(t)));
+    }
+    return best;
+}
+
 // povray picks the generator from the integer part of the parameter, two
 // lowest bits: 2 range-corrected, 3 (and -1) Perlin, anything else the
 // original (measured with -1 … 5).
@@ -752,7 +768,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_piriform", 1, fieldPoly<piriform>},
     {"f_piriform_2d", 7, piriform2d},
     {"f_poly4", 5, poly4},
-    {"f_polytubes", 6, nullptr},
+    {"f_polytubes", 6, polytubes},
     {"f_quantum", 1, nullptr},
     {"f_quartic_paraboloid", 1, fieldPoly<quarticParaboloid>},
     {"f_quartic_saddle", 1, fieldPoly<quarticSaddle>},
