@@ -320,7 +320,7 @@ TEST(InternalFunctions, NoiseGeneratorParameterIsDecodedLikePovray) {
 TEST(InternalFunctions, UnmatchedCasesStopInsteadOfGuessing) {
     // f_mesh1 with a thread distance <= 0 behaves oddly in povray; not matched.
     EXPECT_THROW(callNamed("f_mesh1", {0.3, 0.2, 0.1, -1, 1, 1, 1, 1}), std::runtime_error);
-    for (const char* name : {"f_comma", "f_enneper", "f_helical_torus", "f_quantum"}) {
+    for (const char* name : {"f_comma", "f_enneper", "f_helical_torus"}) {
         bool found = false;
         for (int n = 0; n < 79; ++n) {
             const InternalFunction f = internalFunction(n);
