@@ -305,6 +305,14 @@ TEST(InternalFunctions, AllImplementedFunctionsMatchPovray) {
     EXPECT_NEAR(
         callNamed("f_witch_of_agnesi_2d", {1.205, 0.131, 1.44, 0.7, 1.016, 1.711, 1, -0.352, 30}),
         -2.681830523, 3e-09);
+    EXPECT_NEAR(
+        callNamed("f_polytubes", {0.45, -0.205, 0.183, 1, -0.85, 0.162, -0.562, 0.403, -0.653}),
+        1.183354481, 1e-9);
+    EXPECT_NEAR(
+        callNamed("f_polytubes", {-0.308, 1.182, 0.976, 1, -0.85, 0.162, -0.562, 0.403, -0.653}),
+        3.044432169, 1e-9);
+    EXPECT_NEAR(callNamed("f_quantum", {0.268, 0.073, 0.327, 0.127}), 1.174485594, 1e-9);
+    EXPECT_NEAR(callNamed("f_quantum", {-1.238, 1.041, 0.023, 0.127}), 1.125555790, 1e-9);
 }
 
 TEST(InternalFunctions, NoiseGeneratorParameterIsDecodedLikePovray) {
