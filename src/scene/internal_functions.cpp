@@ -14,16 +14,22 @@ namespace frameray::scene {
 namespace {
 
 using Formula = double (*)(const double* a);
+// Why a call cannot run yet, from the arguments known at compile time.
+using Refusal = std::string (*)(const double* a, const bool* known);
 
 // A native function given by a plain formula over its arguments
 // (a[0..2] = x, y, z, then the extra parameters).
 class FormulaFunction final : public NativeFunction {
   public:
-    explicit FormulaFunction(Formula f) : f_(f) {}
+    FormulaFunction(Formula f, Refusal refuse) : f_(f), refuse_(refuse) {}
     double eval(const double* args) const override { return f_(args); }
+    std::string unsupportedWith(const double* args, const bool* known) const override {
+        return refuse_ ? refuse_(args, known) : std::string();
+    }
 
   private:
     Formula f_;
+    Refusal refuse_;
 };
 
 double radius(const double* a) {
@@ -717,10 +723,38 @@ double ridge(const double* a) {
     return (sum / weights - offset) / (std::abs(offset - 0.5) + 0.5);
 }
 
+// Parameter values frameray cannot match yet: refused when the call is
+// compiled with them as constants (an isosurface cannot report an error
+// mid-render), and by the formula itself otherwise.
+std::string refuseGenerator3(const double* a, const bool* known, int index, const char* name) {
+    if (known[index] && (static_cast<int>(a[index]) & 3) == 3)
+        return std::string("noise_generator 3 in ") + name;
+    return {};
+}
+
+std::string refuseNoiseGenerator(const double* a, const bool* known) {
+    return refuseGenerator3(a, known, 3, "f_noise_generator");
+}
+std::string refuseRidgedMf(const double* a, const bool* known) {
+    return refuseGenerator3(a, known, 8, "f_ridged_mf");
+}
+std::string refuseHeteroMf(const double* a, const bool* known) {
+    return refuseGenerator3(a, known, 8, "f_hetero_mf");
+}
+std::string refuseRidge(const double* a, const bool* known) {
+    return refuseGenerator3(a, known, 8, "f_ridge");
+}
+std::string refuseMesh1(const double* a, const bool* known) {
+    if ((known[3] && !(a[3] > 0)) || (known[4] && !(a[4] > 0)))
+        return "f_mesh1 with a thread distance <= 0";
+    return {};
+}
+
 struct Entry {
     std::string_view name;
     int extraParams;
     Formula formula;  // null: not implemented yet
+    Refusal refuse = nullptr;
 };
 
 // functions.inc's internal functions by number (77 is unused).
@@ -754,7 +788,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_helix2", 7, helix2},
     {"f_hex_x", 1, hexX},
     {"f_hex_y", 1, hexY},
-    {"f_hetero_mf", 6, heteroMf},
+    {"f_hetero_mf", 6, heteroMf, refuseHeteroMf},
     {"f_hunt_surface", 1, fieldPoly<huntSurface>},
     {"f_hyperbolic_torus", 3, hyperbolicTorus},
     {"f_isect_ellipsoids", 4, isectEllipsoids},
@@ -765,7 +799,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_kummer_surface_v2", 4, kummerV2},
     {"f_lemniscate_of_gerono", 1, fieldPoly<lemniscateOfGerono>},
     {"f_lemniscate_of_gerono_2d", 6, lemniscateOfGerono2d},
-    {"f_mesh1", 5, mesh1},
+    {"f_mesh1", 5, mesh1, refuseMesh1},
     {"f_mitre", 1, fieldPoly<mitre>},
     {"f_nodal_cubic", 1, fieldPoly<nodalCubic>},
     {"f_odd", 1, fieldPoly<cushion>},
@@ -783,8 +817,8 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_quartic_saddle", 1, fieldPoly<quarticSaddle>},
     {"f_quartic_cylinder", 3, quarticCylinder},
     {"f_r", 0, radius},
-    {"f_ridge", 6, ridge},
-    {"f_ridged_mf", 6, ridgedMf},
+    {"f_ridge", 6, ridge, refuseRidge},
+    {"f_ridged_mf", 6, ridgedMf, refuseRidgedMf},
     {"f_rounded_box", 4, roundedBox},
     {"f_sphere", 1, sphere},
     {"f_spikes", 5, spikes},
@@ -803,7 +837,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_witch_of_agnesi_2d", 6, witchOfAgnesi2d},
     {"f_noise3d", 0, noise3d},
     {"", 0, nullptr},
-    {"f_noise_generator", 1, noiseGenerator},
+    {"f_noise_generator", 1, noiseGenerator, refuseNoiseGenerator},
 }};
 
 }  // namespace
@@ -812,7 +846,7 @@ InternalFunction internalFunction(int n) {
     if (n < 0 || n >= static_cast<int>(kInternals.size())) return {};
     const Entry& e = kInternals[static_cast<size_t>(n)];
     InternalFunction result{std::string(e.name), e.extraParams, nullptr};
-    if (e.formula) result.function = std::make_shared<FormulaFunction>(e.formula);
+    if (e.formula) result.function = std::make_shared<FormulaFunction>(e.formula, e.refuse);
     return result;
 }
 
