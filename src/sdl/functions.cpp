@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "scene/internal_functions.h"
 #include "scene/patterns.h"
@@ -178,17 +181,41 @@ class FunctionCompiler {
     void constant(double v) { emit({FnOp::Const, 0, 0, v}, +1); }
 
     // Arguments in parentheses, each compiled onto the stack.
-    int arguments(const Token& fn) {
+    // With `starts`, also the first instruction of each argument.
+    int arguments(const Token& fn, std::vector<size_t>* starts = nullptr) {
         in_.expectAfter(Sym::LParen, "'('", fn.text);
         int n = 0;
         if (!in_.peek().is(Sym::RParen)) {
             do {
+                if (starts) starts->push_back(here());
                 ternary();
                 ++n;
             } while (in_.accept(Sym::Comma));
         }
         in_.expect(Sym::RParen, "')'");
         return n;
+    }
+
+    // A native body's reason to refuse these arguments, from the ones that
+    // compiled to a constant (`c` or `-c`); empty for other callees.
+    std::string nativeRefusal(const CompiledFunction& callee, const std::vector<size_t>& starts) {
+        if (callee.code.size() != 1 || callee.code[0].op != FnOp::Native) return {};
+        std::vector<double> args(starts.size(), 0.0);
+        std::unique_ptr<bool[]> known(new bool[starts.size()]());
+        for (size_t i = 0; i < starts.size(); ++i) {
+            const size_t end = i + 1 < starts.size() ? starts[i + 1] : here();
+            const std::vector<FnInstr>& code = fn_->code;
+            if (end == starts[i] + 1 && code[starts[i]].op == FnOp::Const) {
+                args[i] = code[starts[i]].value;
+                known[i] = true;
+            } else if (end == starts[i] + 2 && code[starts[i]].op == FnOp::Const &&
+                       code[starts[i] + 1].op == FnOp::Neg) {
+                args[i] = -code[starts[i]].value;
+                known[i] = true;
+            }
+        }
+        if (static_cast<int>(args.size()) < callee.paramCount) return {};
+        return callee.natives[0]->unsupportedWith(args.data(), known.get());
     }
 
     void requireArgs(const Token& fn, int n, int min, int max) {
@@ -249,7 +276,8 @@ class FunctionCompiler {
         if (v && std::holds_alternative<FunctionPtr>(*v)) {
             const FunctionPtr callee = std::get<FunctionPtr>(*v);
             in_.next();
-            const int n = arguments(t);
+            std::vector<size_t> starts;
+            const int n = arguments(t, &starts);
             if (!callee->unsupported.empty()) {
                 // Calling it compiles an instruction that fails when run.
                 if (fn_->unavailable.empty()) fn_->unavailable = callee->unsupported;
@@ -260,6 +288,8 @@ class FunctionCompiler {
             if (!callee->variadic)
                 requireArgs(t, n, callee->compiled->paramCount, callee->compiled->paramCount);
             if (fn_->unavailable.empty()) fn_->unavailable = callee->compiled->unavailable;
+            if (fn_->unavailable.empty())
+                fn_->unavailable = nativeRefusal(*callee->compiled, starts);
             fn_->callees.push_back(callee->compiled);
             emit({FnOp::Call, static_cast<int32_t>(fn_->callees.size() - 1), n}, 1 - n);
             return;

@@ -64,6 +64,13 @@ class NativeFunction {
   public:
     virtual ~NativeFunction() = default;
     virtual double eval(const double* args) const = 0;
+    // Why a call with these arguments cannot run yet (empty: it can),
+    // judged from the arguments known when the call is compiled (known[i]
+    // false: args[i] is not a constant). Lets a function body that could
+    // only fail mid-render stop at parse time instead.
+    virtual std::string unsupportedWith(const double* /*args*/, const bool* /*known*/) const {
+        return {};
+    }
 };
 
 class CompiledFunction {
