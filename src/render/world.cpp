@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 
@@ -20,23 +21,45 @@ struct TraceContext {
     const scene::Object* hitObject;
     scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
     std::uint64_t* tests = nullptr;                // the calling thread's counters, by kind
+    // An exception must not unwind through Embree (it would be lost there
+    // and the object silently missing): the callbacks keep it here and the
+    // caller rethrows it once Embree has returned.
+    std::exception_ptr error;
 };
+
+// Runs a callback's body; an exception is kept for the caller, and the
+// search ends (a ray with an error has no meaningful hit).
+template <typename Body>
+void guarded(TraceContext* ctx, Body body) {
+    if (ctx->error) return;
+    try {
+        body();
+    } catch (...) {
+        ctx->error = std::current_exception();
+    }
+}
 
 float roundUp(double v) {
     float f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity())
+                                      : f;
 }
 float roundDown(double v) {
     float f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
+                                      : f;
 }
 
 // All bounded objects are the primitives of one user geometry (one Embree
 // geometry per object costs about a kilobyte and a commit each, which on a
 // 100 000-object scene is more than the whole render); the user pointer is
 // the World's primitive table and primID indexes it.
-const World::Primitives& primitivesOf(void* userPtr) { return *static_cast<const World::Primitives*>(userPtr); }
-const scene::Object& objectOf(void* userPtr, unsigned primID) { return *primitivesOf(userPtr).objects[primID]; }
+const World::Primitives& primitivesOf(void* userPtr) {
+    return *static_cast<const World::Primitives*>(userPtr);
+}
+const scene::Object& objectOf(void* userPtr, unsigned primID) {
+    return *primitivesOf(userPtr).objects[primID];
+}
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
     // Computed once by World's constructor (a CSG object's bounds walk its
@@ -58,29 +81,33 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
-    ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
-    const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
-    scene::SurfaceHit h;
-    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, ctx->kind, h)) return;
-    ctx->tMax = h.t;
-    ctx->hitObject = h.primitive;
-    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
-    RTCRayN_tfar(ray, args->N, 0) = roundUp(h.t);
-    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
-    RTCHitN_geomID(hit, args->N, 0) = args->geomID;
-    RTCHitN_primID(hit, args->N, 0) = args->primID;
+    guarded(ctx, [&] {
+        ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
+        const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
+        scene::SurfaceHit h;
+        if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, ctx->kind, h)) return;
+        ctx->tMax = h.t;
+        ctx->hitObject = h.primitive;
+        RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+        RTCRayN_tfar(ray, args->N, 0) = roundUp(h.t);
+        RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+        RTCHitN_geomID(hit, args->N, 0) = args->geomID;
+        RTCHitN_primID(hit, args->N, 0) = args->primID;
+    });
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
-    ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
-    const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
-    scene::SurfaceHit h;
-    if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
-    ctx->hitObject = h.primitive;
-    // Embree's convention for "occluded".
-    RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
+    guarded(ctx, [&] {
+        ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
+        const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
+        scene::SurfaceHit h;
+        if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
+        ctx->hitObject = h.primitive;
+        // Embree's convention for "occluded".
+        RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
+    });
 }
 
 RTCRay toEmbreeRay(const scene::Ray& ray, double tMax) {
@@ -133,15 +160,18 @@ ShapeTestCounts World::shapeTests() const {
     return out;
 }
 
-World::World(const scene::Scene& scene) : scene_(scene), tests_([this] { return Counters(kindNames_.size(), 0); }) {
+World::World(const scene::Scene& scene)
+    : scene_(scene), tests_([this] { return Counters(kindNames_.size(), 0); }) {
     device_ = rtcNewDevice("verbose=0");
     if (!device_) throw std::runtime_error("Embree: cannot create a device");
     bvh_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
     for (const auto& obj : scene.objects) {
-        if (obj->noImage && obj->noShadow && obj->noReflection) continue;  // invisible to every ray kind
+        if (obj->noImage && obj->noShadow && obj->noReflection)
+            continue;  // invisible to every ray kind
         const scene::Bounds bounds = obj->surfaceBounds();
-        if (bounds.isEmpty()) continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
+        if (bounds.isEmpty())
+            continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
         if (!bounds.isFinite()) {
             unbounded_.push_back(obj.get());
             unboundedKinds_.push_back(kindOf(*obj));
@@ -171,7 +201,8 @@ World::~World() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit, scene::RayKind kind) const {
+bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
+                      scene::RayKind kind) const {
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
@@ -185,6 +216,7 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
         rh.ray = toEmbreeRay(ray, tMax);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(bvh_, &ctx.embree, &rh);
+        if (ctx.error) std::rethrow_exception(ctx.error);
     }
     for (size_t i = 0; i < unbounded_.size(); ++i) {
         const scene::Object* obj = unbounded_[i];
@@ -220,6 +252,7 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
     ctx.tests = tests;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
+    if (ctx.error) std::rethrow_exception(ctx.error);
     return ctx.hitObject != nullptr;
 }
 
