@@ -48,6 +48,21 @@ Complex magnet2(Complex z, Complex c) {
     return squaredQuotient(nr, ni, dr, di);
 }
 
+// Types 2 to 5, the same for exterior and interior: a part of the last z
+// (the real or imaginary part, or its square) times the factor.
+double partValue(int type, double f, Complex z) {
+    switch (type) {
+        case 2:
+            return f * z.real();
+        case 3:
+            return f * z.imag();
+        case 4:
+            return f * z.real() * z.real();
+        default:
+            return f * z.imag() * z.imag();
+    }
+}
+
 double exteriorValue(const FractalSettings& s, int i, Complex z) {
     const double f = s.exteriorFactor;
     switch (s.exteriorType) {
@@ -55,16 +70,10 @@ double exteriorValue(const FractalSettings& s, int i, Complex z) {
             return f;
         case 1:
             return static_cast<double>(i) / s.iterations;
-        case 2:
-            return f * z.real();
-        case 3:
-            return f * z.imag();
-        case 4:
-            return f * z.real() * z.real();
-        case 5:
-            return f * z.imag() * z.imag();
-        default:
+        case 6:
             return f * std::abs(z);
+        default:
+            return partValue(s.exteriorType, f, z);
     }
 }
 
@@ -75,16 +84,10 @@ double interiorValue(const FractalSettings& s, Complex z, double minNorm) {
             return f;
         case 1:
             return f * std::sqrt(minNorm);
-        case 2:
-            return f * z.real();
-        case 3:
-            return f * z.imag();
-        case 4:
-            return f * z.real() * z.real();
-        case 5:
-            return f * z.imag() * z.imag();
-        default:
+        case 6:
             return z.real() * z.real() + f * z.imag() * z.imag();
+        default:
+            return partValue(s.interiorType, f, z);
     }
 }
 
