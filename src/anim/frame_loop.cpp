@@ -791,7 +791,9 @@ class Run {
 int runSequence(const options::RenderOptions& o, const Sequence& seq) {
     // The image module (OpenImageIO) loads on another core while the first
     // frame parses (image/codecs.h).
-    if (o.outputToFile && !seq.frames.empty()) image::preloadCodecs();
+    // PNG frames are written without it (image/png_writer.h).
+    if (o.outputToFile && !seq.frames.empty() && seq.fileType != image::FileType::PNG)
+        image::preloadCodecs();
     if (seq.frames.empty()) {
         // More shards than frames: nothing is this shard's.
         if (o.verbose)

@@ -11,6 +11,7 @@
 
 #include "image/codecs.h"
 #include "image/gif_decoder.h"
+#include "image/png_writer.h"
 #include "util/durable_file.h"
 
 namespace frameray::image {
@@ -110,7 +111,10 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
     }
     std::vector<unsigned char> bytes;
     try {
-        bytes = codecs().encode(request);
+        // PNG, the default, without loading OpenImageIO (png_writer.h).
+        bytes = type == FileType::PNG ? encodePng(request.width, request.height, request.channels,
+                                                  deep ? 16 : 8, request.pixels)
+                                      : codecs().encode(request);
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(fmt::format("cannot encode '{}': {}", path.string(), e.what()));
     }
