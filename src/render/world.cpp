@@ -166,21 +166,7 @@ World::World(const scene::Scene& scene)
     if (!device_) throw std::runtime_error("Embree: cannot create a device");
     bvh_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
-    for (const auto& obj : scene.objects) {
-        if (obj->noImage && obj->noShadow && obj->noReflection)
-            continue;  // invisible to every ray kind
-        const scene::Bounds bounds = obj->surfaceBounds();
-        if (bounds.isEmpty())
-            continue;  // nothing to hit (say, a CSG intersection of disjoint parts)
-        if (!bounds.isFinite()) {
-            unbounded_.push_back(obj.get());
-            unboundedKinds_.push_back(kindOf(*obj));
-            continue;
-        }
-        bounded_.objects.push_back(obj.get());
-        bounded_.bounds.push_back(bounds);
-        bounded_.kinds.push_back(kindOf(*obj));
-    }
+    for (const auto& obj : scene.objects) add(obj.get());
     if (!bounded_.objects.empty()) {
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(bounded_.objects.size()));
@@ -194,6 +180,28 @@ World::World(const scene::Scene& scene)
         hasBounded_ = true;
     }
     rtcCommitScene(bvh_);
+}
+
+void World::add(const scene::Object* obj) {
+    if (obj->noImage && obj->noShadow && obj->noReflection) return;  // invisible to every ray kind
+    // A plain union's first hit is its nearest child's: its children join
+    // the BVH one by one (povray splits unions the same way), instead of
+    // a union of thousands being searched child by child.
+    if (obj->isCsg() && obj->op == scene::CsgOp::Union && !obj->inverse && obj->clippedBy.empty() &&
+        obj->boundedBy.empty()) {
+        for (const scene::ObjectRef& child : obj->children) add(child.get());
+        return;
+    }
+    const scene::Bounds bounds = obj->surfaceBounds();
+    if (bounds.isEmpty()) return;  // nothing to hit (say, a CSG intersection of disjoint parts)
+    if (!bounds.isFinite()) {
+        unbounded_.push_back(obj);
+        unboundedKinds_.push_back(kindOf(*obj));
+        return;
+    }
+    bounded_.objects.push_back(obj);
+    bounded_.bounds.push_back(bounds);
+    bounded_.kinds.push_back(kindOf(*obj));
 }
 
 World::~World() {

@@ -31,7 +31,7 @@ struct Hit {
 };
 
 class World {
-public:
+  public:
     explicit World(const scene::Scene& scene);
     ~World();
     World(const World&) = delete;
@@ -65,7 +65,11 @@ public:
         std::vector<std::uint16_t> kinds;  // index into kindNames_, for the statistics
     };
 
-private:
+  private:
+    // Puts a top-level object (or, for a plain union, its children) into
+    // the BVH or the unbounded list.
+    void add(const scene::Object* obj);
+
     const scene::Scene& scene_;
     RTCDevice device_ = nullptr;
     RTCScene bvh_ = nullptr;
@@ -78,11 +82,11 @@ private:
     // line; the World lives for one frame, so no state outlives it.
     std::vector<std::string> kindNames_;
     using Counters = std::vector<std::uint64_t>;
-    mutable tbb::enumerable_thread_specific<Counters, tbb::cache_aligned_allocator<Counters>, tbb::ets_key_per_instance>
+    mutable tbb::enumerable_thread_specific<Counters, tbb::cache_aligned_allocator<Counters>,
+                                            tbb::ets_key_per_instance>
         tests_;
     std::uint16_t kindOf(const scene::Object& object);
     std::uint64_t* counters() const { return tests_.local().data(); }
 };
-
 
 }  // namespace frameray::render
