@@ -20,7 +20,7 @@ Bounds Bounds::transformed(const Transform& t) const {
     return out;
 }
 
-bool Bounds::meets(const Ray& ray, double tMin, double tMax) const {
+bool Bounds::clip(const Ray& ray, double& tMin, double& tMax) const {
     if (isEmpty()) return false;
     for (int axis = 0; axis < 3; ++axis) {
         const double l = lo[axis], h = hi[axis];

@@ -43,9 +43,11 @@ struct Bounds {
     // its eight transformed corners. Empty stays empty; a box that is
     // infinite along any axis becomes infinite along all of them.
     Bounds transformed(const Transform& t) const;
-    // Whether the ray passes through the box for some t in [tMin, tMax]
-    // (a slab test; infinite extents always pass).
-    bool meets(const Ray& ray, double tMin, double tMax) const;
+    // Narrows [tMin, tMax] to where the ray is inside the box; false when
+    // that is empty (a slab test; infinite extents never narrow it).
+    bool clip(const Ray& ray, double& tMin, double& tMax) const;
+    // Whether the ray passes through the box for some t in [tMin, tMax].
+    bool meets(const Ray& ray, double tMin, double tMax) const { return clip(ray, tMin, tMax); }
     // Grown by a relative margin, so rounding in meets() never rejects a
     // surface that touches the box.
     Bounds padded() const;

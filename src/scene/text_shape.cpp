@@ -16,28 +16,6 @@ namespace {
 constexpr double kMinDepth = 1e-6;
 constexpr double kParallel = 1e-10;
 
-// The parameter interval where the ray is inside box `b`, within (lo, hi).
-bool slab(const Ray& ray, const Bounds& b, double& lo, double& hi) {
-    for (int axis = 0; axis < 3; ++axis) {
-        const double o = ray.origin[axis], d = ray.direction[axis];
-        if (d == 0) {
-            if (o < b.lo[axis] || o > b.hi[axis]) return false;
-            continue;
-        }
-        double t0 = (b.lo[axis] - o) / d, t1 = (b.hi[axis] - o) / d;
-        if (t0 > t1) std::swap(t0, t1);
-        lo = std::max(lo, t0);
-        hi = std::min(hi, t1);
-        if (lo > hi) return false;
-    }
-    return true;
-}
-
-Bounds padded(const Bounds& b) {
-    const Vec3 pad = (b.hi - b.lo) * 1e-9 + Vec3(1e-12);
-    return {b.lo - pad, b.hi + pad};
-}
-
 std::vector<double>& scratchHits() {
     // Per-thread scratch for firstHit (a shape query never recurses).
     thread_local std::vector<double> hits;
@@ -90,7 +68,7 @@ TextShape::TextShape(std::vector<PlacedGlyph> glyphs, double thickness)
         const Box2& c = p.outline->box();
         const Bounds box{{c.xlo + p.x, c.ylo + p.y, zLo_}, {c.xhi + p.x, c.yhi + p.y, zHi_}};
         bounds_.extend(box);
-        glyphs_.push_back({p.outline, p.x, p.y, padded(box)});
+        glyphs_.push_back({p.outline, p.x, p.y, box.padded()});
     }
 }
 
@@ -98,7 +76,7 @@ void TextShape::glyphHits(const Glyph& g, const Ray& ray, double tMin, double tM
                           std::vector<double>& ts) const {
     const double lo = std::max(tMin, kMinDepth);
     double ta = lo, tb = tMax;
-    if (!slab(ray, g.box, ta, tb)) return;
+    if (!g.box.clip(ray, ta, tb)) return;
     const Vec3 o{ray.origin.x - g.dx, ray.origin.y - g.dy, ray.origin.z};
     const Vec3& d = ray.direction;
     const GlyphOutline& outline = *g.outline;
@@ -135,7 +113,7 @@ bool TextShape::RaySpan::misses(const Bounds& b) const {
 // text in a short span, so it meets one or two glyphs of a long line.
 bool TextShape::span(const Ray& ray, double tMin, double tMax, RaySpan& s) const {
     double ta = std::max(tMin, kMinDepth), tb = tMax;
-    if (!slab(ray, bounds_, ta, tb)) return false;
+    if (!bounds_.clip(ray, ta, tb)) return false;
     const Vec3 a = ray.origin + ray.direction * ta, b = ray.origin + ray.direction * tb;
     s.lo = {std::min(a.x, b.x), std::min(a.y, b.y)};
     s.hi = {std::max(a.x, b.x), std::max(a.y, b.y)};
