@@ -576,8 +576,7 @@ double comma(const double* a) {
     if (x == 0 && z == 0) x = 0.0001;
     const double head = std::sqrt((x - 0.5 * s) * (x - 0.5 * s) + y * y + z * z) - 0.5 * s;
     const double spine = std::sqrt((x + 0.25 * s) * (x + 0.25 * s) + z * z) - 0.75 * s;
-    const double tail =
-        std::sqrt(spine * spine + y * y) - 0.5 * s * std::cos(std::atan2(z, x) / 2);
+    const double tail = std::sqrt(spine * spine + y * y) - 0.5 * s * std::cos(std::atan2(z, x) / 2);
     return std::min(head, std::max(tail, -z));
 }
 
