@@ -336,7 +336,9 @@ TEST(InternalFunctions, UnmatchedCasesStopInsteadOfGuessing) {
     EXPECT_THROW(callNamed("f_mesh1", {0.3, 0.2, 0.1, -1, 1, 1, 1, 1}), std::runtime_error);
     for (int n = 0; n < 79; ++n) {
         const InternalFunction f = internalFunction(n);
-        if (!f.name.empty()) EXPECT_TRUE(f.function) << f.name << " is not implemented";
+        if (!f.name.empty()) {
+            EXPECT_TRUE(f.function) << f.name << " is not implemented";
+        }
     }
 }
 
