@@ -531,6 +531,55 @@ double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
 
+// A torus (major radius a[3], in the xz plane) wound with a helical tube.
+// In the torus' own coordinates — d the distance from the core circle,
+// θ = atan2(x, z) around the y axis (π/2 on the y axis itself), ψ the angle
+// around the core from the top towards the inside — a winding crosses
+// angle u = N·θ - π - twist·ψ lies at a multiple of 2π. With du that
+// angle wrapped to [-π, π):
+//   n = min(√((d - m)² + fat2·du²), d + m)     m: the "minor radius"
+//   groove = fat · cos(period · atan2(-amplitude·du, d - m) - phase·θ)
+//   value = min(n - groove, ρ + R - m) - threshold
+// (ρ the distance from the y axis). A negative radicand makes n NaN, and
+// then the value is ρ + R - m - threshold: povray's comparisons keep the
+// NaN through the first minimum and drop it at the second (all measured:
+// 2000 random points over 280 random parameter sets, negative ones too).
+double helicalTorus(const double* a) {
+    const double x = a[0], y = a[1], z = a[2];
+    const double major = a[3], windings = a[4], twist = a[5], fat = a[6], threshold = a[7];
+    const double minor = a[8], fat2 = a[9], period = a[10], amplitude = a[11], phase = a[12];
+    const double rho = std::sqrt(x * x + z * z);
+    const double d = std::sqrt((rho - major) * (rho - major) + y * y);
+    const double theta = rho != 0 ? std::atan2(x, z) : M_PI / 2;
+    const double psi = std::atan2(major - rho, y);
+    double du = windings * theta - M_PI - twist * psi;
+    du -= 2 * M_PI * std::floor(du / (2 * M_PI) + 0.5);
+    const double r2 = (d - minor) * (d - minor) + fat2 * du * du;
+    double n = r2 >= 0 ? std::sqrt(r2) : std::nan("");
+    if (d + minor < n) n = d + minor;
+    const double groove =
+        fat * std::cos(period * std::atan2(-amplitude * du, d - minor) - phase * theta);
+    const double tube = n - groove, outside = rho + major - minor;
+    return (tube < outside ? tube : outside) - threshold;
+}
+
+// A comma in the xz plane, scaled by s = a[3]: a head sphere of radius s/2
+// at (s/2, 0, 0), united with a tail whose spine is the circle of radius
+// 3s/4 about (-s/4, 0, 0) and whose tube radius (s/2)·cos(θ/2) shrinks from
+// s/2 at the head to 0 at (-s, 0, 0) (θ = atan2(z, x)); the tail is cut at
+// z = 0 (its value is at least -z). On the y axis povray moves x to 0.0001
+// (measured: the origin gives -0.0001 at every scale; all pieces matched to
+// 1e-15 at 3900 points, negative and zero scales included).
+double comma(const double* a) {
+    double x = a[0];
+    const double y = a[1], z = a[2], s = a[3];
+    if (x == 0 && z == 0) x = 0.0001;
+    const double head = std::sqrt((x - 0.5 * s) * (x - 0.5 * s) + y * y + z * z) - 0.5 * s;
+    const double spine = std::sqrt((x + 0.25 * s) * (x + 0.25 * s) + z * z) - 0.75 * s;
+    const double tail = std::sqrt(spine * spine + y * y) - 0.5 * s * std::cos(std::atan2(z, x) / 2);
+    return std::min(head, std::max(tail, -z));
+}
+
 // ---- Assorted shapes. ----
 
 // A torus (axis y, radii a[4], a[5], centred at (a[6], a[7], 0)) inverted
@@ -781,7 +830,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_blob", 5, blob},
     {"f_blob2", 4, blob2},
     {"f_boy_surface", 2, boySurface},
-    {"f_comma", 1, nullptr},
+    {"f_comma", 1, comma},
     {"f_cross_ellipsoids", 4, crossEllipsoids},
     {"f_crossed_trough", 1, fieldPoly<crossedTrough>},
     {"f_cubic_saddle", 1, fieldPoly<cubicSaddle>},
@@ -796,7 +845,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_folium_surface_2d", 6, foliumSurface2d},
     {"f_glob", 1, fieldPoly<glob>},
     {"f_heart", 1, fieldPoly<heart>},
-    {"f_helical_torus", 10, nullptr},
+    {"f_helical_torus", 10, helicalTorus},
     {"f_helix1", 7, helix1},
     {"f_helix2", 7, helix2},
     {"f_hex_x", 1, hexX},

@@ -421,13 +421,17 @@ TEST(SweepShapesParse, Errors) {
     EXPECT_NE(parseErrorOf("sphere_sweep { b_spline 3, <0,0,0>, 1, <1,0,0>, 1, <2,0,0>, 1 }"), "");
     EXPECT_NE(parseErrorOf("superellipsoid { <0, 1> }").find("Illegal superellipsoid"),
               std::string::npos);
-    // internal(24) is f_helical_torus, not implemented yet.
-    EXPECT_NE(parseErrorOf("isosurface { function { internal(24) } }").find("not supported yet"),
-              std::string::npos);
-    EXPECT_NE(parseErrorOf("#declare G = function { internal(24) }\n"
-                           "isosurface { function { G(x, y, z, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10) } }")
+    // internal(78) is f_noise_generator; generator 3 is not matched yet.
+    EXPECT_NE(parseErrorOf("#declare G = function { internal(78) }\n"
+                           "isosurface { function { G(x, y, z, 3) } }")
                   .find("not supported yet"),
               std::string::npos);
+    // internal(24) is f_helical_torus: ten parameters after x, y, z.
+    EXPECT_NE(parseErrorOf("isosurface { function { internal(24) } }").find("takes 13 parameters"),
+              std::string::npos);
+    EXPECT_EQ(parseErrorOf("#declare G = function { internal(24) }\n"
+                           "isosurface { function { G(x, y, z, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10) } }"),
+              "");
     // f_sphere takes a radius after x, y, z: an isosurface body cannot be it.
     EXPECT_NE(parseErrorOf("isosurface { function { internal(61) } }").find("takes 4 parameters"),
               std::string::npos);
