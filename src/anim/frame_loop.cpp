@@ -127,27 +127,25 @@ std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq)
     return hashText(s);
 }
 
-// Temporary files left by a run that was killed mid-write.
+// Temporary files left by a run that was killed mid-write: of the frames,
+// of sequence.json and of the journal (rewritten when a run resumes).
 void removeStaleTemporaries(const Sequence& seq) {
     std::set<fs::path> folders;
-    std::set<std::string> names;
+    std::set<std::string> names{seq.statisticsName};
     for (const FrameSpec& f : seq.frames) {
         folders.insert(f.output.parent_path().empty() ? fs::path(".") : f.output.parent_path());
         names.insert(f.output.filename().string());
+    }
+    if (!seq.journal.empty()) {
+        folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
+                                                         : seq.journal.parent_path());
+        names.insert(seq.journal.filename().string());
     }
     for (const fs::path& dir : folders) {
         std::error_code ec;
         for (const auto& entry : fs::directory_iterator(dir, ec)) {
             const std::string name = entry.path().filename().string();
             if (name.empty() || name[0] != '.') continue;
-            const auto dot = name.find(".", 1);
-            if (dot == std::string::npos) continue;
-            // sequence.json's own temporary (see writeStatistics).
-            if (long pid = 0; image::isTemporaryFor(name, seq.statisticsName, pid)) {
-                if (pid == static_cast<long>(getpid()) || kill(static_cast<pid_t>(pid), 0) != 0)
-                    fs::remove(entry.path(), ec);
-                continue;
-            }
             for (const std::string& target : names) {
                 long pid = 0;
                 if (!image::isTemporaryFor(name, target, pid)) continue;
