@@ -13,14 +13,15 @@ namespace frameray::options {
 namespace {
 
 bool iequals(std::string_view a, std::string_view b) {
-    return a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
            });
 }
 
 std::string trimQuotes(std::string_view v) {
-    if (v.size() >= 2 && ((v.front() == '"' && v.back() == '"') || (v.front() == '\'' && v.back() == '\'')))
+    if (v.size() >= 2 &&
+        ((v.front() == '"' && v.back() == '"') || (v.front() == '\'' && v.back() == '\'')))
         v = v.substr(1, v.size() - 2);
     return std::string(v);
 }
@@ -28,7 +29,7 @@ std::string trimQuotes(std::string_view v) {
 // POV-Ray's boolean words. Returns -1 when `text` is not one.
 int boolWord(std::string_view text) {
     static constexpr std::pair<std::string_view, bool> kWords[] = {
-        {"on", true}, {"true", true}, {"yes", true}, {"1", true},
+        {"on", true},   {"true", true},   {"yes", true}, {"1", true},
         {"off", false}, {"false", false}, {"no", false}, {"0", false},
     };
     for (const auto& [word, value] : kWords)
@@ -40,7 +41,8 @@ bool toBool(const OptionInput& in) {
     if (in.fromSwitch && in.value.empty()) return in.plus;
     const int b = boolWord(trimQuotes(in.value));
     if (b < 0)
-        throw std::invalid_argument(fmt::format("'{}' is not a boolean (use on/off, true/false, yes/no, 1/0)", in.value));
+        throw std::invalid_argument(
+            fmt::format("'{}' is not a boolean (use on/off, true/false, yes/no, 1/0)", in.value));
     return in.fromSwitch ? (in.plus && b == 1) : b == 1;
 }
 
@@ -57,7 +59,8 @@ double toFloat(std::string_view text) {
 // (+KFI1.6 is frame 1).
 int toInt(std::string_view text) {
     const double v = std::trunc(toFloat(text));
-    if (v < -2147483647.0 || v > 2147483647.0) throw std::invalid_argument(fmt::format("'{}' is out of range", text));
+    if (v < -2147483647.0 || v > 2147483647.0)
+        throw std::invalid_argument(fmt::format("'{}' is out of range", text));
     return static_cast<int>(v);
 }
 
@@ -73,7 +76,9 @@ double toNonNegative(std::string_view text) {
     return v;
 }
 
-void mark(RenderOptions& o, std::string_view key) { o.explicitlySet.emplace(key); }
+void mark(RenderOptions& o, std::string_view key) {
+    o.explicitlySet.emplace(key);
+}
 
 // Output_File_Type letters of POV-Ray 3.7 and an optional bit depth: "N",
 // "N16", "E".
@@ -81,8 +86,11 @@ void applyFileType(RenderOptions& o, std::string_view v) {
     if (v.empty()) return;
     const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(v[0])));
     if (std::string_view("NPTCEHJBS").find(c) == std::string_view::npos)
-        throw std::invalid_argument(fmt::format("unknown output file type '{}' (use N P T C E H J B)", v));
-    if (c == 'S') throw std::invalid_argument("output file type 'S' (system format) is not available in POV-Ray 3.7 for Unix");
+        throw std::invalid_argument(
+            fmt::format("unknown output file type '{}' (use N P T C E H J B)", v));
+    if (c == 'S')
+        throw std::invalid_argument(
+            "output file type 'S' (system format) is not available in POV-Ray 3.7 for Unix");
     o.outputType = c;
     if (v.size() > 1) {
         const int depth = toInt(v.substr(1));
@@ -103,11 +111,12 @@ std::string streamFile(std::string_view value, std::string_view defaultName) {
     return v;
 }
 
-constexpr std::string_view kStreamDefaultFile[kTextStreams] = {"debug.out",  "fatal.out",   "render.out",
-                                                                "stats.out",  "warning.out", "alltext.out"};
+constexpr std::string_view kStreamDefaultFile[kTextStreams] = {
+    "debug.out", "fatal.out", "render.out", "stats.out", "warning.out", "alltext.out"};
 constexpr std::string_view kStreamKeys[kTextStreams][2] = {
-    {"Debug_Console", "Debug_File"},     {"Fatal_Console", "Fatal_File"},     {"Render_Console", "Render_File"},
-    {"Statistic_Console", "Statistic_File"}, {"Warning_Console", "Warning_File"}, {"All_Console", "All_File"},
+    {"Debug_Console", "Debug_File"},     {"Fatal_Console", "Fatal_File"},
+    {"Render_Console", "Render_File"},   {"Statistic_Console", "Statistic_File"},
+    {"Warning_Console", "Warning_File"}, {"All_Console", "All_File"},
 };
 
 template <TextStream S>
@@ -140,59 +149,99 @@ void applyReturn(RenderOptions& o, const OptionInput& in) {
     const std::string v = trimQuotes(in.value);
     std::string_view letters(v);
     if (!letters.empty() && (letters[0] == '-' || letters[0] == '!')) letters.remove_prefix(1);
-    if (letters.size() != 1 || std::string_view("IiSsAaQqUuFf").find(letters[0]) == std::string_view::npos)
-        throw std::invalid_argument(fmt::format(
-            "'{}' is not a return action (I ignore, S skip frame, A skip all, Q quit, U user abort, F fatal; "
-            "a leading - or ! acts on a zero code)",
-            v));
+    if (letters.size() != 1 ||
+        std::string_view("IiSsAaQqUuFf").find(letters[0]) == std::string_view::npos)
+        throw std::invalid_argument(
+            fmt::format("'{}' is not a return action (I ignore, S skip frame, A skip all, Q quit, "
+                        "U user abort, F fatal; "
+                        "a leading - or ! acts on a zero code)",
+                        v));
     o.commands[static_cast<int>(H)].action = v;
 }
 
 // Create_Ini's formatting: On/Off, shortest floats, quoted file names.
-std::string onOff(bool b) { return b ? "On" : "Off"; }
-std::string num(double v) { return fmt::format("{}", v); }
-std::string quoted(const std::string& s) { return fmt::format("\"{}\"", s); }
+std::string onOff(bool b) {
+    return b ? "On" : "Off";
+}
+std::string num(double v) {
+    return fmt::format("{}", v);
+}
+std::string quoted(const std::string& s) {
+    return fmt::format("\"{}\"", s);
+}
 using Lines = std::vector<std::string>;
 
 #define FR_WRITE(expr) [](const RenderOptions& o) -> Lines { return {expr}; }
 
 template <TextStream S>
-Lines writeStreamConsole(const RenderOptions& o) { return {onOff(o.streams[static_cast<int>(S)].console)}; }
+Lines writeStreamConsole(const RenderOptions& o) {
+    return {onOff(o.streams[static_cast<int>(S)].console)};
+}
 template <TextStream S>
-Lines writeStreamFile(const RenderOptions& o) { return {quoted(o.streams[static_cast<int>(S)].file)}; }
+Lines writeStreamFile(const RenderOptions& o) {
+    return {quoted(o.streams[static_cast<int>(S)].file)};
+}
 template <ShellHook H>
-Lines writeCommand(const RenderOptions& o) { return {o.commands[static_cast<int>(H)].command}; }
+Lines writeCommand(const RenderOptions& o) {
+    return {o.commands[static_cast<int>(H)].command};
+}
 template <ShellHook H>
-Lines writeReturn(const RenderOptions& o) { return {o.commands[static_cast<int>(H)].action}; }
+Lines writeReturn(const RenderOptions& o) {
+    return {o.commands[static_cast<int>(H)].action};
+}
 
-#define FR_STREAM(S, NAME, SW, WHAT)                                                                            \
-    {NAME "_Console", "G" SW, OptionType::Bool, "on", "Show the " WHAT " stream on the console (+G" SW               \
-                                                  "[file] also names its file, -G" SW " hides it).",            \
-     applyStreamConsole<S>, writeStreamConsole<S>, nullptr},                                                    \
-    {NAME "_File", "", OptionType::Path, "", "Also write the " WHAT " stream to this file (on: the default name).", \
-     applyStreamFile<S>, writeStreamFile<S>, nullptr}
+#define FR_STREAM(S, NAME, SW, WHAT)                                                      \
+    {NAME "_Console",                                                                     \
+     "G" SW,                                                                              \
+     OptionType::Bool,                                                                    \
+     "on",                                                                                \
+     "Show the " WHAT " stream on the console (+G" SW "[file] also names its file, -G" SW \
+     " hides it).",                                                                       \
+     applyStreamConsole<S>,                                                               \
+     writeStreamConsole<S>,                                                               \
+     nullptr},                                                                            \
+    {                                                                                     \
+        NAME "_File", "", OptionType::Path, "",                                           \
+            "Also write the " WHAT " stream to this file (on: the default name).",        \
+            applyStreamFile<S>, writeStreamFile<S>, nullptr                               \
+    }
 
-#define FR_HOOK(H, NAME, WHEN)                                                                                 \
-    {NAME "_Command", "", OptionType::Command, "", "Shell command run " WHEN                                    \
-                                                   "; %o output file, %s scene name, %n frame, %k clock, %h height, " \
-                                                   "%w width, %% a percent sign.",                             \
-     applyCommand<H>, writeCommand<H>, nullptr},                                                                \
-    {NAME "_Return", "", OptionType::Return, "", "What a failing " NAME "_Command does: I ignore, S skip the frame, " \
-                                                 "A skip the rest, Q quit, U user abort, F fatal error; -X or !X act " \
-                                                 "on success instead.",                                         \
-     applyReturn<H>, writeReturn<H>, nullptr}
+#define FR_HOOK(H, NAME, WHEN)                                                    \
+    {NAME "_Command",                                                             \
+     "",                                                                          \
+     OptionType::Command,                                                         \
+     "",                                                                          \
+     "Shell command run " WHEN                                                    \
+     "; %o output file, %s scene name, %n frame, %k clock, %h height, "           \
+     "%w width, %% a percent sign.",                                              \
+     applyCommand<H>,                                                             \
+     writeCommand<H>,                                                             \
+     nullptr},                                                                    \
+    {                                                                             \
+        NAME "_Return", "", OptionType::Return, "",                               \
+            "What a failing " NAME                                                \
+            "_Command does: I ignore, S skip the frame, "                         \
+            "A skip the rest, Q quit, U user abort, F fatal error; -X or !X act " \
+            "on success instead.",                                                \
+            applyReturn<H>, writeReturn<H>, nullptr                               \
+    }
 
 // In the order POV-Ray 3.7's Create_Ini writes options.
 const OptionSpec kOptions[] = {
     FR_STREAM(TextStream::All, "All", "A", "all-text"),
     {"Allow_Shell_Commands", "", OptionType::Bool, "off",
-     "Run the *_Command shell-outs; while off, a run that sets one stops with an error before anything is run "
-     "(see Restrictions). Only from the command line, POVRAYOPT, povray.ini or frameray.conf, not from INI files "
+     "Run the *_Command shell-outs; while off, a run that sets one stops with an error before "
+     "anything is run "
+     "(see Restrictions). Only from the command line, POVRAYOPT, povray.ini or frameray.conf, not "
+     "from INI files "
      "named on the command line.",
      [](RenderOptions& o, const OptionInput& in) { o.allowShellCommands = toBool(in); },
      FR_WRITE(onOff(o.allowShellCommands)), nullptr},
-    {"Antialias_Depth", "R", OptionType::Int, "3", "Maximum recursion depth of adaptive anti-aliasing (1..9).",
-     [](RenderOptions& o, const OptionInput& in) { o.antialiasDepth = std::clamp(toInt(in.value), 1, 9); },
+    {"Antialias_Depth", "R", OptionType::Int, "3",
+     "Maximum recursion depth of adaptive anti-aliasing (1..9).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.antialiasDepth = std::clamp(toInt(in.value), 1, 9);
+     },
      FR_WRITE(num(o.antialiasDepth)), nullptr},
     {"Antialias", "A", OptionType::Bool, "off", "Anti-aliasing; +A0.3 also sets the threshold.",
      [](RenderOptions& o, const OptionInput& in) {
@@ -207,17 +256,24 @@ const OptionSpec kOptions[] = {
          }
      },
      FR_WRITE(onOff(o.antialias)), nullptr},
-    {"Antialias_Threshold", "", OptionType::Float, "0.3", "Colour difference that triggers super-sampling.",
-     [](RenderOptions& o, const OptionInput& in) { o.antialiasThreshold = toNonNegative(in.value); },
+    {"Antialias_Threshold", "", OptionType::Float, "0.3",
+     "Colour difference that triggers super-sampling.",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.antialiasThreshold = toNonNegative(in.value);
+     },
      FR_WRITE(num(o.antialiasThreshold)), nullptr},
     {"Antialias_Gamma", "", OptionType::Float, "2.5",
      "Gamma in which anti-aliasing compares colours (0: linear light).",
      [](RenderOptions& o, const OptionInput& in) { o.antialiasGamma = toNonNegative(in.value); },
      FR_WRITE(num(o.antialiasGamma)), nullptr},
-    {"Bits_Per_Color", "", OptionType::Int, "8", "Bits per colour channel of the output file (also +FN16).",
-     [](RenderOptions& o, const OptionInput& in) { o.bitDepth = std::clamp(toInt(in.value), 1, 16); },
+    {"Bits_Per_Color", "", OptionType::Int, "8",
+     "Bits per colour channel of the output file (also +FN16).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.bitDepth = std::clamp(toInt(in.value), 1, 16);
+     },
      FR_WRITE(num(o.bitDepth)), nullptr},
-    {"Bounding", "MB", OptionType::Bool, "on", "Automatic bounding; +MBn also sets the threshold (no effect on the image).",
+    {"Bounding", "MB", OptionType::Bool, "on",
+     "Automatic bounding; +MBn also sets the threshold (no effect on the image).",
      [](RenderOptions& o, const OptionInput& in) {
          if (in.fromSwitch) {
              o.bounding = in.plus;
@@ -230,18 +286,26 @@ const OptionSpec kOptions[] = {
          }
      },
      FR_WRITE(onOff(o.bounding)), nullptr},
-    {"Bounding_Threshold", "", OptionType::Int, "3", "Fewest objects for automatic bounding (no effect on the image).",
-     [](RenderOptions& o, const OptionInput& in) { o.boundingThreshold = std::max(toInt(in.value), 0); },
+    {"Bounding_Threshold", "", OptionType::Int, "3",
+     "Fewest objects for automatic bounding (no effect on the image).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.boundingThreshold = std::max(toInt(in.value), 0);
+     },
      FR_WRITE(num(o.boundingThreshold)), nullptr},
     {"Clock", "K", OptionType::Float, "0", "Clock value of a single (non-animated) frame.",
-     [](RenderOptions& o, const OptionInput& in) { o.clock = toFloat(in.value); o.clockSet = true; },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.clock = toFloat(in.value);
+         o.clockSet = true;
+     },
      FR_WRITE(num(o.clock)), nullptr},
     {"Continue_Trace", "C", OptionType::Bool, "off",
-     "Resume a stopped animation: frames the journal records as finished and intact are kept, the rest rendered.",
-     [](RenderOptions& o, const OptionInput& in) { o.continueTrace = toBool(in); }, FR_WRITE(onOff(o.continueTrace)),
-     nullptr},
+     "Resume a stopped animation: frames the journal records as finished and intact are kept, the "
+     "rest rendered.",
+     [](RenderOptions& o, const OptionInput& in) { o.continueTrace = toBool(in); },
+     FR_WRITE(onOff(o.continueTrace)), nullptr},
     {"Create_Ini", "GI", OptionType::Path, "",
-     "Write the effective options to this INI file (+GIname; a boolean value names a file called so, as povray does).",
+     "Write the effective options to this INI file (+GIname; a boolean value names a file called "
+     "so, as povray does).",
      [](RenderOptions& o, const OptionInput& in) { o.createIni = trimQuotes(in.value); },
      FR_WRITE(quoted(o.createIni)), nullptr},
     {"Cyclic_Animation", "KC", OptionType::Bool, "off",
@@ -249,11 +313,13 @@ const OptionSpec kOptions[] = {
      [](RenderOptions& o, const OptionInput& in) { o.cyclicAnimation = toBool(in); },
      FR_WRITE(onOff(o.cyclicAnimation)), nullptr},
     FR_STREAM(TextStream::Debug, "Debug", "D", "#debug"),
-    {"Declare", "", OptionType::Declare, "", "Declare=Name=Value: a float or string identifier set before parsing.",
+    {"Declare", "", OptionType::Declare, "",
+     "Declare=Name=Value: a float or string identifier set before parsing.",
      [](RenderOptions& o, const OptionInput& in) {
          const std::string v = trimQuotes(in.value);
          const auto eq = v.find('=');
-         if (eq == std::string::npos || eq == 0) throw std::invalid_argument(fmt::format("'{}' is not Name=Value", v));
+         if (eq == std::string::npos || eq == 0)
+             throw std::invalid_argument(fmt::format("'{}' is not Name=Value", v));
          o.declares.emplace_back(v.substr(0, eq), trimQuotes(std::string_view(v).substr(eq + 1)));
      },
      [](const RenderOptions& o) {
@@ -262,13 +328,15 @@ const OptionSpec kOptions[] = {
          return lines;
      },
      nullptr},
-    {"Display", "D", OptionType::Bool, "off", "Preview window (accepted; frameray renders in batch, without a window).",
+    {"Display", "D", OptionType::Bool, "off",
+     "Preview window (accepted; frameray renders in batch, without a window).",
      [](RenderOptions& o, const OptionInput& in) {
          // +D may carry POV-Ray's display type and palette letters (+D0G).
          o.display = in.fromSwitch ? in.plus : toBool(in);
      },
      FR_WRITE(onOff(o.display)), nullptr},
-    {"Display_Gamma", "", OptionType::Float, "2.2", "Gamma of the display (accepted; there is no display window).",
+    {"Display_Gamma", "", OptionType::Float, "2.2",
+     "Gamma of the display (accepted; there is no display window).",
      [](RenderOptions& o, const OptionInput& in) {
          o.displayGamma = iequals(trimQuotes(in.value), "srgb") ? 2.2 : toFloat(in.value);
      },
@@ -279,17 +347,20 @@ const OptionSpec kOptions[] = {
      FR_WRITE(num(o.endColumn)), nullptr},
     {"End_Row", "ER", OptionType::Window, "height",
      "Last row of the render window: a pixel number, or a fraction of the height up to 1.0.",
-     [](RenderOptions& o, const OptionInput& in) { o.endRow = toNonNegative(in.value); }, FR_WRITE(num(o.endRow)),
-     nullptr},
+     [](RenderOptions& o, const OptionInput& in) { o.endRow = toNonNegative(in.value); },
+     FR_WRITE(num(o.endRow)), nullptr},
     FR_STREAM(TextStream::Fatal, "Fatal", "F", "fatal error"),
     FR_HOOK(ShellHook::FatalError, "Fatal_Error", "when a frame fails"),
     {"Field_Render", "UF", OptionType::Bool, "off",
-     "Field rendering for interlaced video (accepted; POV-Ray 3.7 writes the same full frames with it on).",
-     [](RenderOptions& o, const OptionInput& in) { o.fieldRender = toBool(in); }, FR_WRITE(onOff(o.fieldRender)),
-     nullptr},
+     "Field rendering for interlaced video (accepted; POV-Ray 3.7 writes the same full frames with "
+     "it on).",
+     [](RenderOptions& o, const OptionInput& in) { o.fieldRender = toBool(in); },
+     FR_WRITE(onOff(o.fieldRender)), nullptr},
     {"File_Restrictions", "", OptionType::Bool, "on",
-     "Limit the files a scene reads (working, scene and library folders, Read_Path) and writes (working, scene and "
-     "output folders, Write_Path); off lifts the limits (see Restrictions). Not from INI files named on the command "
+     "Limit the files a scene reads (working, scene and library folders, Read_Path) and writes "
+     "(working, scene and "
+     "output folders, Write_Path); off lifts the limits (see Restrictions). Not from INI files "
+     "named on the command "
      "line.",
      [](RenderOptions& o, const OptionInput& in) { o.fileRestrictions = toBool(in); },
      FR_WRITE(onOff(o.fileRestrictions)), nullptr},
@@ -299,41 +370,55 @@ const OptionSpec kOptions[] = {
      },
      FR_WRITE(o.fileGamma <= 0 ? std::string("sRGB") : num(o.fileGamma)), nullptr},
     {"Final_Clock", "KF", OptionType::Float, "1", "Clock value of the last frame.",
-     [](RenderOptions& o, const OptionInput& in) { o.finalClock = toFloat(in.value); }, FR_WRITE(num(o.finalClock)),
-     nullptr},
+     [](RenderOptions& o, const OptionInput& in) { o.finalClock = toFloat(in.value); },
+     FR_WRITE(num(o.finalClock)), nullptr},
     {"Final_Frame", "KFF", OptionType::Int, "1", "Last frame number of an animation.",
-     [](RenderOptions& o, const OptionInput& in) { o.finalFrame = toInt(in.value); o.finalFrameSet = true; },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.finalFrame = toInt(in.value);
+         o.finalFrameSet = true;
+     },
      FR_WRITE(num(o.finalFrame)), nullptr},
-    {"Frame_Step", "STP", OptionType::Int, "1", "Render every n-th frame of the animation (or subset).",
-     [](RenderOptions& o, const OptionInput& in) { o.frameStep = toInt(in.value); }, FR_WRITE(num(o.frameStep)),
-     nullptr},
+    {"Frame_Step", "STP", OptionType::Int, "1",
+     "Render every n-th frame of the animation (or subset).",
+     [](RenderOptions& o, const OptionInput& in) { o.frameStep = toInt(in.value); },
+     FR_WRITE(num(o.frameStep)), nullptr},
     {"Frames_In_Flight", "WF", OptionType::Int, "threads + 1, at most 16",
-     "Frames an animation keeps in flight at once: one is parsed (in frame order) while the others render. 1 "
-     "renders frame after frame; the images are the same either way. Lowered to what fits in memory (the first "
-     "frame, rendered alone, gives the estimate). With Pre_Frame_Command or Post_Frame_Command set, frames run one "
+     "Frames an animation keeps in flight at once: one is parsed (in frame order) while the others "
+     "render. 1 "
+     "renders frame after frame; the images are the same either way. Lowered to what fits in "
+     "memory (the first "
+     "frame, rendered alone, gives the estimate). With Pre_Frame_Command or Post_Frame_Command "
+     "set, frames run one "
      "at a time.",
      [](RenderOptions& o, const OptionInput& in) { o.framesInFlight = toPositiveInt(in.value); },
      FR_WRITE(num(o.framesInFlight)), nullptr},
     {"Height", "H", OptionType::Int, "600", "Image height in pixels.",
-     [](RenderOptions& o, const OptionInput& in) { o.height = toPositiveInt(in.value); }, FR_WRITE(num(o.height)),
-     nullptr},
+     [](RenderOptions& o, const OptionInput& in) { o.height = toPositiveInt(in.value); },
+     FR_WRITE(num(o.height)), nullptr},
     {"Include_Header", "HI", OptionType::Path, "", "A file included before the scene's first line.",
      [](RenderOptions& o, const OptionInput& in) { o.includeHeader = trimQuotes(in.value); },
      FR_WRITE(quoted(o.includeHeader)),
-     [](const RenderOptions& o) -> const char* { return o.includeHeader.empty() ? nullptr : "Include_Header"; }},
+     [](const RenderOptions& o) -> const char* {
+         return o.includeHeader.empty() ? nullptr : "Include_Header";
+     }},
     {"Initial_Clock", "KI", OptionType::Float, "0", "Clock value of the first frame.",
      [](RenderOptions& o, const OptionInput& in) { o.initialClock = toFloat(in.value); },
      FR_WRITE(num(o.initialClock)), nullptr},
     {"Initial_Frame", "KFI", OptionType::Int, "1", "First frame number of an animation.",
-     [](RenderOptions& o, const OptionInput& in) { o.initialFrame = toInt(in.value); o.initialFrameSet = true; },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.initialFrame = toInt(in.value);
+         o.initialFrameSet = true;
+     },
      FR_WRITE(num(o.initialFrame)), nullptr},
     {"Input_File_Name", "I", OptionType::Path, "", "Scene file to render.",
      [](RenderOptions& o, const OptionInput& in) { o.inputFile = trimQuotes(in.value); },
      FR_WRITE(quoted(o.inputFile)), nullptr},
-    {"Jitter_Amount", "", OptionType::Float, "1.0", "How far anti-aliasing samples are jittered, in pixels.",
+    {"Jitter_Amount", "", OptionType::Float, "1.0",
+     "How far anti-aliasing samples are jittered, in pixels.",
      [](RenderOptions& o, const OptionInput& in) { o.jitterAmount = toNonNegative(in.value); },
      FR_WRITE(num(o.jitterAmount)), nullptr},
-    {"Jitter", "J", OptionType::Bool, "on", "Jitter anti-aliasing samples; +J0.5 also sets the amount.",
+    {"Jitter", "J", OptionType::Bool, "on",
+     "Jitter anti-aliasing samples; +J0.5 also sets the amount.",
      [](RenderOptions& o, const OptionInput& in) {
          if (in.fromSwitch) {
              o.jitter = in.plus;
@@ -348,7 +433,9 @@ const OptionSpec kOptions[] = {
      FR_WRITE(onOff(o.jitter)), nullptr},
     {"Library_Path", "L", OptionType::PathList, "/usr/share/povray-3.7/include",
      "Folder searched for include files, fonts, images and INI files; accumulates.",
-     [](RenderOptions& o, const OptionInput& in) { o.libraryPaths.emplace_back(trimQuotes(in.value)); },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.libraryPaths.emplace_back(trimQuotes(in.value));
+     },
      [](const RenderOptions& o) {
          Lines lines;
          for (const auto& p : o.libraryPaths) lines.push_back(quoted(p.string()));
@@ -356,7 +443,8 @@ const OptionSpec kOptions[] = {
      },
      nullptr},
     {"Max_Parse_Iterations", "", OptionType::Int, "100000000",
-     "Loop iterations (#while, #for) and macro calls one frame's parse may run before it stops with an error "
+     "Loop iterations (#while, #for) and macro calls one frame's parse may run before it stops "
+     "with an error "
      "(a loop that never ends); 0: no limit.",
      [](RenderOptions& o, const OptionInput& in) {
          const double v = std::trunc(toNonNegative(in.value));
@@ -364,13 +452,19 @@ const OptionSpec kOptions[] = {
          o.maxParseIterations = static_cast<long long>(v);
      },
      FR_WRITE(num(static_cast<double>(o.maxParseIterations))), nullptr},
-    {"Odd_Field", "UO", OptionType::Bool, "off", "Start field rendering on the odd field (accepted, as Field_Render).",
-     [](RenderOptions& o, const OptionInput& in) { o.oddField = toBool(in); }, FR_WRITE(onOff(o.oddField)), nullptr},
+    {"Odd_Field", "UO", OptionType::Bool, "off",
+     "Start field rendering on the odd field (accepted, as Field_Render).",
+     [](RenderOptions& o, const OptionInput& in) { o.oddField = toBool(in); },
+     FR_WRITE(onOff(o.oddField)), nullptr},
     {"Output_Alpha", "UA", OptionType::Bool, "off", "Write an alpha channel (transparency mask).",
-     [](RenderOptions& o, const OptionInput& in) { o.outputAlpha = toBool(in); }, FR_WRITE(onOff(o.outputAlpha)),
-     [](const RenderOptions& o) -> const char* { return o.outputAlpha ? "alpha channel output" : nullptr; }},
+     [](RenderOptions& o, const OptionInput& in) { o.outputAlpha = toBool(in); },
+     FR_WRITE(onOff(o.outputAlpha)),
+     [](const RenderOptions& o) -> const char* {
+         return o.outputAlpha ? "alpha channel output" : nullptr;
+     }},
     {"Output_File_Name", "O", OptionType::Path, "scene name",
-     "Output image file, or a folder (ending in /) to put it in. Frame numbers are appended in animations; the "
+     "Output image file, or a folder (ending in /) to put it in. Frame numbers are appended in "
+     "animations; the "
      "file type's extension is added unless the name ends with it.",
      [](RenderOptions& o, const OptionInput& in) { o.outputFile = trimQuotes(in.value); },
      FR_WRITE(quoted(o.outputFile)),
@@ -378,7 +472,8 @@ const OptionSpec kOptions[] = {
          return o.outputFile == "-" ? "writing the image to standard output (+O-)" : nullptr;
      }},
     {"Output_File_Type", "F", OptionType::FileType, "N",
-     "File type: N png, P ppm, T tga, C compressed tga, E exr, H hdr, J jpeg, B bmp; optional bit depth (+FN16). "
+     "File type: N png, P ppm, T tga, C compressed tga, E exr, H hdr, J jpeg, B bmp; optional bit "
+     "depth (+FN16). "
      "As a switch, +F[type] also turns file output on and -F off.",
      [](RenderOptions& o, const OptionInput& in) {
          if (in.fromSwitch) {
@@ -389,9 +484,10 @@ const OptionSpec kOptions[] = {
      },
      FR_WRITE(std::string(1, o.outputType)), nullptr},
     {"Output_To_File", "", OptionType::Bool, "on", "Write the image to a file.",
-     [](RenderOptions& o, const OptionInput& in) { o.outputToFile = toBool(in); }, FR_WRITE(onOff(o.outputToFile)),
-     nullptr},
-    {"Pause_When_Done", "P", OptionType::Bool, "off", "Wait for a key at the end (accepted; no effect in batch).",
+     [](RenderOptions& o, const OptionInput& in) { o.outputToFile = toBool(in); },
+     FR_WRITE(onOff(o.outputToFile)), nullptr},
+    {"Pause_When_Done", "P", OptionType::Bool, "off",
+     "Wait for a key at the end (accepted; no effect in batch).",
      [](RenderOptions& o, const OptionInput& in) { o.pauseWhenDone = toBool(in); },
      FR_WRITE(onOff(o.pauseWhenDone)), nullptr},
     FR_HOOK(ShellHook::PostFrame, "Post_Frame", "after each frame"),
@@ -399,15 +495,17 @@ const OptionSpec kOptions[] = {
     FR_HOOK(ShellHook::PreFrame, "Pre_Frame", "before each frame"),
     FR_HOOK(ShellHook::PreScene, "Pre_Scene", "before the first frame"),
     {"Quality", "Q", OptionType::Int, "9", "Render quality 0..11.",
-     [](RenderOptions& o, const OptionInput& in) { o.quality = std::clamp(toInt(in.value), 0, 11); },
-     FR_WRITE(num(o.quality)),
-     [](const RenderOptions& o) -> const char* {
-         return o.quality < 2 ? "Quality below 2 (+Q0, +Q1 show quick colours only)" : nullptr;
-     }},
+     [](RenderOptions& o, const OptionInput& in) {
+         o.quality = std::clamp(toInt(in.value), 0, 11);
+     },
+     FR_WRITE(num(o.quality))},
     {"Read_Path", "", OptionType::PathList, "",
-     "Another folder (with its subfolders) scenes may read from; accumulates. Not from INI files named on the "
+     "Another folder (with its subfolders) scenes may read from; accumulates. Not from INI files "
+     "named on the "
      "command line.",
-     [](RenderOptions& o, const OptionInput& in) { o.readPaths.emplace_back(trimQuotes(in.value)); },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.readPaths.emplace_back(trimQuotes(in.value));
+     },
      [](const RenderOptions& o) {
          Lines lines;
          for (const auto& p : o.readPaths) lines.push_back(quoted(p.string()));
@@ -416,27 +514,39 @@ const OptionSpec kOptions[] = {
      nullptr},
     FR_STREAM(TextStream::Render, "Render", "R", "render progress"),
     {"Render_Block_Size", "BS", OptionType::Int, "32",
-     "Side of the square pixel blocks rendered at once; anti-aliasing depends on it as in povray (4..).",
-     [](RenderOptions& o, const OptionInput& in) { o.renderBlockSize = std::max(toInt(in.value), 4); },
+     "Side of the square pixel blocks rendered at once; anti-aliasing depends on it as in povray "
+     "(4..).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.renderBlockSize = std::max(toInt(in.value), 4);
+     },
      FR_WRITE(num(o.renderBlockSize)), nullptr},
-    {"Sampling_Method", "AM", OptionType::Int, "1", "Anti-aliasing method: 1 non-recursive, 2 adaptive.",
-     [](RenderOptions& o, const OptionInput& in) { o.samplingMethod = std::clamp(toInt(in.value), 1, 2); },
+    {"Sampling_Method", "AM", OptionType::Int, "1",
+     "Anti-aliasing method: 1 non-recursive, 2 adaptive.",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.samplingMethod = std::clamp(toInt(in.value), 1, 2);
+     },
      FR_WRITE(num(o.samplingMethod)), nullptr},
     {"Start_Column", "SC", OptionType::Window, "1",
-     "First column of the render window: a pixel number, or a fraction of the width below 1.0. Pixels outside "
+     "First column of the render window: a pixel number, or a fraction of the width below 1.0. "
+     "Pixels outside "
      "the window are written black (alpha 0).",
      [](RenderOptions& o, const OptionInput& in) { o.startColumn = toNonNegative(in.value); },
      FR_WRITE(num(o.startColumn)), nullptr},
     {"Shard_Count", "SHC", OptionType::Int, "1",
-     "Split the frames among this many processes (Slurm array tasks, Kubernetes Job indexes): each renders every "
-     "Shard_Count-th frame of the (subset, stepped) sequence, starting at Shard_Index, into the same folder, with "
-     "its own journal (+C resumes it). Refused for scenes whose frames pass state through files (#fopen write).",
+     "Split the frames among this many processes (Slurm array tasks, Kubernetes Job indexes): each "
+     "renders every "
+     "Shard_Count-th frame of the (subset, stepped) sequence, starting at Shard_Index, into the "
+     "same folder, with "
+     "its own journal (+C resumes it). Refused for scenes whose frames pass state through files "
+     "(#fopen write).",
      [](RenderOptions& o, const OptionInput& in) { o.shardCount = toPositiveInt(in.value); },
      FR_WRITE(num(o.shardCount)), nullptr},
-    {"Shard_Index", "SHI", OptionType::Int, "0", "Which shard this process renders: 0 to Shard_Count - 1.",
+    {"Shard_Index", "SHI", OptionType::Int, "0",
+     "Which shard this process renders: 0 to Shard_Count - 1.",
      [](RenderOptions& o, const OptionInput& in) {
          o.shardIndex = toInt(in.value);
-         if (o.shardIndex < 0) throw std::invalid_argument(fmt::format("'{}' must not be negative", in.value));
+         if (o.shardIndex < 0)
+             throw std::invalid_argument(fmt::format("'{}' must not be negative", in.value));
      },
      FR_WRITE(num(o.shardIndex)), nullptr},
     {"Start_Row", "SR", OptionType::Window, "1",
@@ -446,17 +556,27 @@ const OptionSpec kOptions[] = {
     FR_STREAM(TextStream::Statistic, "Statistic", "S", "statistics"),
     {"Subset_End_Frame", "EF", OptionType::Float, "final frame",
      "Render only frames up to this one; a value below 1.0 is a fraction of the frame count.",
-     [](RenderOptions& o, const OptionInput& in) { o.subsetEndFrame = toFloat(in.value); o.subsetEndSet = true; },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.subsetEndFrame = toFloat(in.value);
+         o.subsetEndSet = true;
+     },
      FR_WRITE(num(o.subsetEndFrame)), nullptr},
     {"Subset_Start_Frame", "SF", OptionType::Float, "initial frame",
      "Render only frames from this one; a value below 1.0 is a fraction of the frame count.",
-     [](RenderOptions& o, const OptionInput& in) { o.subsetStartFrame = toFloat(in.value); o.subsetStartSet = true; },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.subsetStartFrame = toFloat(in.value);
+         o.subsetStartSet = true;
+     },
      FR_WRITE(num(o.subsetStartFrame)), nullptr},
-    {"Test_Abort_Count", "", OptionType::Int, "1", "Pixels between checks for a user abort (accepted).",
-     [](RenderOptions& o, const OptionInput& in) { o.testAbortCount = std::max(toInt(in.value), 1); },
+    {"Test_Abort_Count", "", OptionType::Int, "1",
+     "Pixels between checks for a user abort (accepted).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.testAbortCount = std::max(toInt(in.value), 1);
+     },
      FR_WRITE(num(o.testAbortCount)), nullptr},
     {"Test_Abort", "X", OptionType::Bool, "off",
-     "Check for a user abort while rendering; +X100 also sets the count (accepted: frameray always stops on "
+     "Check for a user abort while rendering; +X100 also sets the count (accepted: frameray always "
+     "stops on "
      "Ctrl-C within 2 s).",
      [](RenderOptions& o, const OptionInput& in) {
          if (in.fromSwitch) {
@@ -472,21 +592,25 @@ const OptionSpec kOptions[] = {
      FR_WRITE(onOff(o.testAbort)), nullptr},
     FR_HOOK(ShellHook::UserAbort, "User_Abort", "when the run is interrupted (Ctrl-C)"),
     {"Verbose", "V", OptionType::Bool, "on", "Progress and statistics messages.",
-     [](RenderOptions& o, const OptionInput& in) { o.verbose = toBool(in); }, FR_WRITE(onOff(o.verbose)), nullptr},
+     [](RenderOptions& o, const OptionInput& in) { o.verbose = toBool(in); },
+     FR_WRITE(onOff(o.verbose)), nullptr},
     {"Version", "MV", OptionType::Float, "3.7", "Language version assumed before any #version.",
-     [](RenderOptions& o, const OptionInput& in) { o.version = toFloat(in.value); }, FR_WRITE(num(o.version)),
-     nullptr},
+     [](RenderOptions& o, const OptionInput& in) { o.version = toFloat(in.value); },
+     FR_WRITE(num(o.version)), nullptr},
     FR_STREAM(TextStream::Warning, "Warning", "W", "warning"),
     {"Width", "W", OptionType::Int, "800", "Image width in pixels.",
-     [](RenderOptions& o, const OptionInput& in) { o.width = toPositiveInt(in.value); }, FR_WRITE(num(o.width)),
-     nullptr},
+     [](RenderOptions& o, const OptionInput& in) { o.width = toPositiveInt(in.value); },
+     FR_WRITE(num(o.width)), nullptr},
     {"Work_Threads", "WT", OptionType::Int, "cores", "Render threads (default: every core).",
      [](RenderOptions& o, const OptionInput& in) { o.workThreads = toPositiveInt(in.value); },
      FR_WRITE(num(o.workThreads)), nullptr},
     {"Write_Path", "", OptionType::PathList, "",
-     "Another folder (with its subfolders) scenes may write to (#fopen write/append); accumulates. Not from INI "
+     "Another folder (with its subfolders) scenes may write to (#fopen write/append); accumulates. "
+     "Not from INI "
      "files named on the command line.",
-     [](RenderOptions& o, const OptionInput& in) { o.writePaths.emplace_back(trimQuotes(in.value)); },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.writePaths.emplace_back(trimQuotes(in.value));
+     },
      [](const RenderOptions& o) {
          Lines lines;
          for (const auto& p : o.writePaths) lines.push_back(quoted(p.string()));
@@ -501,7 +625,9 @@ const OptionSpec kOptions[] = {
 
 }  // namespace
 
-std::span<const OptionSpec> optionTable() { return kOptions; }
+std::span<const OptionSpec> optionTable() {
+    return kOptions;
+}
 
 const OptionSpec* findSwitch(std::string_view body, std::string_view& valueOut) {
     const OptionSpec* best = nullptr;
@@ -523,12 +649,16 @@ const OptionSpec* findIniKey(std::string_view key) {
 std::string helpText() {
     std::string out =
         "usage: frameray [options] [scene.pov] [file.ini[Section]] ...\n"
-        "Options are INI keys (Key=Value, in INI files or on the command line) or switches (+X/-X).\n"
-        "--list-frames prints the frames the options ask for (number, clock, file) without rendering.\n"
-        "Read in order: povray.ini ($POVINI, ./povray.ini, ~/.povray/3.7/povray.ini, /etc/povray/3.7/povray.ini: "
+        "Options are INI keys (Key=Value, in INI files or on the command line) or switches "
+        "(+X/-X).\n"
+        "--list-frames prints the frames the options ask for (number, clock, file) without "
+        "rendering.\n"
+        "Read in order: povray.ini ($POVINI, ./povray.ini, ~/.povray/3.7/povray.ini, "
+        "/etc/povray/3.7/povray.ini: "
         "the first found), then the arguments.\n\n";
     for (const OptionSpec& o : kOptions) {
-        const std::string sw = o.switchName.empty() ? std::string() : fmt::format("+{}", o.switchName);
+        const std::string sw =
+            o.switchName.empty() ? std::string() : fmt::format("+{}", o.switchName);
         out += fmt::format("  {:<22} {:<9} {}", o.iniKey, sw, o.help);
         if (!o.defaultText.empty()) out += fmt::format(" [default: {}]", o.defaultText);
         out += '\n';
@@ -539,7 +669,8 @@ std::string helpText() {
 std::string optionsMarkdown() {
     std::string out = "| INI key | switch | default | meaning |\n|---|---|---|---|\n";
     for (const OptionSpec& o : kOptions) {
-        const std::string sw = o.switchName.empty() ? std::string() : fmt::format("`+{}`", o.switchName);
+        const std::string sw =
+            o.switchName.empty() ? std::string() : fmt::format("`+{}`", o.switchName);
         out += fmt::format("| `{}` | {} | {} | {} |\n", o.iniKey, sw, o.defaultText, o.help);
     }
     return out;
@@ -549,7 +680,8 @@ std::string createIniText(const RenderOptions& options) {
     std::string out;
     for (const OptionSpec& o : kOptions) {
         if (!options.explicitlySet.count(std::string(o.iniKey))) continue;
-        for (const std::string& value : o.write(options)) out += fmt::format("{}={}\n", o.iniKey, value);
+        for (const std::string& value : o.write(options))
+            out += fmt::format("{}={}\n", o.iniKey, value);
     }
     return out;
 }
@@ -557,7 +689,8 @@ std::string createIniText(const RenderOptions& options) {
 std::string firstUnsupported(const RenderOptions& options) {
     for (const OptionSpec& o : kOptions) {
         if (!o.unsupported) continue;
-        if (const char* what = o.unsupported(options)) return fmt::format("{} ({})", o.iniKey, what);
+        if (const char* what = o.unsupported(options))
+            return fmt::format("{} ({})", o.iniKey, what);
     }
     return {};
 }

@@ -71,7 +71,8 @@ Tracer::Tracer(const World& world, int quality)
       scene_(world.scene()),
       atmosphere_(world.scene(), quality >= 9),
       lighting_(LightingQuality::forQuality(quality)),
-      secondaryRays_(quality >= 8) {
+      secondaryRays_(quality >= 8),
+      quickColours_(quality < 2) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
     // in reverse declaration order, so the innermost (last listed) is the
@@ -100,9 +101,33 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
         return sky;
     }
+    if (quickColours_) {
+        const scene::Object& obj = *hit.object;
+        return quickColour(obj.texture ? *obj.texture : defaultTexture(), ray.at(hit.t));
+    }
     RGB color = shade(ray, hit, state, counts);
     if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
     return atmosphere_.along(ray, hit.t, Color(color)).rgb;
+}
+
+// +Q0/+Q1 (povray 3.7, measured): every surface in the colour of its
+// bottom texture layer's pigment, or that pigment's quick_color, with no
+// lighting, shadows, transparency or reflection; a patterned texture
+// (texture_map, checker of textures, tiles) shows its entries' colours.
+RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p) const {
+    const scene::Texture& bottom = top.layersBelow.empty() ? top : *top.layersBelow.back();
+    if (bottom.map) {
+        RGB color(0.0);
+        const Vec3 q = bottom.transform.inversePoint(p);
+        const Vec3 entry = bottom.map->entryPoint(q);
+        bottom.map->visit(
+            q, [&](const scene::Texture& t, double w) { color += quickColour(t, entry) * w; });
+        return color;
+    }
+    if (!bottom.pigment) return RGB(0.0);
+    const scene::Pigment& pigment = *bottom.pigment;
+    if (pigment.quickColor()) return pigment.quickColor()->rgb;
+    return pigment.at(bottom.transform.inversePoint(p)).rgb;
 }
 
 // Ambient, emission, diffuse and highlights of one texture layer whose

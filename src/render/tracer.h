@@ -79,17 +79,21 @@ class Tracer {
     // p is where the surface is lit, texP where the texture is evaluated
     // (they differ inside a warped texture map).
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
-                     const Vec3& p, const Vec3& texP, const Vec3& viewDir, const Vec3& geometric, const State& state,
-                     RayCounts& counts) const;
+                     const Vec3& p, const Vec3& texP, const Vec3& viewDir, const Vec3& geometric,
+                     const State& state, RayCounts& counts) const;
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                    const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
                    RayCounts& counts) const;
+
+    // +Q0/+Q1: the colour of texture `top` at p with no lighting at all.
+    RGB quickColour(const scene::Texture& top, const Vec3& p) const;
 
     const World& world_;
     const scene::Scene& scene_;
     AtmosphereView atmosphere_;
     LightingQuality lighting_;
     bool secondaryRays_;
+    bool quickColours_;           // +Q0, +Q1
     InteriorStack cameraInside_;  // regions containing the camera
 };
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "scene/color_map.h"
@@ -56,6 +57,9 @@ class Pigment {
         kind_ = Kind::ImageMapped;
     }
     const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
+    // quick_color: what +Q0/+Q1 show instead of the pigment.
+    void setQuickColor(const Color& c) { quickColor_ = c; }
+    const std::optional<Color>& quickColor() const { return quickColor_; }
     // `average`: the pigment map's entries are averaged, weighted by their
     // values, instead of picked by the pattern.
     void setAverage() { average_ = true; }
@@ -72,6 +76,7 @@ class Pigment {
   private:
     Kind kind_ = Kind::Solid;
     Color color_;  // POV-Ray's default pigment is black
+    std::optional<Color> quickColor_;
     Pattern pattern_;
     std::vector<std::shared_ptr<const Pigment>> list_;
     ColorMap colorMap_;

@@ -166,7 +166,7 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
         }
         if (item.is(Keyword::kw_quick_color) || item.is(Keyword::kw_quick_colour)) {
             next();
-            parseColor();
+            result.setQuickColor(parseColor());
             continue;
         }
         if (parsePigmentPatternItem(result)) continue;
