@@ -168,10 +168,6 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
     copy->noReflection |= flags.noReflection;
     copy->doubleIlluminate |= flags.doubleIlluminate;
     for (ObjectRef& child : copy->children) child = inherit(child, copy->texture, *copy);
-    copy->childBounds.clear();
-    if (copy->isCsg() && copy->op == CsgOp::Union)
-        for (const ObjectRef& child : copy->children)
-            copy->childBounds.push_back(child->surfaceBounds().padded());
     return copy;
 }
 

@@ -154,10 +154,7 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind,
     if (!shape && plain && op == CsgOp::Union) {
         // The nearest child hit; no inside tests needed.
         bool found = false;
-        const bool cull = childBounds.size() == children.size();
-        for (size_t i = 0; i < children.size(); ++i) {
-            const ObjectRef& child = children[i];
-            if (cull && !childBounds[i].meets(ray, tMin, tMax)) continue;
+        for (const ObjectRef& child : children) {
             SurfaceHit h;
             if (child->firstHit(ray, tMin, tMax, kind, h)) {
                 hit = h;

@@ -69,11 +69,6 @@ struct Object {
     bool noReflection = false;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
 
-    // A union placed in the scene: each child's padded surface bounds, so
-    // firstHit skips the children a ray cannot meet (set by
-    // csg::resolveInheritance; empty: test every child).
-    std::vector<Bounds> childBounds;
-
     bool isCsg() const { return !shape; }
 
     // Applies `t` after everything so far: to the primitive's transform or

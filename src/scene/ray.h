@@ -46,9 +46,7 @@ struct Bounds {
     // Narrows [tMin, tMax] to where the ray is inside the box; false when
     // that is empty (a slab test; infinite extents never narrow it).
     bool clip(const Ray& ray, double& tMin, double& tMax) const;
-    // Whether the ray passes through the box for some t in [tMin, tMax].
-    bool meets(const Ray& ray, double tMin, double tMax) const { return clip(ray, tMin, tMax); }
-    // Grown by a relative margin, so rounding in meets() never rejects a
+    // Grown by a relative margin, so rounding in clip() never rejects a
     // surface that touches the box.
     Bounds padded() const;
 };
