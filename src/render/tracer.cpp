@@ -149,7 +149,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-    for (const scene::Light& light : scene_.lights) {
+    for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
@@ -265,8 +265,8 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
             c.beyond.push(region);
         const double own = region.interior ? region.interior->ior : 1.0;
         c.iorBeyond = leaving ? c.beyond.ior() : own;
-        c.fresnelRatio = leaving && state.inside.size() > 1 ? c.iorHere / own
-                                                            : c.iorBeyond / c.iorHere;
+        c.fresnelRatio =
+            leaving && state.inside.size() > 1 ? c.iorHere / own : c.iorBeyond / c.iorHere;
         crossing = c;
         return *crossing;
     };
