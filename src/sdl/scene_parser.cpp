@@ -143,6 +143,14 @@ ObjectPtr Interpreter::parseObject() {
     std::optional<scene::Texture> texture;
     switch (kind.kw) {
         case Keyword::kw_object: {
+            // object { OBJECT ... } wraps an object statement as povray does
+            // (object { sphere { ... } translate x }).
+            if (isObjectStart(peek()) && !peek().isIdentifier()) {
+                *obj = *parseObject();
+                if (obj->texture) texture = *obj->texture;
+                obj->texture.reset();
+                break;
+            }
             const Token id = next();
             if (!id.isIdentifier())
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
@@ -419,6 +427,14 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
             return true;
+        case Keyword::kw_material: {
+            // The material's texture replaces the object's as a texture
+            // block would; its interior replaces the object's.
+            const MaterialPtr m = parseMaterial();
+            if (m->texture) editTexture() = *m->texture;
+            if (m->interior) obj.interior = m->interior;
+            return true;
+        }
         case Keyword::kw_inverse:
             next();
             obj.inverse = !obj.inverse;
