@@ -4,7 +4,8 @@
 // parameter lists with a trailing comma or a missing comma (shapes3.inc),
 // colour-map bands without the comma ([a b color C1 color C2]: woodmaps.inc,
 // stars.inc), colour maps with entries out of order (woods.inc T_Wood32),
-// object { OBJECT } and declared materials.
+// object { OBJECT }, declared materials and an array declaration followed
+// by a directive.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #fopen Out "include_file_syntax.out" write
@@ -44,4 +45,15 @@ cd";
 #declare M2 = material { M }
 #declare O = sphere { 0, 1 material { M2 } translate y }
 #write (Out, "object with a declared material ", max_extent(O).y, "\n")
+
+// An array declared without ';' or initializer, then assigned by the
+// next line's directive (shapes.inc's HF_Square, with a #local array).
+#declare Arr = array[2][2]
+#declare Arr[1][1] = 5;
+#macro LocalArray()
+    #local L = array[3]
+    #declare L[2] = 7;
+    L[2]
+#end
+#write (Out, "array element after the declaration ", Arr[1][1], " ", LocalArray(), "\n")
 #fclose Out
