@@ -1,5 +1,6 @@
-// material { }: a texture and an interior carried together, as the
-// include files declare their glasses (textures.inc M_Glass and others).
+// `material { [MATERIAL_IDENTIFIER] [texture { } ...] [interior { }]
+// [TRANSFORMATIONS] }`: a texture and an interior given to an object
+// together (povray 3.7). Transformations inside move the texture.
 #include <fmt/format.h>
 
 #include "sdl/interpreter.h"
@@ -7,40 +8,46 @@
 namespace frameray::sdl {
 
 MaterialPtr Interpreter::parseMaterial() {
-    next();  // material
+    const Token keyword = next();  // material
     expect(Sym::LBrace, "'{' after 'material'");
     MaterialValue m;
-    if (peek().isIdentifier()) {
-        const Token id = next();
-        const Value v = identifierValue(id);
+    const Token first = peek();
+    if (first.isIdentifier()) {
+        next();
+        const Value v = identifierValue(first);
         const auto* mp = std::get_if<MaterialPtr>(&v);
-        if (!mp) fail(id, fmt::format("'{}' is a {}, not a material", id.text, valueKindName(v)));
+        if (!mp)
+            fail(first, fmt::format("'{}' is a {}, not a material", first.text, valueKindName(v)));
         m = **mp;
     }
+    std::optional<scene::Texture> texture;
+    if (m.texture) texture = *m.texture;
     for (;;) {
         if (accept(Sym::RBrace)) break;
         Transform step;
         if (parseTransformation(step)) {
-            // Moves the texture given so far; an interior has nothing that
-            // a transformation changes until media exist.
-            if (m.texture) {
-                scene::Texture moved = *m.texture;
-                moved.transformBy(step);
-                m.texture = std::make_shared<const scene::Texture>(std::move(moved));
-            }
+            if (texture) texture->transformBy(step);
             continue;
         }
         const Token t = peek();
-        if (t.is(Keyword::kw_texture)) {
-            m.texture = std::make_shared<const scene::Texture>(parseLayeredTextures());
-        } else if (t.is(Keyword::kw_interior)) {
-            m.interior = parseInterior(m.interior.get());
-        } else {
-            fail(t, fmt::format("expected texture, interior, a transformation or '}}' in material, "
-                                "found {}",
-                                describeToken(t)));
+        switch (t.kw) {
+            case Keyword::kw_texture:
+                // A material's texture starts afresh, as an object's first
+                // texture block does.
+                texture = parseLayeredTextures(nullptr);
+                break;
+            case Keyword::kw_interior:
+                m.interior = parseInterior(m.interior.get());
+                break;
+            case Keyword::kw_interior_texture:
+                unsupported(t, "interior_texture");
+            default:
+                fail(t, fmt::format("expected texture, interior or a transformation in '{}', "
+                                    "found {}",
+                                    keyword.text, describeToken(t)));
         }
     }
+    if (texture) m.texture = std::make_shared<const scene::Texture>(std::move(*texture));
     return std::make_shared<const MaterialValue>(std::move(m));
 }
 

@@ -428,10 +428,9 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             obj.interior = parseInterior(obj.interior.get());
             return true;
         case Keyword::kw_material: {
-            // The material's texture replaces the object's as a texture
-            // block would; its interior replaces the object's.
+            // Its texture replaces the object's; its interior too.
             const MaterialPtr m = parseMaterial();
-            if (m->texture) editTexture() = *m->texture;
+            if (m->texture) texture = *m->texture;
             if (m->interior) obj.interior = m->interior;
             return true;
         }

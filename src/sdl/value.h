@@ -53,8 +53,9 @@ using FogPtr = std::shared_ptr<const scene::Fog>;
 using SkySpherePtr = std::shared_ptr<const scene::SkySphere>;
 using InteriorPtr = std::shared_ptr<const scene::Interior>;
 using NormalPtr = std::shared_ptr<const scene::Normal>;  // null: normal { } without a pattern
-// material { texture { } interior { } }: what an object's texture and
-// interior become; either may be absent (null).
+
+// `material { texture { } interior { } }`: what it gives an object. An
+// unset part leaves the object's own.
 struct MaterialValue {
     TexturePtr texture;
     InteriorPtr interior;
