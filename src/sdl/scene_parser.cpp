@@ -144,6 +144,14 @@ ObjectPtr Interpreter::parseObject() {
     std::optional<scene::Texture> texture;
     switch (kind.kw) {
         case Keyword::kw_object: {
+            // object { OBJECT ... } wraps an object statement as povray does
+            // (object { sphere { ... } translate x }).
+            if (isObjectStart(peek()) && !peek().isIdentifier()) {
+                *obj = *parseObject();
+                if (obj->texture) texture = *obj->texture;
+                obj->texture.reset();
+                break;
+            }
             const Token id = next();
             if (!id.isIdentifier())
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
