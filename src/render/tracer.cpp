@@ -153,23 +153,33 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
-        // A light behind the surface only reaches double_illuminate
-        // objects: their far side is lit as if it faced the light.
+        // A light behind the surface reaches double_illuminate objects,
+        // whose far side is lit as if it faced the light, and surfaces
+        // with a back-side diffuse value (`diffuse A, B`), which take B of
+        // it with no highlights (measured: double_illuminate wins when
+        // both are given).
         Vec3 ln = n;
         double cosIncidence = dot(n, toLight);
+        double diffuse = fin.diffuse;
+        bool fromBehind = false;
         if (cosIncidence <= 0 && obj.doubleIlluminate) {
             ln = -n;
             cosIncidence = -cosIncidence;
+        } else if (cosIncidence < 0 && fin.diffuseBack > 0) {
+            cosIncidence = -cosIncidence;
+            diffuse = fin.diffuseBack;
+            fromBehind = true;
         }
         if (cosIncidence <= 0) continue;
         const RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
         if (lightColor.isBlack()) continue;
-        if (fin.diffuse > 0) {
+        if (diffuse > 0) {
             const double intensity =
-                fin.diffuse *
+                diffuse *
                 (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
             color += lightColor * lit * intensity;
         }
+        if (fromBehind) continue;
         // povray 3.7: shadowless lights give no highlights.
         if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless) {
             // Metallic highlights take the pigment's colour, except where

@@ -94,8 +94,17 @@ void Interpreter::parseIridescence(scene::Finish& f) {
 }
 
 void Interpreter::parseFinishItems(scene::Finish& f) {
+    // Which values of this block were given as albedos; they are converted
+    // to povray's coefficients when the block closes, with the block's
+    // final brilliance, roughness and phong_size (measured: the order of
+    // the items does not matter, and a finish that starts from a declared
+    // one does not convert its values again).
+    scene::FinishAlbedo albedo;
     for (;;) {
-        if (accept(Sym::RBrace)) return;
+        if (accept(Sym::RBrace)) {
+            scene::applyAlbedo(f, albedo);
+            return;
+        }
         const Token t = next();
         switch (t.kw) {
             case Keyword::kw_ambient:
@@ -105,13 +114,11 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 f.emission = parseColor().rgb;
                 break;
             case Keyword::kw_diffuse:
-                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
+                // diffuse [albedo] A [, B]: B lights the surface from lights
+                // on its far side (povray 3.7, measured: B * cos^brilliance).
+                albedo.diffuse = accept(Keyword::kw_albedo);
                 f.diffuse = parseFloat();
-                if (accept(Sym::Comma)) {
-                    f.diffuseBack = parseFloat();
-                    // povray 3.7's experimental light through the back side.
-                    if (f.diffuseBack != 0) unsupported(t, "diffuse with a back-side value");
-                }
+                f.diffuseBack = accept(Sym::Comma) ? parseFloat() : 0.0;
                 break;
             case Keyword::kw_brilliance:
                 f.brilliance = parseFloat();
@@ -123,14 +130,14 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 if (f.crand != 0) unsupported(t, "crand");
                 break;
             case Keyword::kw_phong:
-                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
+                albedo.phong = accept(Keyword::kw_albedo);
                 f.phong = parseFloat();
                 break;
             case Keyword::kw_phong_size:
                 f.phongSize = parseFloat();
                 break;
             case Keyword::kw_specular:
-                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
+                albedo.specular = accept(Keyword::kw_albedo);
                 f.specular = parseFloat();
                 break;
             case Keyword::kw_roughness:
