@@ -42,6 +42,19 @@ std::optional<Vec3> refractedDirection(const Vec3& d, const Vec3& n, double eta)
 // multiplied (1 when the interior does not fade).
 RGB interiorFade(const scene::Interior& interior, double distance);
 
+// irid's film thickness at world point p: thickness * (1 + turbulence *
+// (2 T(p) - 1)), T being povray's 5-octave noise turbulence (omega 0.5,
+// lambda 2) in world space (measured: exact to 1e-5 on a flat plane,
+// unmoved by the object's transformations).
+double iridFilmThickness(const scene::Iridescence& irid, const Vec3& p);
+
+// The tint irid gives light arriving at cosine cosLight and leaving toward
+// the viewer at cosine cosView, per channel of wavelength w:
+// 1 + amount * cos(2 pi thickness (cosView + cosLight) / w) (measured;
+// it scales diffuse light and highlights, not ambient).
+RGB iridTint(double amount, double thickness, const RGB& wavelength, double cosView,
+             double cosLight);
+
 // Per channel max(c, 0)^(1 / exponent): reflection { exponent E }.
 RGB reflectionExponent(const RGB& c, double exponent);
 

@@ -149,6 +149,8 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+    const bool irid = fin.irid.amount != 0;
+    const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
     for (const scene::Light& light : scene_.lights) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
@@ -171,8 +173,12 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
             fromBehind = true;
         }
         if (cosIncidence <= 0) continue;
-        const RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
+        RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
         if (lightColor.isBlack()) continue;
+        if (irid)
+            lightColor =
+                lightColor * iridTint(fin.irid.amount, filmThickness, scene_.globals.iridWavelength,
+                                      -dot(viewDir, n), cosIncidence);
         if (diffuse > 0) {
             const double intensity =
                 diffuse *

@@ -162,7 +162,6 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 break;
             case Keyword::kw_irid:
                 parseIridescence(f);
-                if (f.irid.amount != 0) unsupported(t, "irid");
                 break;
             case Keyword::kw_refraction:
                 // 2.0: refraction 1 turned bending on; 3.x bends whenever

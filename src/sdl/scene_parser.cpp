@@ -576,6 +576,9 @@ void Interpreter::parseGlobalSettings() {
             case Keyword::kw_ambient_light:
                 g.ambientLight = parseColor().rgb;
                 break;
+            case Keyword::kw_irid_wavelength:
+                g.iridWavelength = parseColor().rgb;
+                break;
             case Keyword::kw_number_of_waves:
             case Keyword::kw_noise_generator:
                 parseFloat();
