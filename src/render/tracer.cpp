@@ -48,9 +48,14 @@ bool InteriorStack::contains(const void* key) const {
     return false;
 }
 
-double InteriorStack::ior() const {
+double InteriorStack::ior(SpectralBand band) const {
     const Region* r = innermost();
-    return r && r->interior ? r->interior->ior : 1.0;
+    return r && r->interior ? dispersedIor(*r->interior, band) : 1.0;
+}
+
+bool InteriorStack::disperses() const {
+    const Region* r = innermost();
+    return r && r->interior && r->interior->dispersion != 1.0;
 }
 
 void InteriorStack::push(const Region& r) {
@@ -266,12 +271,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         if (crossing) return *crossing;
         const InteriorStack::Region region = regionOf(obj);
         const bool leaving = state.inside.contains(region.key);
-        Crossing c{state.inside, state.inside.ior(), 1.0};
+        Crossing c{state.inside, state.inside.ior(state.band), 1.0};
         if (leaving)
             c.beyond.remove(region.key);
         else
             c.beyond.push(region);
-        c.iorBeyond = leaving ? c.beyond.ior() : (region.interior ? region.interior->ior : 1.0);
+        c.iorBeyond = c.beyond.ior(state.band);
         crossing = c;
         return *crossing;
     };
@@ -282,6 +287,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         child.weight = state.weight * weightColor.maxComponent();
         child.kind = scene::RayKind::Reflection;
         child.inside = state.inside;
+        child.band = state.band;
         if (child.weight < adcBailout) return RGB(0.0);
         ++counts.reflection;
         return trace({p, reflected}, eps, child, counts);
@@ -341,6 +347,36 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     child.weight = state.weight * through.maxComponent();
     child.kind = state.kind;
     child.inside = c.beyond;
+    child.band = state.band;
+    if (state.band.white() && c.iorHere != c.iorBeyond &&
+        (state.inside.disperses() || c.beyond.disperses())) {
+        // A white ray bending into or out of a dispersive interior splits
+        // into the interior's bands, each bent by its own ior.
+        const InteriorStack& dispersive = c.beyond.disperses() ? c.beyond : state.inside;
+        const int bands = dispersive.innermost()->interior->dispersionSamples;
+        child.level = state.level + 1;
+        RGB sum(0.0);
+        for (int k = 0; k < bands; ++k) {
+            child.band = dispersionBand(k, bands);
+            const double eta = state.inside.ior(child.band) / c.beyond.ior(child.band);
+            const RGB weight = dispersionBandColour(k, bands);
+            if (const auto bent = refractedDirection(viewDir, n, eta)) {
+                ++counts.refraction;
+                sum += weight * trace({p, *bent}, eps, child, counts);
+            } else {
+                const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
+                               std::max(0.0, 1.0 - reflectivity.g),
+                               std::max(0.0, 1.0 - reflectivity.b));
+                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                State mirrored = child;
+                mirrored.kind = scene::RayKind::Reflection;
+                mirrored.inside = state.inside;
+                ++counts.reflection;
+                sum += weight * rest * trace({p, reflected}, eps, mirrored, counts);
+            }
+        }
+        return color + through * sum;
+    }
     if (c.iorHere == c.iorBeyond) {
         // Straight on: povray continues the ray at the same trace level
         // (measured: max_trace_level 2 sees through any number of

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "render/atmosphere.h"
+#include "render/dispersion.h"
 #include "render/lighting.h"
 #include "render/world.h"
 #include "util/color.h"
@@ -45,8 +46,11 @@ class InteriorStack {
 
     bool empty() const { return size_ == 0; }
     bool contains(const void* key) const;
-    // The ior of the innermost region, 1 outside everything.
-    double ior() const;
+    // The ior of the innermost region for a ray of `band` (dispersion.h),
+    // 1 outside everything.
+    double ior(SpectralBand band = {}) const;
+    // Whether the innermost region disperses light.
+    bool disperses() const;
     const Region* innermost() const { return size_ ? &regions_[size_ - 1] : nullptr; }
     void push(const Region& r);
     void remove(const void* key);
@@ -72,6 +76,7 @@ class Tracer {
         double weight = 1.0;  // how much this ray can still add to the pixel (adc_bailout)
         scene::RayKind kind = scene::RayKind::Camera;
         InteriorStack inside;
+        SpectralBand band;  // white until a dispersive interior splits the ray
     };
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;

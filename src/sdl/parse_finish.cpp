@@ -217,7 +217,6 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_dispersion:
                 in.dispersion = parseFloat();
-                if (in.dispersion != 1.0) unsupported(t, "dispersion");
                 break;
             case Keyword::kw_dispersion_samples:
                 in.dispersionSamples = static_cast<int>(parseFloat());
