@@ -78,6 +78,15 @@ RGB iridTint(double amount, double thickness, const RGB& wavelength, double cosV
     return {channel(wavelength.r), channel(wavelength.g), channel(wavelength.b)};
 }
 
+double fakeCaustics(const scene::Object& obj, const Vec3& p, const Vec3& dir) {
+    if (!obj.interior || obj.interior->caustics == 0) return 1.0;
+    Vec3 n = obj.normalAt(p);
+    if (dot(n, dir) > 0) n = -n;
+    if (obj.texture) n = obj.texture->perturbNormal(p, n);
+    const double c = std::fabs(dot(n, normalize(dir)));
+    return 1.0 + std::pow(c, 45.0 * obj.interior->caustics);
+}
+
 RGB reflectionExponent(const RGB& c, double exponent) {
     if (exponent == 1.0) return c;
     const double e = 1.0 / exponent;

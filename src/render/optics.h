@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "scene/interior.h"
+#include "scene/object.h"
 #include "scene/texture.h"
 #include "util/color.h"
 #include "util/vec3.h"
@@ -54,6 +55,15 @@ double iridFilmThickness(const scene::Iridescence& irid, const Vec3& p);
 // it scales diffuse light and highlights, not ambient).
 RGB iridTint(double amount, double thickness, const RGB& wavelength, double cosView,
              double cosLight);
+
+// povray's fake caustics: the factor by which light passing through the
+// surface of `obj` at p along `dir` (a shadow ray) is brightened,
+// 1 + |cos|^(45 * caustics), cos between dir and the surface's normal
+// turned against dir and then perturbed by the texture's normal (measured:
+// doubles the light head-on at any caustics value; a bumpy box matches
+// only with the normal turned before the perturbation). 1 when the
+// object's interior has no caustics.
+double fakeCaustics(const scene::Object& obj, const Vec3& p, const Vec3& dir);
 
 // Per channel max(c, 0)^(1 / exponent): reflection { exponent E }.
 RGB reflectionExponent(const RGB& c, double exponent);

@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "render/optics.h"
+
 namespace frameray::render {
 
 namespace {
@@ -288,7 +290,7 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
                               });
         }
         if (through.isBlack()) return RGB(0.0);
-        passed *= through;
+        passed *= through * fakeCaustics(obj, p, ray.direction);
         if (passed.isBlack()) return passed;
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);

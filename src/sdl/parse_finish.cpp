@@ -233,9 +233,6 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_caustics:
                 in.caustics = parseFloat();
-                // povray's fake caustics brighten shadow rays through the
-                // object; not simulated yet.
-                if (in.caustics != 0) unsupported(t, "caustics");
                 break;
             case Keyword::kw_media:
                 unsupported(t, "media");

@@ -180,9 +180,6 @@ TEST(FinishParser, AlbedoAndBackDiffuse) {
 TEST(FinishParser, EffectsNotSimulatedStop) {
     EXPECT_NE(parseError("sphere { 0, 1 finish { crand 0.1 } }").find("not supported yet: crand"),
               std::string::npos);
-    EXPECT_NE(
-        parseError("sphere { 0, 1 interior { caustics 0.5 } }").find("not supported yet: caustics"),
-        std::string::npos);
     EXPECT_EQ(
         parseError(
             "sphere { 0, 1 finish { crand 0 irid { 0 } } interior { dispersion 1 caustics 0 } }"),
