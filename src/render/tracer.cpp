@@ -1,11 +1,13 @@
 #include "render/tracer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <optional>
 
 #include "render/lighting.h"
 #include "render/optics.h"
+#include "util/sample_random.h"
 
 namespace frameray::render {
 
@@ -154,6 +156,13 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+    // crand: povray darkens each light's diffuse term by crand times a
+    // fresh random number in [0, 1) (measured: uniform, independent per
+    // light, scaled by the light and the pigment, not clamped). povray's
+    // numbers change from render to render; these come from the point, so
+    // frames stay deterministic.
+    std::optional<SampleRandom> grain;
+    if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
     for (const scene::Light& light : scene_.lights) {
@@ -185,9 +194,10 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
                 lightColor * iridTint(fin.irid.amount, filmThickness, scene_.globals.iridWavelength,
                                       -dot(viewDir, n), cosIncidence);
         if (diffuse > 0) {
-            const double intensity =
+            double intensity =
                 diffuse *
                 (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
+            if (grain) intensity -= fin.crand * grain->next();
             color += lightColor * lit * intensity;
         }
         if (fromBehind) continue;

@@ -125,9 +125,6 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 break;
             case Keyword::kw_crand:
                 f.crand = parseFloat();
-                // povray's crand draws a new random number per pixel;
-                // not simulated yet.
-                if (f.crand != 0) unsupported(t, "crand");
                 break;
             case Keyword::kw_phong:
                 albedo.phong = accept(Keyword::kw_albedo);

@@ -177,11 +177,22 @@ TEST(FinishParser, AlbedoAndBackDiffuse) {
     EXPECT_EQ(p.scene.objects[3]->texture->finish.diffuseBack, 0.0);
 }
 
-TEST(FinishParser, EffectsNotSimulatedStop) {
-    EXPECT_NE(parseError("sphere { 0, 1 finish { crand 0.1 } }").find("not supported yet: crand"),
-              std::string::npos);
-    EXPECT_EQ(
-        parseError(
-            "sphere { 0, 1 finish { crand 0 irid { 0 } } interior { dispersion 1 caustics 0 } }"),
-        "");
+TEST(FinishParser, EffectsParse) {
+    Parsed p(R"(
+        sphere { 0, 1 finish { crand 0.1 irid { 0.3 thickness 0.2 turbulence 0.4 } }
+                 interior { ior 1.5 dispersion 1.1 dispersion_samples 9 caustics 0.5 } }
+        sphere { 0, 1 interior { dispersion_samples 1 } }
+    )");
+    const auto& a = *p.scene.objects[0];
+    EXPECT_EQ(a.texture->finish.crand, 0.1);
+    EXPECT_EQ(a.texture->finish.irid.amount, 0.3);
+    EXPECT_EQ(a.texture->finish.irid.thickness, 0.2);
+    EXPECT_EQ(a.texture->finish.irid.turbulence, 0.4);
+    ASSERT_TRUE(a.interior);
+    EXPECT_EQ(a.interior->dispersion, 1.1);
+    EXPECT_EQ(a.interior->dispersionSamples, 9);
+    EXPECT_EQ(a.interior->caustics, 0.5);
+    EXPECT_EQ(p.scene.objects[1]->interior->dispersionSamples, 2);  // at least two bands
+    // irid needs its amount.
+    EXPECT_NE(parseError("sphere { 0, 1 finish { irid { thickness 0.2 } } }"), "");
 }
