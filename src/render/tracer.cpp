@@ -79,7 +79,8 @@ Tracer::Tracer(const World& world, int quality)
       atmosphere_(world.scene(), quality >= 9),
       lighting_(LightingQuality::forQuality(quality)),
       secondaryRays_(quality >= 8),
-      quickColours_(quality < 2) {
+      quickColours_(quality < 2),
+      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
     // in reverse declaration order, so the innermost (last listed) is the
@@ -92,10 +93,11 @@ Tracer::Tracer(const World& world, int quality)
     }
 }
 
-RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts) const {
+RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit) const {
     ++counts.camera;
     State state;
     state.inside = cameraInside_;
+    state.transmit = transmit;
     return trace(ray, 0.0, state, counts);
 }
 
@@ -104,6 +106,20 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     const InteriorStack::Region* medium = state.inside.innermost();
     const bool fades = medium && medium->interior && medium->interior->fades();
     if (!world_.intersect(ray, tMin, scene::kInfinity, hit, state.kind)) {
+        if (state.transmit) {
+            // Alpha output, seen straight or through surfaces: a 3.7
+            // scene's sky (sky sphere over background, whose default is
+            // clear) adds its opaque part and lets the rest through;
+            // before 3.7, and without #version, povray makes the
+            // background transparent black whatever it is (measured).
+            if (!opaqueSky_) {
+                *state.transmit = 1.0;
+                return RGB(0.0);
+            }
+            const Color sky = atmosphere_.miss(ray);
+            *state.transmit = sky.transmit;
+            return sky.rgb;
+        }
         RGB sky = atmosphere_.miss(ray).rgb;
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
         return sky;
@@ -239,10 +255,15 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // adc_bailout without giving its share to the others (measured: weights
     // under 1/255 leave no trace, at every threshold).
     RGB color(0.0);
+    double transmitSum = 0, partTransmit = 0;
+    State part = state;
+    if (state.transmit) part.transmit = &partTransmit;
     obj.visitTextures(p, own, [&](const scene::Texture& t, double w) {
         if (w * state.weight < scene_.globals.adcBailout) return;
-        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, state, counts) * w;
+        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, part, counts) * w;
+        transmitSum += partTransmit * w;
     });
+    if (state.transmit) *state.transmit = transmitSum;
     return color;
 }
 
@@ -257,14 +278,20 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const Vec3 q = top.transform.inversePoint(texP);
         const Vec3 entry = top.map->entryPoint(q);
         const scene::SurfaceInfo surface{geometric, viewDir};
+        double transmitSum = 0, entryTransmit = 0;
+        State part = state;
+        if (state.transmit) part.transmit = &entryTransmit;
         top.map->visit(
             q,
             [&](const scene::Texture& t, double w) {
-                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, state, counts) * w;
+                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, part, counts) * w;
+                transmitSum += entryTransmit * w;
             },
             &surface);
+        if (state.transmit) *state.transmit = transmitSum;
         return color;
     }
+    if (state.transmit) *state.transmit = 0.0;
     const double eps = selfHitEpsilon(p, ray);
     const bool spawns = secondaryRays_ && state.level < scene_.globals.maxTraceLevel;
     const double adcBailout = scene_.globals.adcBailout;
@@ -310,6 +337,9 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     // povray 3.7). Whatever all layers let through continues the ray.
     RGB color(0.0);
     RGB through(1.0);  // what the layers evaluated so far let through
+    // The same as one number, for alpha output: povray counts filter by
+    // the pigment's grey (0.297 R + 0.589 G + 0.114 B), measured.
+    double throughGrey = 1.0;
     bool transmits = false;
     RGB reflectivity(0.0);
     Vec3 n = geometric;
@@ -343,6 +373,9 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         transmits = surface.filter + surface.transmit > 0;
         if (!transmits) break;
         through = through * (pigment * surface.filter + RGB(surface.transmit));
+        throughGrey *=
+            surface.filter * (0.297 * pigment.r + 0.589 * pigment.g + 0.114 * pigment.b) +
+            surface.transmit;
         if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
         if (through.isBlack() && i + 1 < layerCount) {
             transmits = false;
@@ -358,6 +391,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     child.kind = state.kind;
     child.inside = c.beyond;
     child.band = state.band;
+    double childTransmit = 0;
+    if (state.transmit) child.transmit = &childTransmit;
+    // What the continued ray reports, through this surface's layers.
+    auto passTransmit = [&](double seen) {
+        if (state.transmit) *state.transmit = throughGrey * seen;
+    };
     if (state.band.white() && c.iorHere != c.iorBeyond &&
         (state.inside.disperses() || c.beyond.disperses())) {
         // A white ray bending into or out of a dispersive interior splits
@@ -366,13 +405,16 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const int bands = dispersive.innermost()->interior->dispersionSamples;
         child.level = state.level + 1;
         RGB sum(0.0);
+        double seen = 0;
         for (int k = 0; k < bands; ++k) {
             child.band = dispersionBand(k, bands);
             const double eta = state.inside.ior(child.band) / c.beyond.ior(child.band);
             const RGB weight = dispersionBandColour(k, bands);
             if (const auto bent = refractedDirection(viewDir, n, eta)) {
                 ++counts.refraction;
+                childTransmit = 0;
                 sum += weight * trace({p, *bent}, eps, child, counts);
+                seen += childTransmit / bands;
             } else {
                 const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
                                std::max(0.0, 1.0 - reflectivity.g),
@@ -381,10 +423,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
                 State mirrored = child;
                 mirrored.kind = scene::RayKind::Reflection;
                 mirrored.inside = state.inside;
+                mirrored.transmit = nullptr;
                 ++counts.reflection;
                 sum += weight * rest * trace({p, reflected}, eps, mirrored, counts);
             }
         }
+        passTransmit(seen);
         return color + through * sum;
     }
     if (c.iorHere == c.iorBeyond) {
@@ -394,10 +438,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         child.level = state.level;
         ++counts.transmission;
         color += through * trace({p, viewDir}, eps, child, counts);
+        passTransmit(childTransmit);
     } else if (const auto bent = refractedDirection(viewDir, n, c.iorHere / c.iorBeyond)) {
         child.level = state.level + 1;
         ++counts.refraction;
         color += through * trace({p, *bent}, eps, child, counts);
+        passTransmit(childTransmit);
     } else {
         // Total internal reflection: the ray is mirrored back inside with
         // what the reflection term did not already take, so the surface

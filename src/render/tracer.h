@@ -68,7 +68,10 @@ class Tracer {
     explicit Tracer(const World& world, int quality = 9);
 
     // Colour seen along a camera ray (working colour space, unclipped).
-    RGB traceCamera(const scene::Ray& ray, RayCounts& counts) const;
+    // With `transmit`, alpha output: the background counts as black and
+    // *transmit receives how much of it shows through (povray's
+    // transmittance: 1 - alpha).
+    RGB traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit = nullptr) const;
 
   private:
     struct State {
@@ -77,6 +80,11 @@ class Tracer {
         scene::RayKind kind = scene::RayKind::Camera;
         InteriorStack inside;
         SpectralBand band;  // white until a dispersive interior splits the ray
+        // With alpha output (+UA), where a camera ray and the rays that
+        // continue it through surfaces report how much of the background
+        // shows through (missed rays then see black); null otherwise and
+        // for reflected rays, which see the background as usual.
+        double* transmit = nullptr;
     };
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
@@ -99,6 +107,7 @@ class Tracer {
     LightingQuality lighting_;
     bool secondaryRays_;
     bool quickColours_;           // +Q0, +Q1
+    bool opaqueSky_;              // alpha output sees the sky's own transmit (3.7 scenes)
     InteriorStack cameraInside_;  // regions containing the camera
 };
 

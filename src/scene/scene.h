@@ -30,7 +30,9 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<std::shared_ptr<const Object>> objects;
     GlobalSettings globals;
-    Color background;  // black, fully opaque by default
+    // Black and clear by default: only alpha output (+UA) sees the clear
+    // part (measured: a 3.7 scene without background is transparent).
+    Color background{RGB(0.0), 0.0, 1.0};
     Atmosphere atmosphere;  // fogs, sky sphere, rainbows
     double languageVersion = 3.7;  // the #version in force at the end of parse
     bool versionDeclared = false;
