@@ -92,11 +92,11 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
     return ctx;
 }
 
-// What alpha output (+UA) does not handle yet: povray makes fog opaque in
-// ways not measured, and focal blur's samples would need transmittance.
+// What alpha output (+UA) does not handle yet: rainbows' transmittance is
+// not measured, and focal blur's samples would need it too.
 void refuseAlphaWith(const scene::Scene& scene) {
-    if (!scene.atmosphere.fogs.empty() || !scene.atmosphere.rainbows.empty())
-        throw std::runtime_error("not supported yet: alpha output (+UA) with fog or rainbow");
+    if (!scene.atmosphere.rainbows.empty())
+        throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
     if (scene.camera.blur.enabled())
         throw std::runtime_error("not supported yet: alpha output (+UA) with focal blur");
 }
