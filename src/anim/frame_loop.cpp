@@ -93,12 +93,10 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
 }
 
 // What alpha output (+UA) does not handle yet: rainbows' transmittance is
-// not measured, and focal blur's samples would need it too.
+// not measured.
 void refuseAlphaWith(const scene::Scene& scene) {
     if (!scene.atmosphere.rainbows.empty())
         throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
-    if (scene.camera.blur.enabled())
-        throw std::runtime_error("not supported yet: alpha output (+UA) with focal blur");
 }
 
 image::EncodedImage encode(const render::FrameImage& img, const render::GammaEncoding& gamma,

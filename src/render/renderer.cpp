@@ -40,6 +40,14 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                 // (x, y) = (i, j) is the centre of pixel column i, row j.
                 if (focalBlur) {
                     // Several rays per sample, each at a random spot of the pixel.
+                    if (settings.alpha)
+                        return focalBlur->sample(
+                            x + 0.5, y + 0.5,
+                            std::function<PixelSample(const scene::Ray&)>([&](const scene::Ray& r) {
+                                double transmit = 0;
+                                const RGB c = tracer.traceCamera(r, rays, &transmit);
+                                return PixelSample{c, transmit};
+                            }));
                     return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
                         return tracer.traceCamera(r, rays);
                     });
