@@ -55,7 +55,7 @@ struct GridSampler {
         if (dist == 0) return light.color;
         dir = dir / dist;
         ++shadowRays;
-        return light.color * world.shadowFilter({p, dir}, selfHit, dist, selfHit);
+        return light.color * world.shadowFilter({p, dir}, selfHit, dist, selfHit, &light);
     }
 };
 
@@ -142,7 +142,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
         light.isArea && quality.areaLights && (light.area.size1 > 1 || light.area.size2 > 1);
     if (!sampleArea) {
         ++shadowRays;
-        return color * world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit);
+        return color *
+               world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit, &light);
     }
 
     const scene::AreaLight& area = light.area;

@@ -45,6 +45,7 @@ class InteriorStack {
     static constexpr int kCapacity = 16;  // deeper nesting is treated as air
 
     bool empty() const { return size_ == 0; }
+    int size() const { return size_; }
     bool contains(const void* key) const;
     // The ior of the innermost region for a ray of `band` (dispersion.h),
     // 1 outside everything.

@@ -26,7 +26,7 @@ Vec3 AreaLight::gridOffset(double i, double j, const Vec3& a1, const Vec3& a2) c
         // within 1e-3 of the axes).
         u += 0.001;
         v += 0.001;
-        const double r = std::hypot(u, v);
+        const double r = std::sqrt(u * u + v * v);  // u, v are small: no overflow
         const double scale = std::max(std::fabs(u), std::fabs(v)) / r;
         u *= scale;
         v *= scale;

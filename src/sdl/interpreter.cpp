@@ -57,6 +57,7 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const InteriorPtr&) const { return "interior"; }
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
+        const char* operator()(const MaterialPtr&) const { return "material"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -579,6 +580,8 @@ Value Interpreter::parseRValue() {
             return parseFinish(nullptr);
         case Keyword::kw_interior:
             return parseInterior(nullptr);
+        case Keyword::kw_material:
+            return parseMaterial();
         case Keyword::kw_texture:
             return std::make_shared<const scene::Texture>(parseLayeredTextures(nullptr, true));
         case Keyword::kw_normal:

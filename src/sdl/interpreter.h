@@ -384,6 +384,8 @@ class Interpreter {
     void parseReflectionBlock(scene::Finish& finish);
     void parseIridescence(scene::Finish& finish);
     InteriorPtr parseInterior(const scene::Interior* base);
+    // --- material (parse_material.cpp) ---
+    MaterialPtr parseMaterial();
     // Whether the next token can start a float expression (for items whose
     // value is optional, such as `metallic` or `fresnel`).
     bool floatFollows();

@@ -419,6 +419,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
             return true;
+        case Keyword::kw_material: {
+            // Its texture replaces the object's; its interior too.
+            const MaterialPtr m = parseMaterial();
+            if (m->texture) texture = *m->texture;
+            if (m->interior) obj.interior = m->interior;
+            return true;
+        }
         case Keyword::kw_inverse:
             next();
             obj.inverse = !obj.inverse;
