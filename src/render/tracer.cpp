@@ -38,8 +38,9 @@ double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
 // The region a primitive's surface bounds: its interior, shared with the
 // other primitives of a CSG that inherited it, or the primitive itself.
 InteriorStack::Region regionOf(const scene::Object& primitive) {
-    if (primitive.interior) return {primitive.interior.get(), primitive.interior.get()};
-    return {&primitive, nullptr};
+    if (primitive.interior)
+        return {primitive.interior.get(), primitive.interior.get(), primitive.hollow};
+    return {&primitive, nullptr, primitive.hollow};
 }
 
 }  // namespace
@@ -53,6 +54,12 @@ bool InteriorStack::contains(const void* key) const {
 double InteriorStack::ior(SpectralBand band) const {
     const Region* r = innermost();
     return r && r->interior ? dispersedIor(*r->interior, band) : 1.0;
+}
+
+bool InteriorStack::allHollow() const {
+    for (int i = 0; i < size_; ++i)
+        if (!regions_[i].hollow) return false;
+    return true;
 }
 
 bool InteriorStack::disperses() const {
@@ -116,11 +123,16 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
             // on what the sky lets through.
             const Color sky =
                 opaqueSky_ ? atmosphere_.sky(normalize(ray.direction)) : Color(RGB(0.0), 0.0, 1.0);
-            const Color seen = atmosphere_.along(ray, kMissDepth / length(ray.direction), sky);
+            const Color seen = state.inside.allHollow()
+                                   ? atmosphere_.along(ray, kMissDepth / length(ray.direction), sky)
+                                   : sky;
             *state.transmit = seen.transmit;
             return seen.rgb;
         }
-        RGB sky = atmosphere_.miss(ray).rgb;
+        // No fog for a ray that leaves the scene inside an object that is
+        // not hollow (measured: the sky seen from inside an inverse plane).
+        RGB sky = state.inside.allHollow() ? atmosphere_.miss(ray).rgb
+                                           : atmosphere_.sky(normalize(ray.direction)).rgb;
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
         return sky;
     }
@@ -130,10 +142,11 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     }
     RGB color = shade(ray, hit, state, counts);
     if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
-    // povray leaves out fog and rainbows along rays inside objects
-    // (measured: a transmitting box 4 units deep in fog shows the fog
-    // only in front of it and beyond it).
-    if (!state.inside.empty()) return color;
+    // povray leaves out fog and rainbows along rays inside objects that
+    // are not hollow (measured: a transmitting box 4 units deep in fog
+    // shows the fog only in front of it and beyond it; inside a hollow
+    // sky sphere the fog stays).
+    if (!state.inside.allHollow()) return color;
     if (state.transmit) {
         const Color seen = atmosphere_.along(ray, hit.t, Color(color, 0.0, *state.transmit));
         *state.transmit = seen.transmit;

@@ -41,6 +41,7 @@ class InteriorStack {
     struct Region {
         const void* key = nullptr;  // identity: the Interior, or the primitive without one
         const scene::Interior* interior = nullptr;  // null: ior 1, no fading
+        bool hollow = false;                        // fog reaches rays inside
     };
     static constexpr int kCapacity = 16;  // deeper nesting is treated as air
 
@@ -52,6 +53,9 @@ class InteriorStack {
     double ior(SpectralBand band = {}) const;
     // Whether the innermost region disperses light.
     bool disperses() const;
+    // Whether every region is hollow (or there is none): povray computes
+    // fog only along such rays.
+    bool allHollow() const;
     const Region* innermost() const { return size_ ? &regions_[size_ - 1] : nullptr; }
     void push(const Region& r);
     void remove(const void* key);

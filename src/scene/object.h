@@ -68,6 +68,7 @@ struct Object {
     bool noImage = false;
     bool noReflection = false;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
+    bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
 
     bool isCsg() const { return !shape; }
 
