@@ -101,6 +101,16 @@ RGB subdivideAreaGrid(int size1, int size2, int adaptive,
     return block(block, 0, 0, size1 - 1, size2 - 1, 0);
 }
 
+LightsFor::LightsFor(const std::vector<scene::Light>& scene, const scene::Object& primitive) {
+    const scene::LightGroup* group = primitive.lightGroup.get();
+    if (!group) {
+        first_ = scene;
+        return;
+    }
+    if (group->globalLights) first_ = scene;
+    second_ = group->lights;
+}
+
 bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path) {
     if (light.parallel || light.kind == scene::LightKind::Cylinder) {
         // Light travels along the axis; the way back to it is the reverse

@@ -203,7 +203,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
-    for (const scene::Light& light : scene_.lights) {
+    for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
@@ -395,7 +395,18 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
             const Crossing& c = crossingInfo();
             reflectivity = reflectance(fin.reflection, cosView, c.fresnelRatio, pigment);
             if (!reflectivity.isBlack()) {
-                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                // A perturbed normal can send the mirror ray under the
+                // surface; povray then mirrors the view ray about the
+                // geometric normal if the ray is behind the perturbed one
+                // too, else mirrors the ray back above the surface
+                // (measured: textures.inc Brushed_Aluminum).
+                if (const double under = dot(reflected, geometric); under < 0) {
+                    if (dot(reflected, n) < 0)
+                        reflected = viewDir - geometric * (2 * dot(viewDir, geometric));
+                    else
+                        reflected = reflected - geometric * (2 * under);
+                }
                 color += reflectivity * reflectionExponent(spawnReflection(reflected, reflectivity),
                                                            fin.reflection.exponent);
             }
