@@ -376,7 +376,7 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         crossFading(*hit.object, p, hit.t);
         const RGB through = lightPassing(*hit.object, p);
         if (through.isBlack()) return RGB(0.0);
-        passed *= through;
+        passed *= through * fakeCaustics(*hit.object, p, ray.direction);
         if (passed.isBlack()) return passed;
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);

@@ -77,6 +77,7 @@ struct Object {
     bool noImage = false;
     bool noReflection = false;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
+    bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
 
     // Light sources written inside this CSG node or light_group, in world
     // space and moved with it; the parser hands them to the scene (or to

@@ -547,12 +547,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             applySturm(obj, tok);
             return true;
         case Keyword::kw_hollow:
-            // Only changes media and fog inside the object; neither exists yet.
+            // Lets fog reach rays inside the object (see render::Tracer).
             next();
+            obj.hollow = true;
             if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) ||
                 peek().is(Keyword::kw_off) || peek().is(Keyword::kw_true) ||
                 peek().is(Keyword::kw_false))
-                parseFloat();
+                obj.hollow = parseFloat() != 0;
             return true;
         default:
             return false;
@@ -666,6 +667,9 @@ void Interpreter::parseGlobalSettings() {
                 break;
             case Keyword::kw_ambient_light:
                 g.ambientLight = parseColor().rgb;
+                break;
+            case Keyword::kw_irid_wavelength:
+                g.iridWavelength = parseColor().rgb;
                 break;
             case Keyword::kw_number_of_waves:
             case Keyword::kw_noise_generator:
