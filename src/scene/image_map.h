@@ -62,6 +62,9 @@ class ImageMap {
     // The scalar at texel (ix, iy), wrapped or clamped as the map repeats
     // (bump maps sample neighbouring texels).
     double texelValue(int ix, int iy) const;
+    // The texel (x from the left, y from the top) that image point (u, v)
+    // shows without interpolation.
+    void nearestTexel(double u, double v, int& ix, int& iy) const;
     // Texel coordinates (in pixels, x from the left, y from the top) of
     // image point (u, v), before the half-pixel shift of interpolation.
     void texelCoordinates(double u, double v, double& x, double& y) const;

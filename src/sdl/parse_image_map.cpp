@@ -1,5 +1,6 @@
 // Image maps: `image_map { }` in a pigment, `image_pattern { }` as a
-// pattern and `bump_map { }` in a normal (seed 003 §5.4.1.4, §5.4.2.6).
+// pattern, `bump_map { }` in a normal and `material_map { }` in a texture
+// (seed 003 §5.4.1.4, §5.4.2.6, §5.4.4.2).
 // The file is read once per frame (the interpreter caches it by path) and
 // turned into texels here, following POV-Ray 3.7 as measured:
 //   - colours are decoded with the file's gamma - the `gamma` given, else
@@ -15,7 +16,12 @@
 //   - the scalar of image_pattern and bump_map is the grey value
 //     0.297 r + 0.589 g + 0.114 b of the file values (no gamma), or with
 //     use_alpha 1 - alpha; bump_map's use_index takes the palette index
-//     itself (0, 1, 2 ..., not scaled to [0,1]).
+//     itself (0, 1, 2 ..., not scaled to [0,1]);
+//   - material_map's scalar is the index of the texture: the palette index
+//     of palette images (GIF and palette PNG), the 8-bit red value of
+//     colour images and, for grey images, the grey value taken through
+//     povray's single-precision 0.297/0.589/0.114 weighting times 255,
+//     truncated (so 111 gives 110: measured over all 256 grey levels).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -32,7 +38,7 @@ namespace {
 
 // What the image block is for: it decides which texels are prepared and
 // which items are allowed.
-enum class ImageUse { Pigment, Pattern, Bump };
+enum class ImageUse { Pigment, Pattern, Bump, Material };
 
 bool isImageType(Keyword k) {
     switch (k) {
@@ -105,6 +111,19 @@ struct ImageSettings {
     bool bumpSizeGiven = false;
 };
 
+// The texture a material_map pixel picks before the list length is
+// applied (see the header comment for the rules measured).
+double materialIndex(const image::SourceImage& src, std::size_t p) {
+    if (src.isPalette()) return src.indices[p];
+    const image::EncodedImage& px = src.pixels;
+    const auto ch = static_cast<std::size_t>(px.channels);
+    const double byte = std::floor(static_cast<double>(px.values[p * ch]) * 255.0 + 0.5);
+    if (px.channels >= 3) return byte;
+    const float g = static_cast<float>(byte) / 255.0f;
+    const float grey = 0.297f * g + 0.589f * g + 0.114f * g;
+    return std::floor(static_cast<double>(grey) * 255.0);
+}
+
 }  // namespace
 
 const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, const Token& at) {
@@ -125,10 +144,12 @@ const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, 
     return *images_.emplace(key, std::move(img)).first->second;
 }
 
-std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token& keyword,
-                                                                    double* bumpSize) {
+std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
+    const Token& keyword, double* bumpSize,
+    std::vector<std::shared_ptr<const scene::Texture>>* materials) {
     const ImageUse use = keyword.is(Keyword::kw_image_map)       ? ImageUse::Pigment
                          : keyword.is(Keyword::kw_image_pattern) ? ImageUse::Pattern
+                         : keyword.is(Keyword::kw_material_map)  ? ImageUse::Material
                                                                  : ImageUse::Bump;
     expectAfter(Sym::LBrace, "{", keyword.text);
     ImageSettings s;
@@ -196,10 +217,15 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
                     fail(at, "Invalid interpolate value.");
                 break;
             }
+            case Keyword::kw_texture:
+                if (use != ImageUse::Material || !materials)
+                    fail(item, fmt::format("'texture' is not allowed in {}", keyword.text));
+                materials->push_back(parseTexture(nullptr));
+                break;
             case Keyword::kw_filter:
             case Keyword::kw_transmit: {
                 next();
-                if (use == ImageUse::Bump)
+                if (use == ImageUse::Bump || use == ImageUse::Material)
                     fail(item, fmt::format("'{}' is not allowed in bump_map", item.text));
                 ImageSettings::Amount a{item.is(Keyword::kw_filter), -1, 0, item};
                 if (!accept(Keyword::kw_all)) {
@@ -238,6 +264,8 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
         }
     }
     if (!haveFile) fail(keyword, fmt::format("{} needs an image file", keyword.text));
+    if (use == ImageUse::Material && materials->empty())
+        fail(keyword, "material_map needs at least one texture");
     if (s.mapping == scene::ImageMapping::Spherical || s.mapping == scene::ImageMapping::Torus)
         s.once = false;  // the image covers these exactly once anyway
 
@@ -310,6 +338,8 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
             double v;
             if (use == ImageUse::Bump && s.useIndex && src.isPalette())
                 v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
+            else if (use == ImageUse::Material)
+                v = materialIndex(src, p);
             else if (s.useAlpha)
                 v = 1.0 - alphaOf(p);
             else

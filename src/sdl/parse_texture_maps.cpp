@@ -166,8 +166,19 @@ bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
             expect(Sym::RBrace, "'}' closing 'tiles'");
             return true;
         }
-        case Keyword::kw_material_map:
-            unsupported(item, "material_map");
+        case Keyword::kw_material_map: {
+            next();
+            scene::TextureMap& map = patterned();
+            if (map.mode == scene::TextureMap::Mode::List)
+                fail(item, "a list pattern takes textures, not a material_map");
+            std::vector<std::shared_ptr<const scene::Texture>> textures;
+            map.material = parseImageBlock(item, nullptr, &textures);
+            map.mode = scene::TextureMap::Mode::Material;
+            map.entries.clear();
+            for (auto& t : textures)
+                map.entries.push_back({static_cast<double>(map.entries.size()), std::move(t)});
+            return true;
+        }
         case Keyword::kw_color_map:
         case Keyword::kw_colour_map:
         case Keyword::kw_pigment_map:

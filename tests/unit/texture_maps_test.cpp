@@ -148,8 +148,8 @@ TEST(TextureMaps, Errors) {
                            "plane { y, 0 pigment { gradient x pigment_map { CM } } }")
                   .find("not a pigment_map"),
               std::string::npos);
-    EXPECT_NE(parseErrorOf("plane { y, 0 texture { material_map { png \"m.png\" } } }")
-                  .find("not supported yet: material_map"),
+    EXPECT_NE(parseErrorOf("plane { y, 0 texture { material_map { png \"no_such.png\" } } }")
+                  .find("material_map needs at least one texture"),
               std::string::npos);
 }
 
