@@ -103,7 +103,8 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     }
     if (quickColours_) {
         const scene::Object& obj = *hit.object;
-        return quickColour(obj.texture ? *obj.texture : defaultTexture(), ray.at(hit.t));
+        const Vec3 p = ray.at(hit.t);
+        return quickColour(obj.texture ? *obj.texture : defaultTexture(), p, obj.surfaceUv(p));
     }
     RGB color = shade(ray, hit, state, counts);
     if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
@@ -114,20 +115,23 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
 // bottom texture layer's pigment, or that pigment's quick_color, with no
 // lighting, shadows, transparency or reflection; a patterned texture
 // (texture_map, checker of textures, tiles) shows its entries' colours.
-RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p) const {
+RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const {
     const scene::Texture& bottom = top.layersBelow.empty() ? top : *top.layersBelow.back();
+    const Vec3 at = bottom.uvMapping ? uv : p;
     if (bottom.map) {
         RGB color(0.0);
-        const Vec3 q = bottom.transform.inversePoint(p);
+        const Vec3 q = bottom.transform.inversePoint(at);
         const Vec3 entry = bottom.map->entryPoint(q);
         bottom.map->visit(
-            q, [&](const scene::Texture& t, double w) { color += quickColour(t, entry) * w; });
+            q, [&](const scene::Texture& t, double w) { color += quickColour(t, entry, uv) * w; });
         return color;
     }
     if (!bottom.pigment) return RGB(0.0);
     const scene::Pigment& pigment = *bottom.pigment;
     if (pigment.quickColor()) return pigment.quickColor()->rgb;
-    return pigment.at(bottom.transform.inversePoint(p)).rgb;
+    scene::SurfaceInfo surface{};
+    surface.uv = uv;
+    return pigment.at(bottom.transform.inversePoint(at), &surface).rgb;
 }
 
 // Ambient, emission, diffuse and highlights of one texture layer whose
@@ -201,8 +205,9 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // Shade the side facing the viewer.
     if (dot(geometric, viewDir) > 0) geometric = -geometric;
     const scene::Texture& own = obj.texture ? *obj.texture : defaultTexture();
+    const Vec3 uv = obj.surfaceUv(p);
     if (obj.componentTextures.empty())
-        return shadeTexture(own, ray, obj, p, p, viewDir, geometric, state, counts);
+        return shadeTexture(own, ray, obj, p, p, uv, viewDir, geometric, state, counts);
     // A blob's component textures: each is shaded and the colours blended
     // (as povray 3.7 does). povray skips a texture whose weight is under
     // adc_bailout without giving its share to the others (measured: weights
@@ -210,26 +215,27 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     RGB color(0.0);
     obj.visitTextures(p, own, [&](const scene::Texture& t, double w) {
         if (w * state.weight < scene_.globals.adcBailout) return;
-        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, state, counts) * w;
+        color += shadeTexture(t, ray, obj, p, p, uv, viewDir, geometric, state, counts) * w;
     });
     return color;
 }
 
 RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
-                         const Vec3& p, const Vec3& texP, const Vec3& viewDir,
+                         const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
                          const Vec3& geometric, const State& state, RayCounts& counts) const {
     // A patterned texture: povray 3.7 shades each texture the pattern
     // picks (with its own reflection and transmission) and blends the
     // shaded colours by their weights (measured).
     if (top.map) {
         RGB color(0.0);
-        const Vec3 q = top.transform.inversePoint(texP);
+        const Vec3 q = top.transform.inversePoint(top.uvMapping ? uv : texP);
         const Vec3 entry = top.map->entryPoint(q);
-        const scene::SurfaceInfo surface{geometric, viewDir};
+        const scene::SurfaceInfo surface{geometric, viewDir, uv};
         top.map->visit(
             q,
             [&](const scene::Texture& t, double w) {
-                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, state, counts) * w;
+                color +=
+                    shadeTexture(t, ray, obj, p, entry, uv, viewDir, geometric, state, counts) * w;
             },
             &surface);
         return color;
@@ -286,11 +292,14 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
-        n = tex.perturbNormal(texP, geometric);
+        // A uv-mapped layer (its normal is refused by the parser) is
+        // evaluated at the surface's uv.
+        const Vec3& layerP = tex.uvMapping ? uv : texP;
+        n = tex.perturbNormal(layerP, geometric);
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
-        const scene::SurfaceInfo info{n, viewDir};
-        const Color surface = tex.pigment->at(tex.transform.inversePoint(texP), &info);
+        const scene::SurfaceInfo info{n, viewDir, uv};
+        const Color surface = tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         pigment = surface.rgb;
         const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, counts);
         color += i == 0 ? local : through * local;

@@ -277,14 +277,16 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         RGB through(0.0);
         if (obj.componentTextures.empty()) {
             if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
-            through = obj.texture->throughAt(p);
+            const Vec3 uv = obj.surfaceUv(p);
+            through = obj.texture->throughAt(p, &uv);
         } else {
             // A blob's component textures, blended as for shading (an
             // untextured part with the default texture is opaque).
             const scene::Texture opaque;
+            const Vec3 uv = obj.surfaceUv(p);
             obj.visitTextures(p, obj.texture ? *obj.texture : opaque,
                               [&](const scene::Texture& t, double w) {
-                                  if (&t != &opaque) through += t.throughAt(p) * w;
+                                  if (&t != &opaque) through += t.throughAt(p, &uv) * w;
                               });
         }
         if (through.isBlack()) return RGB(0.0);

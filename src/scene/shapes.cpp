@@ -1,8 +1,10 @@
 #include "scene/shapes.h"
 
-#include "scene/shape_math.h"
-
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "scene/shape_math.h"
 
 namespace frameray::scene {
 
@@ -47,6 +49,18 @@ bool Sphere::firstHit(const Ray& ray, double tMin, double tMax, double& t) const
     return false;
 }
 
+// povray 3.7's sphere uv (measured): u the turns around y from +x towards
+// +z, v the latitude from the south pole (0) to the north pole (1).
+bool Sphere::uv(const Vec3& p, double& u, double& v) const {
+    const Vec3 d = p - center_;
+    const double len = length(d);
+    double angle = std::atan2(d.z, d.x) / (2 * std::numbers::pi);
+    if (angle < 0) angle += 1;
+    u = angle;
+    v = len > 0 ? 0.5 + std::asin(std::clamp(d.y / len, -1.0, 1.0)) / std::numbers::pi : 0.5;
+    return true;
+}
+
 bool Sphere::inside(const Vec3& p) const {
     const Vec3 d = p - center_;
     return dot(d, d) < radius_ * radius_;
@@ -83,8 +97,10 @@ Bounds Plane::insideBounds() const {
     if (nonZero != 1) return b;
     // normal_[axis] is +1 or -1 here.
     const double limit = (distance_ + kInsideMargin) / normal_[axis];
-    if (normal_[axis] > 0) b.hi[axis] = limit;
-    else b.lo[axis] = limit;
+    if (normal_[axis] > 0)
+        b.hi[axis] = limit;
+    else
+        b.lo[axis] = limit;
     return b;
 }
 
@@ -122,18 +138,60 @@ Vec3 Box::normal(const Vec3& p) const {
         const double extent = std::fmax(hi_[axis] - lo_[axis], 1e-300);
         const double dLo = std::fabs(p[axis] - lo_[axis]) / extent;
         const double dHi = std::fabs(p[axis] - hi_[axis]) / extent;
-        if (dLo < bestDist) { bestDist = dLo; bestAxis = axis; sign = -1; }
-        if (dHi < bestDist) { bestDist = dHi; bestAxis = axis; sign = 1; }
+        if (dLo < bestDist) {
+            bestDist = dLo;
+            bestAxis = axis;
+            sign = -1;
+        }
+        if (dHi < bestDist) {
+            bestDist = dHi;
+            bestAxis = axis;
+            sign = 1;
+        }
     }
     Vec3 n;
     n[bestAxis] = sign;
     return n;
 }
 
+// povray 3.7's box uv (measured): the six faces unfolded into a cross on
+// a 4 x 3 grid, each face a quarter of the width and a third of the
+// height: -x, +z, +x, -z along the middle row (v 1/3..2/3), -y below and
+// +y above the +z face.
+bool Box::uv(const Vec3& p, double& u, double& v) const {
+    const Vec3 size = hi_ - lo_;
+    auto frac = [&](int axis) {
+        return size[axis] > 0 ? std::clamp((p[axis] - lo_[axis]) / size[axis], 0.0, 1.0) : 0.0;
+    };
+    const double X = frac(0), Y = frac(1), Z = frac(2);
+    const Vec3 n = normal(p);
+    if (n.x < 0) {
+        u = Z / 4;
+        v = (1 + Y) / 3;
+    } else if (n.x > 0) {
+        u = 0.75 - Z / 4;
+        v = (1 + Y) / 3;
+    } else if (n.z > 0) {
+        u = 0.25 + X / 4;
+        v = (1 + Y) / 3;
+    } else if (n.z < 0) {
+        u = 1 - X / 4;
+        v = (1 + Y) / 3;
+    } else if (n.y < 0) {
+        u = 0.25 + X / 4;
+        v = Z / 3;
+    } else {
+        u = 0.25 + X / 4;
+        v = 1 - Z / 3;
+    }
+    return true;
+}
+
 bool Box::inside(const Vec3& p) const {
     // Faces count as inside (povray: intersecting two boxes that share a
     // face leaves that face visible).
-    return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z && p.z <= hi_.z;
+    return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z &&
+           p.z <= hi_.z;
 }
 
 }  // namespace frameray::scene

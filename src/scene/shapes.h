@@ -54,6 +54,10 @@ public:
     // operands' bounding boxes, which only shows with such shapes.
     virtual bool insideReachesPastBounds() const { return false; }
     virtual const char* name() const = 0;
+    // uv_mapping (povray 3.7, measured): the surface coordinates (u, v) of
+    // object-space point p on the surface. False for shapes without their
+    // own, which povray maps by the world x and y of the point instead.
+    virtual bool uv(const Vec3& /*p*/, double& /*u*/, double& /*v*/) const { return false; }
     // A shape whose geometry depends on where it is placed (a bicubic
     // patch with flatness subdivides by world-space distances) returns
     // its rebuilt self for the object-to-world transform `toWorld`; the
@@ -70,6 +74,7 @@ public:
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override;
     const char* name() const override { return "sphere"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
 private:
     Vec3 center_;
@@ -106,6 +111,7 @@ public:
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return {lo_, hi_}; }
     const char* name() const override { return "box"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
 private:
     Vec3 lo_, hi_;

@@ -59,6 +59,11 @@ class Pigment {
         kind_ = Kind::ImageMapped;
     }
     const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
+    // uv_mapping: the pigment is evaluated at the surface's (u, v, 0)
+    // (SurfaceInfo::uv) through its own transformations only (povray 3.7,
+    // measured: the texture's and object's transformations do not move it).
+    void setUvMapping() { uvMapping_ = true; }
+    bool uvMapping() const { return uvMapping_; }
     // quick_color: what +Q0/+Q1 show instead of the pigment.
     void setQuickColor(const Color& c) { quickColor_ = c; }
     const std::optional<Color>& quickColor() const { return quickColor_; }
@@ -85,6 +90,7 @@ class Pigment {
     std::vector<MapEntry> pigmentMap_;
     std::shared_ptr<const ImageMap> imageMap_;
     bool average_ = false;
+    bool uvMapping_ = false;
     bool hasTransform_ = false;
     Transform transform_;
 };
@@ -183,6 +189,12 @@ struct Texture {
     // it with the object (seed 003 B.3).
     Transform transform;
 
+    // uv_mapping: the texture (pigment, normal and patterned entries) is
+    // evaluated at the surface's (u, v, 0) moved by `transform`, which
+    // then holds only the texture's own transformations (those applied to
+    // the object are ignored: povray 3.7, measured).
+    bool uvMapping = false;
+
     // Layered texture (seed 003 5.4.5): the layers under this one, the
     // nearest first. Each is a complete texture of its own; see
     // render::Tracer::shade for how povray composites them.
@@ -191,7 +203,8 @@ struct Texture {
     // What the texture lets through at world point p (shadow rays): the
     // product of every layer's filter and transmit, black as soon as one
     // layer is opaque.
-    RGB throughAt(const Vec3& p) const;
+    // `uv`: the surface's (u, v, 0) for uv-mapped layers (p when unknown).
+    RGB throughAt(const Vec3& p, const Vec3* uv = nullptr) const;
 
     // Puts this texture (with its own layers) under `upper`'s layers.
     void stackOn(Texture& upper) const;

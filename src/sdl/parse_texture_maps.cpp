@@ -71,20 +71,34 @@ scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, boo
 void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
     const Token t = peek();
     const NestingGuard nesting(*this, t);
+    // Transformations after a uv-mapped texture identifier do nothing
+    // (povray 3.7, measured); in the block that says uv_mapping they move
+    // the uv pattern.
+    bool uvFrozen = false;
     if (t.isIdentifier()) {
         next();
         const Value v = identifierValue(t);
         const auto* tp = std::get_if<TexturePtr>(&v);
         if (!tp) fail(t, fmt::format("'{}' is a {}, not a texture", t.text, valueKindName(v)));
         tex = **tp;
+        uvFrozen = tex.uvMapping;
     }
     // The map of a patterned texture, edited in place while parsing.
     std::shared_ptr<scene::TextureMap> draft;
     if (tex.map) draft = std::make_shared<scene::TextureMap>(*tex.map);
+    bool surfaceSeen = false;  // povray takes uv_mapping only before these
     while (!peek().is(closing)) {
         const Token item = peek();
+        if (item.is(Keyword::kw_uv_mapping)) {
+            if (surfaceSeen) fail(item, "Cannot parse input.");
+            if (t.isIdentifier()) unsupported(item, "uv_mapping after a texture identifier");
+            next();
+            tex.uvMapping = true;
+            continue;
+        }
         Transform step;
         if (parseTransformation(step)) {
+            if (uvFrozen) continue;
             // A transformation moves the pattern and the textures the map
             // holds so far (povray transforms them at this point).
             if (draft)
@@ -95,6 +109,7 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
         }
         const bool surfaceItem = item.is(Keyword::kw_pigment) || item.is(Keyword::kw_normal) ||
                                  item.is(Keyword::kw_finish);
+        surfaceSeen = surfaceSeen || surfaceItem;
         if (surfaceItem && draft)
             fail(item, fmt::format("'{}' is not allowed in a patterned texture: give it to each "
                                    "texture of the map",
@@ -102,6 +117,7 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
         if (item.is(Keyword::kw_pigment)) {
             tex.pigment = parsePigment();
         } else if (item.is(Keyword::kw_normal)) {
+            if (tex.uvMapping) unsupported(item, "a normal in a uv_mapping texture");
             tex.normal = parseNormal(tex.normal.get());
         } else if (item.is(Keyword::kw_finish)) {
             tex.finish = *parseFinish(&tex.finish);

@@ -150,18 +150,32 @@ PigmentPtr Interpreter::parsePigment() {
 void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
     const Token t = peek();
     const NestingGuard nesting(*this, t);
-    if (t.isIdentifier()) {
-        const Value* v = lookup(std::string(t.text));
-        if (v && std::holds_alternative<PigmentPtr>(*v)) {
-            next();
-            result = *std::get<PigmentPtr>(*v);
-        }
+    // uv_mapping (povray 3.7, measured): first in the block, maybe followed
+    // by an identifier; the block's transformations then move the uv
+    // pattern, while those after a uv-mapped identifier do nothing.
+    bool uvFrozen = false;
+    auto copyIdentifier = [&] {
+        const Token id = peek();
+        if (!id.isIdentifier()) return false;
+        const Value* v = lookup(std::string(id.text));
+        if (!v || !std::holds_alternative<PigmentPtr>(*v)) return false;
+        next();
+        result = *std::get<PigmentPtr>(*v);
+        return true;
+    };
+    if (copyIdentifier()) {
+        uvFrozen = result.uvMapping();
+        if (peek().is(Keyword::kw_uv_mapping))
+            unsupported(peek(), "uv_mapping after a pigment identifier");
+    } else if (accept(Keyword::kw_uv_mapping)) {
+        copyIdentifier();
+        result.setUvMapping();
     }
     while (!peek().is(closing)) {
         const Token item = peek();
         Transform step;
         if (parseTransformation(step)) {
-            result.transform(step);
+            if (!uvFrozen) result.transform(step);
             continue;
         }
         if (item.is(Keyword::kw_quick_color) || item.is(Keyword::kw_quick_colour)) {
@@ -169,6 +183,8 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
             result.setQuickColor(parseColor());
             continue;
         }
+        if (item.is(Keyword::kw_uv_mapping))
+            unsupported(item, "uv_mapping after other pigment items");
         if (parsePigmentPatternItem(result)) continue;
         if (startsColor(item)) {
             result.setSolid(parseColor());
