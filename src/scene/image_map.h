@@ -21,7 +21,7 @@ namespace frameray::scene {
 
 enum class ImageMapping { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5 };
 
-enum class ImageInterpolation { None = 0, Bilinear = 2, NormalizedDistance = 4 };
+enum class ImageInterpolation { None = 0, Bilinear = 2, Bicubic = 3, NormalizedDistance = 4 };
 
 // The prepared pixels of one image as a pigment, pattern or bump map uses
 // them; row 0 is the image's top row.

@@ -191,12 +191,15 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
                 next();
                 const Token at = peek();
                 const int m = static_cast<int>(parseFloat());
+                // povray 3.7 (measured): image_map takes only 0, 1, 2 and 5;
+                // image_pattern, bump_map and material_map map every other
+                // value (3, 4, 6, 7 ...) as 0.
                 if (m == 0 || m == 1 || m == 2 || m == 5)
                     s.mapping = static_cast<scene::ImageMapping>(m);
-                else if (m == 3 || m == 4)
-                    unsupported(at, fmt::format("map_type {}", m));
+                else if (use == ImageUse::Pigment)
+                    fail(at, "Invalid map_type value.");
                 else
-                    fail(at, fmt::format("map_type must be 0, 1, 2 or 5, found {}", m));
+                    s.mapping = scene::ImageMapping::Planar;
                 break;
             }
             case Keyword::kw_once:
@@ -212,7 +215,7 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
                 else if (i == 4)
                     s.interpolation = scene::ImageInterpolation::NormalizedDistance;
                 else if (i == 3)
-                    unsupported(at, "interpolate 3");
+                    s.interpolation = scene::ImageInterpolation::Bicubic;
                 else
                     fail(at, "Invalid interpolate value.");
                 break;
