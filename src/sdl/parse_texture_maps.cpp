@@ -61,7 +61,9 @@ scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, boo
     while (layerFollows()) {
         const Token layer = peek();
         scene::Texture upper = *parseTexture(nullptr);
-        if (upper.map || tex.map) unsupported(layer, "a patterned texture as a layer");
+        // povray 3.7 refuses both (measured), checking the lower first.
+        if (tex.map) fail(layer, "Cannot layer over a patterned texture.");
+        if (upper.map) fail(layer, "Cannot layer a patterned texture over another.");
         tex.stackOn(upper);
         tex = std::move(upper);
     }
