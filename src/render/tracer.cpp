@@ -292,10 +292,9 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
-        // A uv-mapped layer (its normal is refused by the parser) is
-        // evaluated at the surface's uv.
+        // A uv-mapped layer is evaluated at the surface's uv.
         const Vec3& layerP = tex.uvMapping ? uv : texP;
-        n = tex.perturbNormal(layerP, geometric);
+        n = tex.perturbNormal(layerP, geometric, uv);
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
         const scene::SurfaceInfo info{n, viewDir, uv};

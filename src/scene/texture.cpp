@@ -154,7 +154,9 @@ void TextureMap::transformBy(const Transform& t) {
 
 void Texture::transformBy(const Transform& t) {
     if (uvMapping) {
-        // Fixed to the surface's uv: only the layers below may move.
+        // Fixed to the surface's uv: only the layers below may move, and
+        // the normal's perturbation turns with the object.
+        uvObjectTransform = uvObjectTransform.then(t);
         for (auto& layer : layersBelow) {
             auto moved = std::make_shared<Texture>(*layer);
             moved->transformBy(t);

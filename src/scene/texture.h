@@ -194,6 +194,10 @@ struct Texture {
     // then holds only the texture's own transformations (those applied to
     // the object are ignored: povray 3.7, measured).
     bool uvMapping = false;
+    // The transformations applied to a uv-mapped texture's object: they
+    // leave the uv point alone but still turn the normal's perturbation
+    // (measured: a bumps normal on a rotated sphere).
+    Transform uvObjectTransform;
 
     // Layered texture (seed 003 5.4.5): the layers under this one, the
     // nearest first. Each is a complete texture of its own; see
@@ -223,10 +227,13 @@ struct Texture {
     std::shared_ptr<const Normal> normal;
     // The shading normal at world point p after the texture's normal, for a
     // unit normal n facing the viewer.
-    Vec3 perturbNormal(const Vec3& p, const Vec3& n) const {
+    // For a uv-mapped texture p is the surface's (u, v, 0), as uv is.
+    Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv) const {
         if (!normal) return n;
-        const Vec3 tn = normalize(transform.inverse().normal(n));
-        return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn)));
+        if (normal->uvMapping) return normalize(normal->perturb(uv, n));
+        const Transform frame = uvMapping ? transform.then(uvObjectTransform) : transform;
+        const Vec3 tn = normalize(frame.inverse().normal(n));
+        return normalize(frame.normal(normal->perturb(transform.inversePoint(p), tn)));
     }
 };
 

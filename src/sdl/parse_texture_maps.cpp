@@ -100,7 +100,10 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
         }
         Transform step;
         if (parseTransformation(step)) {
-            if (uvFrozen) continue;
+            if (uvFrozen) {
+                tex.transformBy(step);  // turns the normal's perturbation only
+                continue;
+            }
             // A transformation moves the pattern and the textures the map
             // holds so far (povray transforms them at this point).
             if (draft)
@@ -119,7 +122,6 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
         if (item.is(Keyword::kw_pigment)) {
             tex.pigment = parsePigment();
         } else if (item.is(Keyword::kw_normal)) {
-            if (tex.uvMapping) unsupported(item, "a normal in a uv_mapping texture");
             tex.normal = parseNormal(tex.normal.get());
         } else if (item.is(Keyword::kw_finish)) {
             tex.finish = *parseFinish(&tex.finish);

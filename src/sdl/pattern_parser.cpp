@@ -536,6 +536,10 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             havePattern = declared != nullptr;
         }
     }
+    // As in a pigment: transformations after a uv-mapped identifier do
+    // nothing (measured).
+    const bool uvFrozen = normal.uvMapping && havePattern;
+    if (accept(Keyword::kw_uv_mapping)) normal.uvMapping = true;
     // The pattern and its modifiers are parsed like a pigment's; the
     // pigment is a scratch holder for the pattern and its chain.
     scene::Pigment holder;
@@ -550,6 +554,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
         const Token item = peek();
         Transform step;
         if (parseTransformation(step)) {
+            if (uvFrozen) continue;
             holder.transform(step);
             // The normals of a map move with it (as a texture map's do).
             for (auto& e : normal.map) {
