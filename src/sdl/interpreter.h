@@ -437,6 +437,9 @@ class Interpreter {
     std::shared_ptr<const scene::ImageMap> parseImageBlock(
         const Token& keyword, double* bumpSize,
         std::vector<std::shared_ptr<const scene::Texture>>* materials = nullptr);
+    // `function W, H { f(x, y, z) }` in an image block: the samples as an
+    // image.
+    image::SourceImage functionSourceImage(const Token& at);
     // An image file found like an include file, read once per frame.
     const image::SourceImage& loadSourceImage(const std::string& name, const Token& at);
 

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "image/image_io.h"
 #include "scene/image_map.h"
@@ -144,6 +145,44 @@ const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, 
     return *images_.emplace(key, std::move(img)).first->second;
 }
 
+image::SourceImage Interpreter::functionSourceImage(const Token& at) {
+    const Token sizeAt = peek();
+    const double w = parseFloat();
+    accept(Sym::Comma);
+    const double h = parseFloat();
+    if (!(w >= 2 && h >= 2)) fail(sizeAt, "a function image needs a resolution of at least 2 x 2");
+    if (w * h > double(frame_.limits.arrayElements))
+        fail(sizeAt, fmt::format("function image resolution {} x {} has more than {} samples", w, h,
+                                 frame_.limits.arrayElements));
+    const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(at);
+    image::SourceImage src;
+    image::EncodedImage& img = src.pixels;
+    img.width = static_cast<int>(w);
+    img.height = static_cast<int>(h);
+    img.channels = 1;
+    img.bitDepth = 16;
+    img.values.resize(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
+    // As a height_field function (measured with pigment functions): pixel
+    // (i, j), j = 0 the top row, holds f(i / (W - 1), j / (H - 1), 0) as
+    // 16 bits, truncated and wrapped (1.1 reads back as 0.1).
+    for (int j = 0; j < img.height; ++j)
+        for (int i = 0; i < img.width; ++i) {
+            double args[3] = {static_cast<double>(i) / (img.width - 1),
+                              static_cast<double>(j) / (img.height - 1), 0.0};
+            double value;
+            try {
+                value = fn->eval(args);
+            } catch (const std::runtime_error& e) {
+                fail(at, e.what());
+            }
+            const auto level = static_cast<long long>(value * 65535.0);
+            const auto wrapped = static_cast<unsigned long long>(level) & 0xFFFFu;
+            img.values[static_cast<size_t>(j) * static_cast<size_t>(img.width) +
+                       static_cast<size_t>(i)] = static_cast<float>(wrapped) / 65535.0f;
+        }
+    return src;
+}
+
 std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
     const Token& keyword, double* bumpSize,
     std::vector<std::shared_ptr<const scene::Texture>>* materials) {
@@ -154,6 +193,7 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
     expectAfter(Sym::LBrace, "{", keyword.text);
     ImageSettings s;
     bool haveFile = false;
+    std::optional<image::SourceImage> functionImage;  // `function W, H { }`
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token item = peek();
@@ -168,8 +208,13 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
             haveFile = true;
             continue;
         }
+        if (!haveFile && item.is(Keyword::kw_function)) {
+            next();
+            functionImage = functionSourceImage(item);
+            haveFile = true;
+            continue;
+        }
         switch (item.kw) {
-            case Keyword::kw_function:
             case Keyword::kw_pattern:
                 unsupported(item, fmt::format("'{}' images in {}", item.text, keyword.text));
             case Keyword::kw_gamma: {
@@ -272,7 +317,8 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
     if (s.mapping == scene::ImageMapping::Spherical || s.mapping == scene::ImageMapping::Torus)
         s.once = false;  // the image covers these exactly once anyway
 
-    const image::SourceImage& src = loadSourceImage(s.name, s.nameAt);
+    const image::SourceImage& src =
+        functionImage ? *functionImage : loadSourceImage(s.name, s.nameAt);
     const image::EncodedImage& px = src.pixels;
     for (const auto& a : s.amounts)
         if (a.index >= 0 && !src.isPalette())
@@ -305,7 +351,9 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
                                  : src.declaredGamma > 0 ? src.declaredGamma
                                                          : defaultFileGamma(s.type, s.name);
         auto decode = [&](double v) {
-            if (legacy) return v;
+            // A function image's values are working-space values whatever
+            // the assumed_gamma (measured).
+            if (legacy || functionImage) return v;
             double linear = fileGamma == 0   ? srgbDecode(v)
                             : fileGamma == 1 ? v
                                              : std::pow(v, fileGamma);
