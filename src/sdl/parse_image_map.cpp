@@ -216,7 +216,8 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
         }
         switch (item.kw) {
             case Keyword::kw_pattern:
-                unsupported(item, fmt::format("'{}' images in {}", item.text, keyword.text));
+                // povray 3.7 has no pattern images (measured).
+                fail(item, "Expected 'map file spec', pattern found");
             case Keyword::kw_gamma: {
                 next();
                 if (accept(Keyword::kw_srgb)) {
