@@ -46,6 +46,14 @@ void accumulate(double& sum, double v) {
     sum += v;
 }
 
+// A point up to about 1e-10 pixel short of a texel boundary already takes
+// the next texel (see nearestTexel).
+constexpr double kNudge = 1e-10;
+
+bool pastLastTexel(double t, int size) {
+    return t * size + kNudge >= size;
+}
+
 }  // namespace
 
 bool imageCoordinatesOk(const ImageMap& map, const Vec3& p, double& u, double& v) {
@@ -72,9 +80,9 @@ bool ImageMap::imageCoordinates(const Vec3& p, double& u, double& v) const {
         case ImageMapping::Cylindrical:
             u = turnsAroundY(p.x, p.z);
             v = p.y;
-            if (once_ && (v < 0 || v >= 1)) return false;
+            if (once_ && (v < 0 || v > 1)) return false;
             v -= std::floor(v);
-            return true;
+            return !(once_ && pastLastTexel(v, texels_->height));
         case ImageMapping::Torus: {
             // Around the y axis for u; around the tube of major radius 1 for
             // v: 0 on the inner rim, 1/4 underneath, 1/2 on the outer rim
@@ -86,10 +94,13 @@ bool ImageMap::imageCoordinates(const Vec3& p, double& u, double& v) const {
             return true;
         }
     }
-    if (once_ && (u < 0 || u >= 1 || v < 0 || v >= 1)) return false;
+    // `once` (povray 3.7, measured): 1 itself is inside and wraps to the
+    // first texel, while a point just short of 1 that the texel lookup
+    // rounds past the last texel is outside.
+    if (once_ && (u < 0 || u > 1 || v < 0 || v > 1)) return false;
     u -= std::floor(u);
     v -= std::floor(v);
-    return true;
+    return !(once_ && (pastLastTexel(u, texels_->width) || pastLastTexel(v, texels_->height)));
 }
 
 void ImageMap::texelCoordinates(double u, double v, double& x, double& y) const {
@@ -104,7 +115,6 @@ void ImageMap::nearestTexel(double u, double v, int& ix, int& iy) const {
     // image's edge. So a box face at exactly x = 1 shows column 0 however
     // the hit point rounds. Rows are counted up from the bottom and then
     // flipped.
-    constexpr double kNudge = 1e-10;
     const int w = texels_->width, h = texels_->height;
     ix = wrapX(static_cast<int>(std::floor(u * w + kNudge)));
     iy = h - 1 - wrapY(static_cast<int>(std::floor(v * h + kNudge)));
