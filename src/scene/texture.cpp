@@ -152,11 +152,38 @@ void TextureMap::transformBy(const Transform& t) {
     }
 }
 
+void Texture::turnNormalsBy(const Transform& t) {
+    uvObjectTransform = uvObjectTransform.then(t);
+    for (auto& layer : layersBelow) {
+        auto turned = std::make_shared<Texture>(*layer);
+        turned->turnNormalsBy(t);
+        layer = std::move(turned);
+    }
+    if (!map) return;
+    auto turned = std::make_shared<TextureMap>(*map);
+    for (auto& e : turned->entries) {
+        auto entry = std::make_shared<Texture>(*e.texture);
+        entry->turnNormalsBy(t);
+        e.texture = std::move(entry);
+    }
+    map = std::move(turned);
+}
+
 void Texture::transformBy(const Transform& t) {
     if (uvMapping) {
         // Fixed to the surface's uv: only the layers below may move, and
         // the normal's perturbation turns with the object.
         uvObjectTransform = uvObjectTransform.then(t);
+        if (map) {
+            // The entries stay on the uv too; their normals turn.
+            auto turned = std::make_shared<TextureMap>(*map);
+            for (auto& e : turned->entries) {
+                auto entry = std::make_shared<Texture>(*e.texture);
+                entry->turnNormalsBy(t);
+                e.texture = std::move(entry);
+            }
+            map = std::move(turned);
+        }
         for (auto& layer : layersBelow) {
             auto moved = std::make_shared<Texture>(*layer);
             moved->transformBy(t);

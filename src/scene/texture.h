@@ -196,8 +196,11 @@ struct Texture {
     bool uvMapping = false;
     // The transformations applied to a uv-mapped texture's object: they
     // leave the uv point alone but still turn the normal's perturbation
-    // (measured: a bumps normal on a rotated sphere).
+    // (measured: a bumps normal on a rotated sphere), also for the
+    // textures of a uv-mapped texture's map.
     Transform uvObjectTransform;
+    // Adds t to uvObjectTransform of this texture, its layers and entries.
+    void turnNormalsBy(const Transform& t);
 
     // Layered texture (seed 003 5.4.5): the layers under this one, the
     // nearest first. Each is a complete texture of its own; see
@@ -231,7 +234,11 @@ struct Texture {
     Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv) const {
         if (!normal) return n;
         if (normal->uvMapping) return normalize(normal->perturb(uv, n));
-        const Transform frame = uvMapping ? transform.then(uvObjectTransform) : transform;
+        if (uvObjectTransform.isIdentity()) {
+            const Vec3 tn = normalize(transform.inverse().normal(n));
+            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn)));
+        }
+        const Transform frame = transform.then(uvObjectTransform);
         const Vec3 tn = normalize(frame.inverse().normal(n));
         return normalize(frame.normal(normal->perturb(transform.inversePoint(p), tn)));
     }

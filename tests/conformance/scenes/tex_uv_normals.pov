@@ -1,7 +1,8 @@
 // uv_mapping with normals (povray 3.7, measured): in a uv-mapped texture
 // the pattern sits on the surface's uv while the object's transformations
 // (and those after a uv-mapped texture identifier) still turn its
-// perturbation; uv_mapping in the normal itself is turned by neither.
+// perturbation, also in the entries of a uv-mapped texture map;
+// uv_mapping in the normal itself is turned by neither.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 2.5, -6.5> look_at <0, 0.2, 0> angle 55 }
@@ -24,3 +25,9 @@ sphere { 0, 0.9 pigment { rgb <0.5, 0.7, 0.9> } normal { NWrinkles scale 3 } fin
 lathe { cubic_spline 6, <0.1, -1.2>, <0.4, -1>, <0.8, -0.4>, <0.5, 0.3>, <0.35, 1>, <0.1, 1.2>
   pigment { rgb <0.95, 0.7, 0.3> } normal { uv_mapping gradient x 0.8 scale 0.1 }
   rotate z * 20 translate <1.2, -0.1, -1.5> }
+// A uv-mapped texture map: its entries' normals turn with the object too.
+box { <-0.5, -0.5, -0.5>, <0.5, 0.5, 0.5>
+  texture { uv_mapping gradient x texture_map {
+    [0 pigment { rgb <0.9, 0.3, 0.2> }]
+    [1 pigment { rgb <0.3, 0.4, 0.9> } normal { bumps 1 scale 0.02 }] } scale 0.125 }
+  rotate <30, 50, 0> translate <3.4, -0.6, -0.8> }
