@@ -321,6 +321,7 @@ std::vector<scene::Normal::MapEntry> Interpreter::parseNormalMap() {
         std::shared_ptr<const scene::Normal> normal = parseNormalBody(nullptr, Sym::RBracket);
         // povray: "No normal type given."
         if (!normal) fail(body, "a normal_map entry needs a normal pattern");
+        if (normal->uvMapping) unsupported(body, "uv_mapping in a normal_map entry");
         expect(Sym::RBracket, "']' after a normal_map entry");
         entries.push_back({v, std::move(normal)});
     }

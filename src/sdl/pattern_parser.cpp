@@ -580,7 +580,11 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                 for (int i = 0; i < count; ++i) {
                     if (i > 0) accept(Sym::Comma);
                     if (!peek().is(Keyword::kw_normal)) break;
-                    normal.map.push_back({static_cast<double>(i), parseNormal(nullptr)});
+                    const Token entryAt = peek();
+                    auto entry = parseNormal(nullptr);
+                    if (entry && entry->uvMapping)
+                        unsupported(entryAt, "uv_mapping in a normal of a list pattern");
+                    normal.map.push_back({static_cast<double>(i), std::move(entry)});
                 }
                 while (static_cast<int>(normal.map.size()) < count)
                     normal.map.push_back({static_cast<double>(normal.map.size()), nullptr});
