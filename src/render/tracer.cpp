@@ -104,7 +104,8 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     if (quickColours_) {
         const scene::Object& obj = *hit.object;
         const Vec3 p = ray.at(hit.t);
-        return quickColour(obj.texture ? *obj.texture : defaultTexture(), p, obj.surfaceUv(p));
+        const scene::Texture& tex = obj.texture ? *obj.texture : defaultTexture();
+        return quickColour(tex, p, tex.usesUv() ? obj.surfaceUv(p) : p);
     }
     RGB color = shade(ray, hit, state, counts);
     if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
@@ -205,7 +206,9 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // Shade the side facing the viewer.
     if (dot(geometric, viewDir) > 0) geometric = -geometric;
     const scene::Texture& own = obj.texture ? *obj.texture : defaultTexture();
-    const Vec3 uv = obj.surfaceUv(p);
+    // uv_mapping's point, found only when a texture asks for it.
+    const Vec3 uv =
+        !obj.componentTextures.empty() || own.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
     if (obj.componentTextures.empty())
         return shadeTexture(own, ray, obj, p, p, uv, viewDir, geometric, state, counts);
     // A blob's component textures: each is shaded and the colours blended

@@ -277,7 +277,7 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         RGB through(0.0);
         if (obj.componentTextures.empty()) {
             if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
-            const Vec3 uv = obj.surfaceUv(p);
+            const Vec3 uv = obj.texture->usesUv() ? obj.surfaceUv(p) : p;
             through = obj.texture->throughAt(p, &uv);
         } else {
             // A blob's component textures, blended as for shading (an

@@ -152,6 +152,25 @@ void TextureMap::transformBy(const Transform& t) {
     }
 }
 
+bool Pigment::usesUv() const {
+    if (uvMapping_) return true;
+    for (const auto& p : list_)
+        if (p && p->usesUv()) return true;
+    for (const MapEntry& e : pigmentMap_)
+        if (e.pigment && e.pigment->usesUv()) return true;
+    return false;
+}
+
+bool Texture::usesUv() const {
+    if (uvMapping || (pigment && pigment->usesUv()) || (normal && normal->uvMapping)) return true;
+    for (const auto& layer : layersBelow)
+        if (layer->usesUv()) return true;
+    if (map)
+        for (const TextureMap::Entry& e : map->entries)
+            if (e.texture->usesUv()) return true;
+    return false;
+}
+
 void Texture::turnNormalsBy(const Transform& t) {
     uvObjectTransform = uvObjectTransform.then(t);
     for (auto& layer : layersBelow) {

@@ -64,6 +64,8 @@ class Pigment {
     // measured: the texture's and object's transformations do not move it).
     void setUvMapping() { uvMapping_ = true; }
     bool uvMapping() const { return uvMapping_; }
+    // Whether this pigment or one it holds is uv-mapped.
+    bool usesUv() const;
     // quick_color: what +Q0/+Q1 show instead of the pigment.
     void setQuickColor(const Color& c) { quickColor_ = c; }
     const std::optional<Color>& quickColor() const { return quickColor_; }
@@ -201,6 +203,9 @@ struct Texture {
     Transform uvObjectTransform;
     // Adds t to uvObjectTransform of this texture, its layers and entries.
     void turnNormalsBy(const Transform& t);
+    // Whether anything in the texture needs the surface's uv (the renderer
+    // skips finding it otherwise: a mesh's uv costs a triangle search).
+    bool usesUv() const;
 
     // Layered texture (seed 003 5.4.5): the layers under this one, the
     // nearest first. Each is a complete texture of its own; see
