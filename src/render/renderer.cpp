@@ -30,8 +30,13 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     tbb::combinable<RayCounts> rayCounts;
     tbb::combinable<AntialiasCounts> aaCounts;
 
+    // One block per task, handed out in order: blocks differ widely in cost
+    // (glass, area-light penumbrae), and larger chunks left one thread
+    // finishing a long tail while the other waited (measured: ~10 % of a
+    // still frame's time).
     tbb::parallel_for(
-        tbb::blocked_range<int>(0, blocksX * blocksY), [&](const tbb::blocked_range<int>& range) {
+        tbb::blocked_range<int>(0, blocksX * blocksY, 1),
+        [&](const tbb::blocked_range<int>& range) {
             RayCounts& rays = rayCounts.local();
             AntialiasCounts& aa = aaCounts.local();
             const SampleFunction sample = [&](double x, double y) {
@@ -64,7 +69,8 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                         out[2] = static_cast<float>(std::clamp(c.b, 0.0, 1.0));
                     }
             }
-        });
+        },
+        tbb::simple_partitioner());
     rayCounts.combine_each([&](const RayCounts& c) { stats.rays += c; });
     aaCounts.combine_each([&](const AntialiasCounts& c) {
         stats.antialias.supersampledPixels += c.supersampledPixels;

@@ -154,7 +154,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-    for (const scene::Light& light : scene_.lights) {
+    for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
@@ -253,18 +253,29 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         InteriorStack beyond;
         double iorHere;
         double iorBeyond;
+        // The ior ratio of povray 3.7's fresnel reflection. Leaving an
+        // object while inside others too, povray divides the innermost
+        // region's ior (usually the object's own) by the object's, a
+        // ratio of 1: no fresnel reflection from inside (measured: with
+        // the camera inside a plane's half-space, a fresnel glass sphere's
+        // image is the same for every max_trace_level from 3 up; alone in
+        // the air, its inner reflections show). Refraction is not affected.
+        double fresnelRatio;
     };
     std::optional<Crossing> crossing;
     auto crossingInfo = [&]() -> const Crossing& {
         if (crossing) return *crossing;
         const InteriorStack::Region region = regionOf(obj);
         const bool leaving = state.inside.contains(region.key);
-        Crossing c{state.inside, state.inside.ior(), 1.0};
+        Crossing c{state.inside, state.inside.ior(), 1.0, 1.0};
         if (leaving)
             c.beyond.remove(region.key);
         else
             c.beyond.push(region);
-        c.iorBeyond = leaving ? c.beyond.ior() : (region.interior ? region.interior->ior : 1.0);
+        const double own = region.interior ? region.interior->ior : 1.0;
+        c.iorBeyond = leaving ? c.beyond.ior() : own;
+        c.fresnelRatio =
+            leaving && state.inside.size() > 1 ? c.iorHere / own : c.iorBeyond / c.iorHere;
         crossing = c;
         return *crossing;
     };
@@ -309,9 +320,20 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         if (spawns && fin.reflection.any()) {
             const double cosView = std::clamp(-dot(viewDir, n), 0.0, 1.0);
             const Crossing& c = crossingInfo();
-            reflectivity = reflectance(fin.reflection, cosView, c.iorBeyond / c.iorHere, pigment);
+            reflectivity = reflectance(fin.reflection, cosView, c.fresnelRatio, pigment);
             if (!reflectivity.isBlack()) {
-                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                // A perturbed normal can send the mirror ray under the
+                // surface; povray then mirrors the view ray about the
+                // geometric normal if the ray is behind the perturbed one
+                // too, else mirrors the ray back above the surface
+                // (measured: textures.inc Brushed_Aluminum).
+                if (const double under = dot(reflected, geometric); under < 0) {
+                    if (dot(reflected, n) < 0)
+                        reflected = viewDir - geometric * (2 * dot(viewDir, geometric));
+                    else
+                        reflected = reflected - geometric * (2 * under);
+                }
                 color += reflectivity * reflectionExponent(spawnReflection(reflected, reflectivity),
                                                            fin.reflection.exponent);
             }

@@ -44,6 +44,7 @@ class InteriorStack {
     static constexpr int kCapacity = 16;  // deeper nesting is treated as air
 
     bool empty() const { return size_ == 0; }
+    int size() const { return size_; }
     bool contains(const void* key) const;
     // The ior of the innermost region, 1 outside everything.
     double ior() const;

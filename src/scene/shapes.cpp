@@ -4,12 +4,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/scratch.h"
 #include "scene/shape_math.h"
 
 namespace frameray::scene {
 
 bool Shape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
-    std::vector<double> ts;
+    ScratchVector<double> scratch;
+    std::vector<double>& ts = scratch.get();
     allHits(ray, tMin, tMax, ts);
     if (ts.empty()) return false;
     t = ts.front();
@@ -111,22 +113,43 @@ void Plane::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
 
 // --- Box --------------------------------------------------------------------
 
-void Box::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
-    double tNear = -kInfinity, tFar = kInfinity;
+bool Box::slabs(const Ray& ray, double& tNear, double& tFar) const {
+    tNear = -kInfinity;
+    tFar = kInfinity;
     for (int axis = 0; axis < 3; ++axis) {
         const double o = ray.origin[axis], d = ray.direction[axis];
         if (d == 0) {
-            if (o < lo_[axis] || o > hi_[axis]) return;
+            if (o < lo_[axis] || o > hi_[axis]) return false;
             continue;
         }
         double t0 = (lo_[axis] - o) / d, t1 = (hi_[axis] - o) / d;
         if (t0 > t1) std::swap(t0, t1);
-        tNear = std::fmax(tNear, t0);
-        tFar = std::fmin(tFar, t1);
-        if (tNear > tFar) return;
+        tNear = maxOf(tNear, t0);
+        tFar = minOf(tFar, t1);
+        if (tNear > tFar) return false;
     }
+    return true;
+}
+
+void Box::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
+    double tNear, tFar;
+    if (!slabs(ray, tNear, tFar)) return;
     if (tNear > tMin && tNear < tMax) ts.push_back(tNear);
     if (tFar > tMin && tFar < tMax && tFar != tNear) ts.push_back(tFar);
+}
+
+bool Box::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    double tNear, tFar;
+    if (!slabs(ray, tNear, tFar)) return false;
+    if (tNear > tMin && tNear < tMax) {
+        t = tNear;
+        return true;
+    }
+    if (tFar > tMin && tFar < tMax && tFar != tNear) {
+        t = tFar;
+        return true;
+    }
+    return false;
 }
 
 Vec3 Box::normal(const Vec3& p) const {
