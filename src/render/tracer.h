@@ -95,16 +95,17 @@ class Tracer {
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
     RGB shade(const scene::Ray& ray, const Hit& hit, const State& state, RayCounts& counts) const;
     // p is where the surface is lit, texP where the texture is evaluated
-    // (they differ inside a warped texture map).
+    // (they differ inside a warped texture map); uv is the surface's
+    // (u, v, 0) for uv_mapping.
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
-                     const Vec3& p, const Vec3& texP, const Vec3& viewDir, const Vec3& geometric,
-                     const State& state, RayCounts& counts) const;
+                     const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
+                     const Vec3& geometric, const State& state, RayCounts& counts) const;
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                    const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
                    RayCounts& counts) const;
 
     // +Q0/+Q1: the colour of texture `top` at p with no lighting at all.
-    RGB quickColour(const scene::Texture& top, const Vec3& p) const;
+    RGB quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const;
 
     const World& world_;
     const scene::Scene& scene_;
