@@ -142,8 +142,14 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
         const scene::Texture& tex = obj.texture ? *obj.texture : defaultTexture();
         return quickColour(tex, p, tex.usesUv() ? obj.surfaceUv(p) : p);
     }
-    RGB color = shade(ray, hit, state, counts);
-    if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
+    RGB color;
+    if (fades) {
+        State faded = state;
+        faded.fade = interiorFade(*medium->interior, hit.t * length(ray.direction));
+        color = shade(ray, hit, faded, counts);
+    } else {
+        color = shade(ray, hit, state, counts);
+    }
     // povray leaves out fog and rainbows along rays inside objects that
     // are not hollow (measured: a transmitting box 4 units deep in fog
     // shows the fog only in front of it and beyond it; inside a hollow
@@ -184,7 +190,7 @@ RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv
 // pigment at the point is `surface`, shaded with the normal n.
 RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
-                       RayCounts& counts) const {
+                       const RGB& fade, RayCounts& counts) const {
     const scene::Finish& fin = tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
@@ -230,7 +236,8 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
             fromBehind = true;
         }
         if (cosIncidence <= 0) continue;
-        RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
+        RGB lightColor =
+            lightArriving(world_, light, p, path, eps, lighting_, counts.shadow) * fade;
         if (lightColor.isBlack()) continue;
         if (irid)
             lightColor =
@@ -398,7 +405,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const scene::SurfaceInfo info{n, viewDir, uv};
         const Color surface = tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         pigment = surface.rgb;
-        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, counts);
+        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts);
         color += i == 0 ? local : through * local;
 
         if (spawns && fin.reflection.any()) {
@@ -468,7 +475,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
             if (const auto bent = refractedDirection(viewDir, n, eta)) {
                 ++counts.refraction;
                 childTransmit = 0;
-                sum += weight * trace({p, *bent}, eps, child, counts);
+                sum += weight * trace({p, *bent}, eps, child, counts) * state.fade;
                 seen += childTransmit / bands;
             } else {
                 const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
@@ -492,12 +499,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         // non-refracting surfaces).
         child.level = state.level;
         ++counts.transmission;
-        color += through * trace({p, viewDir}, eps, child, counts);
+        color += through * trace({p, viewDir}, eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else if (const auto bent = refractedDirection(viewDir, n, c.iorHere / c.iorBeyond)) {
         child.level = state.level + 1;
         ++counts.refraction;
-        color += through * trace({p, *bent}, eps, child, counts);
+        color += through * trace({p, *bent}, eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else {
         // Total internal reflection: the ray is mirrored back inside with

@@ -85,6 +85,12 @@ class Tracer {
         scene::RayKind kind = scene::RayKind::Camera;
         InteriorStack inside;
         SpectralBand band;  // white until a dispersive interior splits the ray
+        // How much of the light and of the transmitted rays at this ray's
+        // hit survive the interior the ray crossed to get there; the
+        // surface's ambient, emission and reflection are not faded
+        // (measured: povray 3.7 leaves them whole). Set by trace() for the
+        // one hit, never inherited.
+        RGB fade{1.0};
         // With alpha output (+UA), where a camera ray and the rays that
         // continue it through surfaces report how much of the background
         // shows through (missed rays then see black); null otherwise and
@@ -101,7 +107,7 @@ class Tracer {
                      const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
                      const Vec3& geometric, const State& state, RayCounts& counts) const;
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
-                   const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
+                   const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps, const RGB& fade,
                    RayCounts& counts) const;
 
     // +Q0/+Q1: the colour of texture `top` at p with no lighting at all.
