@@ -193,6 +193,10 @@ void Texture::turnNormalsBy(const Transform& t) {
         turned->turnNormalsBy(t);
         layer = std::move(turned);
     }
+    turnMapNormalsBy(t);
+}
+
+void Texture::turnMapNormalsBy(const Transform& t) {
     if (!map) return;
     auto turned = std::make_shared<TextureMap>(*map);
     for (auto& e : turned->entries) {
@@ -208,16 +212,8 @@ void Texture::transformBy(const Transform& t) {
         // Fixed to the surface's uv: only the layers below may move, and
         // the normal's perturbation turns with the object.
         uvObjectTransform = uvObjectTransform.then(t);
-        if (map) {
-            // The entries stay on the uv too; their normals turn.
-            auto turned = std::make_shared<TextureMap>(*map);
-            for (auto& e : turned->entries) {
-                auto entry = std::make_shared<Texture>(*e.texture);
-                entry->turnNormalsBy(t);
-                e.texture = std::move(entry);
-            }
-            map = std::move(turned);
-        }
+        // The entries stay on the uv too; their normals turn.
+        turnMapNormalsBy(t);
         for (auto& layer : layersBelow) {
             auto moved = std::make_shared<Texture>(*layer);
             moved->transformBy(t);

@@ -218,6 +218,8 @@ struct Texture {
     Transform uvObjectTransform;
     // Adds t to uvObjectTransform of this texture, its layers and entries.
     void turnNormalsBy(const Transform& t);
+    // The same for each entry of the map (copies; no-op without a map).
+    void turnMapNormalsBy(const Transform& t);
     // Whether anything in the texture needs the surface's uv (the renderer
     // skips finding it otherwise: a mesh's uv costs a triangle search).
     bool usesUv() const;
