@@ -75,10 +75,14 @@ double Light::attenuation(const Vec3& p, double distance) const {
                                        : 1.0;
             if (c <= 0) return 0.0;
             if (tightness != 0) a *= std::pow(c, tightness);
+            // Measured: radius 0 still fades to the falloff cone (radius 0
+            // and falloff 0 light nothing off the axis), and a falloff
+            // inside the radius cone acts as the radius: full light
+            // within it, none outside.
             const double toRad = std::numbers::pi / 180.0;
             const double cosRadius = std::cos(radius * toRad),
-                         cosFalloff = std::cos(falloff * toRad);
-            if (radius > 0) a *= smoothEdge(cosFalloff, cosRadius, c);
+                         cosFalloff = std::cos(std::max(falloff, radius) * toRad);
+            a *= smoothEdge(cosFalloff, cosRadius, c);
             break;
         }
         case LightKind::Cylinder: {
