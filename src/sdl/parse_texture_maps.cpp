@@ -105,11 +105,13 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
                 continue;
             }
             // A transformation moves the pattern and the textures the map
-            // holds so far (povray transforms them at this point).
+            // holds so far (povray transforms them at this point), and
+            // every layer of a layered texture named here (measured:
+            // texture { LAYERED rotate y*90 } turns all its layers).
             if (draft)
                 draft->transformBy(step);
             else
-                tex.transform = tex.transform.then(step);
+                tex.transformBy(step);
             continue;
         }
         const bool surfaceItem = item.is(Keyword::kw_pigment) || item.is(Keyword::kw_normal) ||
