@@ -779,6 +779,42 @@ scene::Warp Interpreter::parseWarp() {
                 break;
             }
         }
+    } else if (kind.is(Keyword::kw_cylindrical) || kind.is(Keyword::kw_spherical) ||
+               kind.is(Keyword::kw_toroidal)) {
+        // cylindrical | spherical | toroidal [orientation V] [dist_exp E]
+        // [major_radius R] (toroidal only; povray rejects it elsewhere).
+        w.kind = kind.is(Keyword::kw_cylindrical) ? scene::Warp::Kind::Cylindrical
+                 : kind.is(Keyword::kw_spherical) ? scene::Warp::Kind::Spherical
+                                                  : scene::Warp::Kind::Toroidal;
+        for (;;) {
+            const Token t = peek();
+            if (t.is(Keyword::kw_orientation)) {
+                next();
+                const Vec3 o = parseVec3();
+                // povray normalises it (a zero vector gives NaN there).
+                if (length(o) == 0) fail(t, "warp orientation vector is zero");
+                w.orientation = normalize(o);
+            } else if (t.is(Keyword::kw_dist_exp)) {
+                next();
+                w.distExp = parseFloat();
+            } else if (t.is(Keyword::kw_major_radius) && w.kind == scene::Warp::Kind::Toroidal) {
+                next();
+                w.majorRadius = parseFloat();
+            } else {
+                break;
+            }
+        }
+    } else if (kind.is(Keyword::kw_planar)) {
+        // planar [NORMAL, DISTANCE]: the distance is required after a normal.
+        w.kind = scene::Warp::Kind::Planar;
+        if (!peek().is(Sym::RBrace)) {
+            const Token at = peek();
+            const Vec3 o = parseVec3();
+            if (length(o) == 0) fail(at, "warp planar normal is zero");
+            w.orientation = normalize(o);
+            accept(Sym::Comma);
+            w.planeDistance = parseFloat();
+        }
     } else if (kind.kind == TokenKind::Word && kind.kw != Keyword::None) {
         unsupported(kind, fmt::format("warp {{ {} }}", kind.text));
     } else {
