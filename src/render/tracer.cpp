@@ -286,7 +286,8 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
-        n = tex.perturbNormal(texP, geometric);
+        const scene::SurfaceInfo unperturbed{geometric, viewDir};
+        n = tex.perturbNormal(texP, geometric, &unperturbed);
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
         const scene::SurfaceInfo info{n, viewDir};

@@ -299,7 +299,10 @@ int Pattern::listSize(PatternKind kind) {
 }
 
 int Pattern::index(const Vec3& point) const {
-    const Vec3 p = patternPoint(point);
+    return indexAt(patternPoint(point));
+}
+
+int Pattern::indexAt(const Vec3& p) const {
     switch (kind) {
         case PatternKind::Checker:
             return checkerIndex(p);

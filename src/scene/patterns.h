@@ -147,6 +147,8 @@ struct Pattern {
 
     // Colour-list patterns: the index of the colour at texture point p.
     int index(const Vec3& p) const;
+    // The same at pattern-space point q (after patternPoint).
+    int indexAt(const Vec3& q) const;
     // Colour-mapped patterns: the pattern function at pattern-space point q
     // (after patternPoint), before the wave.
     double raw(const Vec3& q, const SurfaceInfo* surface = nullptr) const;

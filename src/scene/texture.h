@@ -196,11 +196,11 @@ struct Texture {
     // Normal perturbation (normals.h); none when null.
     std::shared_ptr<const Normal> normal;
     // The shading normal at world point p after the texture's normal, for a
-    // unit normal n facing the viewer.
-    Vec3 perturbNormal(const Vec3& p, const Vec3& n) const {
+    // unit normal n facing the viewer (slope and aoi read `surface`).
+    Vec3 perturbNormal(const Vec3& p, const Vec3& n, const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
         const Vec3 tn = normalize(transform.inverse().normal(n));
-        return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn)));
+        return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
     }
 };
 

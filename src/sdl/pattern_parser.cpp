@@ -545,14 +545,19 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             continue;
         }
         if (patternKeyword(item.kw)) {
-            if (item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi))
-                unsupported(item, fmt::format("'{}' as a normal", item.text));
             parsePatternKeyword(holder, true);
             havePattern = true;
+            if (holder.pattern().isList() && !peek().is(Keyword::kw_normal)) {
+                // A list pattern without normals is a bumpy pattern of its
+                // own: its index is sampled, so only the cells' edges tilt.
+                closeListPattern(holder.pattern());
+                if (normal.mapMode == scene::Normal::MapMode::List)
+                    normal.mapMode = scene::Normal::MapMode::None;
+                if (bumpSizeFollows()) normal.amount = parseFloat();
+                continue;
+            }
             if (holder.pattern().isList()) {
                 // A list pattern takes one normal per index.
-                if (!peek().is(Keyword::kw_normal))
-                    unsupported(item, fmt::format("'{}' as a normal", item.text));
                 normal.mapMode = scene::Normal::MapMode::List;
                 normal.map.clear();
                 const int count = scene::Pattern::listSize(holder.pattern().kind);
