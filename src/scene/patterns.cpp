@@ -441,6 +441,8 @@ double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
             return scene::crackle(p, crackle, noiseGenerator);
         case PatternKind::Fractal:
             return fractalValue(p.x, p.y, fractal);
+        case PatternKind::Tiling:
+            return tilingValue(tiling, p);
         default:
             return 0;
     }

@@ -15,6 +15,7 @@
 #include "scene/fractals.h"
 #include "scene/image_map.h"
 #include "scene/noise.h"
+#include "scene/tiling.h"
 #include "scene/warps.h"
 #include "util/function_vm.h"
 #include "util/vec3.h"
@@ -85,6 +86,8 @@ enum class PatternKind {
     Crackle,
     // mandel and julia (fractals.h)
     Fractal,
+    // tiling N (tiling.h)
+    Tiling,
 };
 
 // The sources of ripples and waves (shared with their normals).
@@ -105,6 +108,7 @@ struct Pattern {
     double mortar = 0.5;
     double control0 = 1, control1 = 1;  // quilted
     int arms = 0;                       // spiral1 / spiral2
+    int tiling = 1;                     // tiling N
     WaveType waveType = WaveType::Ramp;
     double exponent = 1;  // poly_wave
     // povray keeps frequency and phase in single precision (visible in its

@@ -107,6 +107,8 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Slope;
         case Keyword::kw_aoi:
             return PatternKind::Aoi;
+        case Keyword::kw_tiling:
+            return PatternKind::Tiling;
         default:
             return std::nullopt;
     }
@@ -220,6 +222,14 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         pattern.function = parseXyzFunction(item);
     } else if (kind == scene::PatternKind::Slope) {
         parseSlopeArguments(pattern);
+    } else if (kind == scene::PatternKind::Tiling) {
+        // tiling N: truncated like povray's other counts (measured: 1.9 is 1).
+        const Token at = peek();
+        const double n = parseFloat();
+        const int number = static_cast<int>(n);
+        if (number < 1 || number > 27) fail(at, "Tiling number must be between 1 and 27.");
+        if (!scene::tilingSupported(number)) unsupported(at, fmt::format("tiling {}", number));
+        pattern.tiling = number;
     } else if (kind == scene::PatternKind::DensityFile) {
         // density_file df3 "NAME" [interpolate N]
         const Token type = next();
