@@ -443,6 +443,8 @@ double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
             return fractalValue(p.x, p.y, fractal);
         case PatternKind::Tiling:
             return tilingValue(tiling, p);
+        case PatternKind::Pavement:
+            return pavementValue(pavement, p);
         default:
             return 0;
     }

@@ -86,8 +86,9 @@ enum class PatternKind {
     Crackle,
     // mandel and julia (fractals.h)
     Fractal,
-    // tiling N (tiling.h)
+    // tiling N and pavement (tiling.h)
     Tiling,
+    Pavement,
 };
 
 // The sources of ripples and waves (shared with their normals).
@@ -109,6 +110,7 @@ struct Pattern {
     double control0 = 1, control1 = 1;  // quilted
     int arms = 0;                       // spiral1 / spiral2
     int tiling = 1;                     // tiling N
+    PavementSettings pavement;          // pavement
     WaveType waveType = WaveType::Ramp;
     double exponent = 1;  // poly_wave
     // povray keeps frequency and phase in single precision (visible in its

@@ -17,11 +17,11 @@ double squares(const Vec3& p) {
     return 1.0 - 2.0 * d;
 }
 
-// Tiling 2: hexagons of unit side with corners on the x axis, centred at
-// (-1, 0) + i (1.5, sqrt3/2) + j (0, sqrt3) (the origin is a corner); the
-// hexagonal distance from the centre, 1 on the edges.
-double hexagons(const Vec3& p) {
-    const double x = p.x + 1.0, z = p.z;
+// The distance from the centre of the nearest hexagon of unit side with
+// corners along x, centred at (x0, 0) + i (1.5, sqrt3/2) + j (0, sqrt3), in
+// units of its apothem (1 on the edges).
+double hexagonalDistance(const Vec3& p, double x0) {
+    const double x = p.x - x0, z = p.z;
     // Axial coordinates of the lattice, rounded to the nearest centre.
     const double q = x * (2.0 / 3.0);
     const double r = z / kSqrt3 - x / 3.0;
@@ -36,9 +36,25 @@ double hexagons(const Vec3& p) {
     const double dx = x - 1.5 * rq;
     const double dz = z - (kSqrt3 / 2.0) * rq - kSqrt3 * rr;
     const double c = kSqrt3 / 2.0;
+    return std::max({std::abs(dz), std::abs(c * dx + 0.5 * dz), std::abs(c * dx - 0.5 * dz)}) / c;
+}
+
+// The unit triangles of tiling 3: whether p is in one pointing +z, and
+// 1 - 3 * (distance to its nearest edge) / height (0 at the centre).
+double triangleShade(const Vec3& p, bool& up) {
+    const double u = p.x - p.z / kSqrt3, v = p.z * 2.0 / kSqrt3;
+    const double fu = u - std::floor(u), fv = v - std::floor(v);
+    up = fu + fv < 1.0;
     const double m =
-        std::max({std::abs(dz), std::abs(c * dx + 0.5 * dz), std::abs(c * dx - 0.5 * dz)});
-    return m / c;
+        up ? std::min({fu, fv, 1.0 - fu - fv}) : std::min({1.0 - fu, 1.0 - fv, fu + fv - 1.0});
+    return 1.0 - 3.0 * m;
+}
+
+// Tiling 2: hexagons of unit side with corners on the x axis, centred at
+// (-1, 0) + i (1.5, sqrt3/2) + j (0, sqrt3) (the origin is a corner); the
+// hexagonal distance from the centre, 1 on the edges.
+double hexagons(const Vec3& p) {
+    return hexagonalDistance(p, -1.0);
 }
 
 // Tiling 3: equilateral triangles of unit side, corners at i + j/2 along x
@@ -46,20 +62,33 @@ double hexagons(const Vec3& p) {
 // pointing -z 0.5 to 1, each rising from its centre: half of 1 - (distance
 // to the nearest edge) / inradius.
 double triangles(const Vec3& p) {
-    const double u = p.x - p.z / kSqrt3, v = p.z * 2.0 / kSqrt3;
-    const double fu = u - std::floor(u), fv = v - std::floor(v);
-    const bool up = fu + fv < 1.0;
-    // Distances to the edges in units of the triangle's height.
-    const double m =
-        up ? std::min({fu, fv, 1.0 - fu - fv}) : std::min({1.0 - fu, 1.0 - fv, fu + fv - 1.0});
-    const double shade = 1.0 - 3.0 * m;
+    bool up = false;
+    const double shade = triangleShade(p, up);
     return up ? 0.5 * shade : 0.5 + 0.5 * shade;
+}
+
+// Tiling 7: octagons of unit side centred at (L i, L j), L = 1 + sqrt2,
+// and unit squares turned 45 degrees between them. Both shade over the
+// squares' inradius 0.5 (the octagons stay flat inside it): squares take
+// 0 to 0.5, octagons 0.5 to 1.
+double octagonsAndSquares(const Vec3& p) {
+    constexpr double kSqrt2 = 1.4142135623730951;
+    constexpr double kPeriod = 1.0 + kSqrt2, a = kPeriod / 2.0;
+    const double fx = std::abs(p.x - kPeriod * std::round(p.x / kPeriod));
+    const double fz = std::abs(p.z - kPeriod * std::round(p.z / kPeriod));
+    if (fx + fz > a * kSqrt2) {
+        // The square centred at the cell's corner (a, a).
+        const double d = (kSqrt2 / 2.0 - (a - fx) - (a - fz)) / kSqrt2;
+        return 0.5 * (1.0 - 2.0 * d);
+    }
+    const double d = std::min({a - fx, a - fz, (a * kSqrt2 - fx - fz) / kSqrt2});
+    return 0.5 + 0.5 * std::max(0.0, 1.0 - 2.0 * d);
 }
 
 }  // namespace
 
 bool tilingSupported(int n) {
-    return n >= 1 && n <= 3;
+    return (n >= 1 && n <= 3) || n == 7;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -70,8 +99,36 @@ double tilingValue(int n, const Vec3& p) {
             return hexagons(p);
         case 3:
             return triangles(p);
+        case 7:
+            return octagonsAndSquares(p);
         default:
             return 0.0;
+    }
+}
+
+double pavementValue(const PavementSettings& s, const Vec3& p) {
+    switch (s.sides) {
+        case 4: {
+            // Unit squares with edges on whole x and z, shaded by the
+            // distance from the centre: the largest offset (exterior 0),
+            // their sum (1: corners cut) or their length (2: corners
+            // rounded), twice that capped at 1.
+            const double dx = std::abs(p.x - std::floor(p.x) - 0.5);
+            const double dz = std::abs(p.z - std::floor(p.z) - 0.5);
+            const double r = s.exterior == 1   ? dx + dz
+                             : s.exterior == 2 ? std::hypot(dx, dz)
+                                               : std::max(dx, dz);
+            return std::min(1.0, 2.0 * r);
+        }
+        case 6:
+            // Hexagons of unit side centred at (1, 0) + the lattice (the
+            // mirror image of tiling 2's), shaded over the width sqrt3/6
+            // from the edges and 0 further in.
+            return std::max(0.0, 1.0 - 3.0 * (1.0 - hexagonalDistance(p, 1.0)));
+        default: {
+            bool up = false;
+            return triangleShade(p, up);
+        }
     }
 }
 

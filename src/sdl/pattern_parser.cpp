@@ -109,6 +109,8 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Aoi;
         case Keyword::kw_tiling:
             return PatternKind::Tiling;
+        case Keyword::kw_pavement:
+            return PatternKind::Pavement;
         default:
             return std::nullopt;
     }
@@ -283,6 +285,55 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
     pigment.setPattern(pattern);
 }
 
+// pavement's number_of_sides, number_of_tiles, pattern, exterior, interior
+// and form (after the keyword's token is peeked). Values are truncated and
+// checked like povray's; only single-cell tiles are implemented.
+void Interpreter::parsePavementItem(scene::PavementSettings& s) {
+    const Token item = next();
+    const Token at = peek();
+    const int v = static_cast<int>(parseFloat());
+    switch (item.kw) {
+        case Keyword::kw_number_of_sides:
+            if (v != 3 && v != 4 && v != 6)
+                fail(at, "number_of_sides of pavement must be 3, 4 or 6.");
+            if (v != 4 && s.exterior != 0)
+                unsupported(at, fmt::format("pavement exterior {} with {} sides", s.exterior, v));
+            if (v == 6 && (s.form == 1 || s.form == 2))
+                unsupported(at, fmt::format("pavement form {} with 6 sides", s.form));
+            s.sides = v;
+            break;
+        case Keyword::kw_number_of_tiles:
+            if (v < 1 || v > (s.sides == 6 ? 5 : 6))
+                fail(at, fmt::format("number_of_tiles of pavement must be between 1 and {}.",
+                                     s.sides == 6 ? 5 : 6));
+            if (v > 1) unsupported(at, fmt::format("pavement number_of_tiles {}", v));
+            s.tiles = v;
+            break;
+        case Keyword::kw_pattern:
+            if (v < 1) fail(at, "pattern value for pavement is out of range.");
+            if (v > 1) unsupported(at, fmt::format("pavement pattern {}", v));
+            s.pattern = v;
+            break;
+        case Keyword::kw_exterior:
+            // Measured: values other than 1 and 2 act as 0.
+            if ((v == 1 || v == 2) && s.sides != 4)
+                unsupported(at, fmt::format("pavement exterior {} with {} sides", v, s.sides));
+            s.exterior = (v == 1 || v == 2) ? v : 0;
+            break;
+        case Keyword::kw_interior:
+            s.interior = v;
+            break;
+        default:  // form
+            // Measured: form 1 and 2 reshape the hexagons' corners (not
+            // implemented); for squares and triangles, and other values,
+            // it changes nothing in a single-cell tile.
+            if (s.sides == 6 && (v == 1 || v == 2))
+                unsupported(at, fmt::format("pavement form {} with 6 sides", v));
+            s.form = v;
+            break;
+    }
+}
+
 // slope <S> | slope { <S> [, LO, HI] [altitude <A> [, LO, HI]] }
 void Interpreter::parseSlopeArguments(scene::Pattern& pattern) {
     pattern.altitudeDirection = Vec3(0, 0, 0);
@@ -431,9 +482,20 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             });
             return true;
         }
+        case Keyword::kw_number_of_sides:
+        case Keyword::kw_number_of_tiles:
+        case Keyword::kw_pattern:
+            if (pigment.pattern().kind != scene::PatternKind::Pavement) return false;
+            parsePavementItem(pigment.pattern().pavement);
+            return true;
         case Keyword::kw_exponent:
         case Keyword::kw_interior:
         case Keyword::kw_exterior: {
+            if (pigment.pattern().kind == scene::PatternKind::Pavement &&
+                !item.is(Keyword::kw_exponent)) {
+                parsePavementItem(pigment.pattern().pavement);
+                return true;
+            }
             if (pigment.pattern().kind != scene::PatternKind::Fractal) return false;
             next();
             scene::FractalSettings f = pigment.pattern().fractal;
@@ -442,6 +504,10 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             return true;
         }
         case Keyword::kw_form: {
+            if (pigment.pattern().kind == scene::PatternKind::Pavement) {
+                parsePavementItem(pigment.pattern().pavement);
+                return true;
+            }
             next();
             const Vec3 f = parseVec3();
             editPattern([&](scene::Pattern& p) { p.crackle.form = f; });
