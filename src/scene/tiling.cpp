@@ -85,10 +85,37 @@ double octagonsAndSquares(const Vec3& p) {
     return 0.5 + 0.5 * std::max(0.0, 1.0 - 2.0 * d);
 }
 
+// Tiling 6: herringbone of 2 x 1 rectangles, lying ones [-3, -1] x [0, 1]
+// and standing ones [-1, 0] x [-1, 1], repeated by (1, 1) and (2, -2).
+// Lying ones take 0 to 0.5, standing ones 0.5 to 1, each 1 - 2 * (distance
+// to the nearest edge).
+double herringbone(const Vec3& p) {
+    // Lattice coordinates: p = s (1, 1) + t (2, -2).
+    const double s = std::floor((p.x + p.z) / 2.0), t = std::floor((p.x - p.z) / 4.0);
+    const double bx = s + 2.0 * t, bz = s - 2.0 * t;
+    struct Rect {
+        double x0, x1, z0, z1;
+    };
+    constexpr Rect kLying{-3, -1, 0, 1}, kStanding{-1, 0, -1, 1};
+    // The reduced point lies in the cell's parallelogram, which a few
+    // translates of the two rectangles cover.
+    for (int n = -2; n <= 2; ++n)
+        for (int m = -1; m <= 1; ++m) {
+            const double x = p.x - bx - n - 2.0 * m, z = p.z - bz - n + 2.0 * m;
+            for (int kind = 0; kind < 2; ++kind) {
+                const Rect& r = kind == 0 ? kLying : kStanding;
+                if (x < r.x0 || x >= r.x1 || z < r.z0 || z >= r.z1) continue;
+                const double d = std::min({x - r.x0, r.x1 - x, z - r.z0, r.z1 - z});
+                return 0.5 * kind + 0.5 * (1.0 - 2.0 * d);
+            }
+        }
+    return 0.0;
+}
+
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 3) || n == 7;
+    return (n >= 1 && n <= 3) || n == 6 || n == 7;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -99,6 +126,8 @@ double tilingValue(int n, const Vec3& p) {
             return hexagons(p);
         case 3:
             return triangles(p);
+        case 6:
+            return herringbone(p);
         case 7:
             return octagonsAndSquares(p);
         default:
