@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace frameray::scene {
 
@@ -112,10 +113,68 @@ double herringbone(const Vec3& p) {
     return 0.0;
 }
 
+// A periodic tiling of convex tiles given as data: lattice vectors and the
+// tiles of one cell, each with its kind. A point's tile is found among the
+// translates near its cell; its value is (kind + 1 - d / shadeWidth) /
+// kinds, d the distance to the tile's nearest edge, clamped at the centre.
+struct Tile {
+    int kind;
+    std::span<const double> xz;  // corners counter-clockwise (x, z pairs)
+};
+
+struct LatticeTiling {
+    double ax, az, bx, bz;  // lattice vectors
+    int kinds;
+    double shadeWidth;
+    std::span<const Tile> tiles;
+};
+
+double latticeTilingValue(const LatticeTiling& t, const Vec3& p) {
+    // Cell coordinates: p = s a + t b.
+    const double det = t.ax * t.bz - t.az * t.bx;
+    const double s = std::floor((p.x * t.bz - p.z * t.bx) / det);
+    const double u = std::floor((t.ax * p.z - t.az * p.x) / det);
+    for (int n = -2; n <= 2; ++n)
+        for (int m = -2; m <= 2; ++m) {
+            const double ox = (s + n) * t.ax + (u + m) * t.bx;
+            const double oz = (s + n) * t.az + (u + m) * t.bz;
+            const double x = p.x - ox, z = p.z - oz;
+            for (const Tile& tile : t.tiles) {
+                const std::size_t count = tile.xz.size() / 2;
+                double d = 1e300;
+                bool inside = true;
+                for (std::size_t i = 0; i < count && inside; ++i) {
+                    const double x0 = tile.xz[2 * i], z0 = tile.xz[2 * i + 1];
+                    const double x1 = tile.xz[(2 * i + 2) % (2 * count)];
+                    const double z1 = tile.xz[(2 * i + 3) % (2 * count)];
+                    const double ex = x1 - x0, ez = z1 - z0;
+                    const double dist = (ex * (z - z0) - ez * (x - x0)) / std::hypot(ex, ez);
+                    if (dist < 0) inside = false;
+                    d = std::min(d, dist);
+                }
+                if (!inside) continue;
+                return (tile.kind + std::max(0.0, 1.0 - d / t.shadeWidth)) / t.kinds;
+            }
+        }
+    return 0.0;
+}
+
+constexpr double kH = kSqrt3 / 2.0;
+
+// Tiling 5: rows of unit rhombi of 60 degrees with edges along x, leaning
+// right (kind 0) and left (kind 2), and standing ones between them (kind
+// 1); lattice (3, 0) and (1.5, sqrt3/2); shaded over the rhombi's
+// inradius sqrt3/4.
+constexpr double kLeaningRight[] = {0, 0, 1, 0, 1.5, kH, 0.5, kH};
+constexpr double kStanding[] = {1.5, -kH, 2, 0, 1.5, kH, 1, 0};
+constexpr double kLeaningLeft[] = {-1, 0, 0, 0, -0.5, kH, -1.5, kH};
+constexpr Tile kRhombi[] = {{0, kLeaningRight}, {1, kStanding}, {2, kLeaningLeft}};
+constexpr LatticeTiling kTiling5{3, 0, 1.5, kH, 3, kSqrt3 / 4.0, kRhombi};
+
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 3) || n == 6 || n == 7;
+    return (n >= 1 && n <= 3) || (n >= 5 && n <= 7);
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -126,6 +185,8 @@ double tilingValue(int n, const Vec3& p) {
             return hexagons(p);
         case 3:
             return triangles(p);
+        case 5:
+            return latticeTilingValue(kTiling5, p);
         case 6:
             return herringbone(p);
         case 7:

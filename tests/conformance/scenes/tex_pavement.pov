@@ -1,5 +1,6 @@
 // Conformance: single-cell pavement (triangles, squares with the three
-// exterior corner shapes, hexagons) and tiling 7 (octagons and squares),
+// exterior corner shapes, hexagons), tiling 7 (octagons and squares) and
+// tiling 5 (rhombi),
 // in pigments and a normal.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -10,6 +11,6 @@ plane { y, 0 pigment { tiling 7 color_map { [0 rgb <0.5, 0.1, 0.1>] [0.5 rgb <1,
 sphere { <-2.6, 1, 0>, 1 pigment { pavement color_map { [0 rgb <0.2, 0.5, 0.9>] [1 rgb 1] } scale 0.4 rotate x * -60 } }
 sphere { <0, 1, 0>, 1 pigment { pavement number_of_sides 6 interior 2 form 3 color_map { [0 rgb <0.8, 0.6, 0.2>] [1 rgb 0.1] } scale 0.3 rotate x * -60 } }
 sphere { <2.6, 1, 0>, 1 pigment { rgb <0.7, 0.9, 0.7> } normal { pavement 0.7 number_of_sides 4 exterior 2 scale 0.35 } }
-box { <-3.6, 0, 1.6>, <-1.6, 2.4, 2.4> pigment { pavement number_of_sides 4 color_map { [0 rgb <0.6, 0.2, 0.2>] [1 rgb 1] } scale 0.5 rotate x * 90 } }
+box { <-3.6, 0, 1.6>, <-1.6, 2.4, 2.4> pigment { tiling 5 color_map { [0 rgb <0.6, 0.2, 0.2>] [0.333 rgb 1] [0.333 rgb <0.2, 0.5, 0.2>] [0.667 rgb 1] [0.667 rgb <0.2, 0.2, 0.6>] [1 rgb 1] } scale 0.3 rotate x * 90 } }
 box { <-1, 0, 1.6>, <1, 2.4, 2.4> pigment { pavement number_of_sides 4 exterior 1 color_map { [0 rgb <0.2, 0.6, 0.2>] [1 rgb 1] } scale 0.5 rotate x * 90 } }
 box { <1.6, 0, 1.6>, <3.6, 2.4, 2.4> pigment { pavement number_of_sides 4 exterior 2 number_of_tiles 1 pattern 1 color_map { [0 rgb <0.2, 0.2, 0.6>] [1 rgb 1] } scale 0.5 rotate x * 90 } }
