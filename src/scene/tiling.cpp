@@ -171,10 +171,15 @@ constexpr double kLeaningLeft[] = {-1, 0, 0, 0, -0.5, kH, -1.5, kH};
 constexpr Tile kRhombi[] = {{0, kLeaningRight}, {1, kStanding}, {2, kLeaningLeft}};
 constexpr LatticeTiling kTiling5{3, 0, 1.5, kH, 3, kSqrt3 / 4.0, kRhombi};
 
+// Tiling 4: the right-leaning rhombi alone, lattice (1, 0) and (0.5,
+// sqrt3/2).
+constexpr Tile kLozenge[] = {{0, kLeaningRight}};
+constexpr LatticeTiling kTiling4{1, 0, 0.5, kH, 1, kSqrt3 / 4.0, kLozenge};
+
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 3) || (n >= 5 && n <= 7);
+    return n >= 1 && n <= 7;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -185,6 +190,8 @@ double tilingValue(int n, const Vec3& p) {
             return hexagons(p);
         case 3:
             return triangles(p);
+        case 4:
+            return latticeTilingValue(kTiling4, p);
         case 5:
             return latticeTilingValue(kTiling5, p);
         case 6:

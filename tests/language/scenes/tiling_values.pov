@@ -1,4 +1,4 @@
-// tiling 1 (squares), 2 (hexagons), 3 (triangles), 5 (rhombi), 6 (herringbone), 7 (octagons and squares)
+// tiling 1 (squares), 2 (hexagons), 3 (triangles), 4 and 5 (rhombi), 6 (herringbone), 7 (octagons and squares)
 // and single-cell pavement: pattern values read through pigment_pattern
 // (povray 3.7 refuses tiling and pavement in a pattern function).
 #version 3.7;
@@ -6,6 +6,7 @@ global_settings { assumed_gamma 1.0 }
 #declare T1 = function { pattern { pigment_pattern { tiling 1 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T2 = function { pattern { pigment_pattern { tiling 2 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T3 = function { pattern { pigment_pattern { tiling 3 color_map { [0 rgb 0] [1 rgb 1] } } } }
+#declare T4 = function { pattern { pigment_pattern { tiling 4 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T5 = function { pattern { pigment_pattern { tiling 5 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T6 = function { pattern { pigment_pattern { tiling 6 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T7 = function { pattern { pigment_pattern { tiling 7 color_map { [0 rgb 0] [1 rgb 1] } } } }
@@ -19,7 +20,7 @@ global_settings { assumed_gamma 1.0 }
   #local X = (rand(S) - 0.5) * 8;
   #local Y = (rand(S) - 0.5) * 8;
   #local Z = (rand(S) - 0.5) * 8;
-  #write (Out, str(X, 0, 4), " ", str(Z, 0, 4), ": ", str(T1(X, Y, Z), 0, 5), " ", str(T2(X, Y, Z), 0, 5), " ", str(T3(X, Y, Z), 0, 5), " ", str(T5(X, Y, Z), 0, 5), " ", str(T6(X, Y, Z), 0, 5), " ", str(T7(X, Y, Z), 0, 5), "\n")
+  #write (Out, str(X, 0, 4), " ", str(Z, 0, 4), ": ", str(T1(X, Y, Z), 0, 5), " ", str(T2(X, Y, Z), 0, 5), " ", str(T3(X, Y, Z), 0, 5), " ", str(T4(X, Y, Z), 0, 5), " ", str(T5(X, Y, Z), 0, 5), " ", str(T6(X, Y, Z), 0, 5), " ", str(T7(X, Y, Z), 0, 5), "\n")
   #write (Out, "  pavement ", str(P3(X, Y, Z), 0, 5), " ", str(P4(X, Y, Z), 0, 5), " ", str(P4r(X, Y, Z), 0, 5), " ", str(P6(X, Y, Z), 0, 5), "\n")
 #end
 #fclose Out
