@@ -176,10 +176,29 @@ constexpr LatticeTiling kTiling5{3, 0, 1.5, kH, 3, kSqrt3 / 4.0, kRhombi};
 constexpr Tile kLozenge[] = {{0, kLeaningRight}};
 constexpr LatticeTiling kTiling4{1, 0, 0.5, kH, 1, kSqrt3 / 4.0, kLozenge};
 
+// Tiling 8: rows of unit squares (kind 2) between rows of unit triangles
+// pointing +z (kind 0) and -z (kind 1), each row of squares shifted half a
+// square from the last; lattice (1, 0) and (0.5, 1 + sqrt3/2); shaded over
+// the triangles' inradius sqrt3/6 (the squares stay flat inside it).
+constexpr double kUpTriangle[] = {-0.5, -kH, 0.5, -kH, 0, 0};
+constexpr double kDownTriangle[] = {0, 0, 0.5, -kH, 1, 0};
+constexpr double kUnitSquare[] = {0, 0, 1, 0, 1, 1, 0, 1};
+constexpr Tile kSquaresAndTriangles[] = {{0, kUpTriangle}, {1, kDownTriangle}, {2, kUnitSquare}};
+// Tiling 9: hexagons of unit side (kind 2) with the triangles between them
+// pointing +z (kind 0) and -z (kind 1); lattice (2, 0) and (1, sqrt3);
+// shaded over the triangles' inradius.
+constexpr double kTrihexUp[] = {-1, 0, 0, 0, -0.5, kH};
+constexpr double kTrihexDown[] = {-0.5, kH, 0, 2 * kH, -1, 2 * kH};
+constexpr double kTrihexHexagon[] = {0, 0, 1, 0, 1.5, kH, 1, 2 * kH, 0, 2 * kH, -0.5, kH};
+constexpr Tile kTrihexagonal[] = {{0, kTrihexUp}, {1, kTrihexDown}, {2, kTrihexHexagon}};
+constexpr LatticeTiling kTiling9{2, 0, 1, kSqrt3, 3, kSqrt3 / 6.0, kTrihexagonal};
+
+constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
+
 }  // namespace
 
 bool tilingSupported(int n) {
-    return n >= 1 && n <= 7;
+    return n >= 1 && n <= 9;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -198,6 +217,10 @@ double tilingValue(int n, const Vec3& p) {
             return herringbone(p);
         case 7:
             return octagonsAndSquares(p);
+        case 8:
+            return latticeTilingValue(kTiling8, p);
+        case 9:
+            return latticeTilingValue(kTiling9, p);
         default:
             return 0.0;
     }

@@ -1,0 +1,11 @@
+// Conformance: tilings 8 and up (semi-regular tilings of triangles,
+// squares and hexagons), one per object, with colour maps that separate
+// the kinds of tile.
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -9> look_at <0, 0.8, 0> angle 50 }
+light_source { <-5, 9, -7> color rgb 1 }
+#declare Kinds3 = color_map { [0 rgb <0.6, 0.1, 0.1>] [0.333 rgb <1, 0.8, 0.7>] [0.333 rgb <0.1, 0.4, 0.1>] [0.667 rgb <0.8, 1, 0.7>] [0.667 rgb <0.1, 0.1, 0.5>] [1 rgb <0.8, 0.8, 1>] }
+
+plane { y, 0 pigment { tiling 8 color_map { Kinds3 } scale 0.6 } }
+sphere { <-2.6, 1, 0>, 1 pigment { tiling 9 color_map { Kinds3 } scale 0.3 rotate x * -60 } }
