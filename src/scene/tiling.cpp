@@ -193,12 +193,28 @@ constexpr double kTrihexHexagon[] = {0, 0, 1, 0, 1.5, kH, 1, 2 * kH, 0, 2 * kH, 
 constexpr Tile kTrihexagonal[] = {{0, kTrihexUp}, {1, kTrihexDown}, {2, kTrihexHexagon}};
 constexpr LatticeTiling kTiling9{2, 0, 1, kSqrt3, 3, kSqrt3 / 6.0, kTrihexagonal};
 
+// Tiling 10: unit squares in rows shifted by half a square (running bond);
+// lattice (1, 0) and (0.5, 1).
+constexpr Tile kBond[] = {{0, kUnitSquare}};
+constexpr LatticeTiling kTiling10{1, 0, 0.5, 1, 1, 0.5, kBond};
+
+// Tiling 11: in every 3 x 3 block a unit square (kind 0) pinwheeled by two
+// lying 2 x 1 rectangles (kind 1) and two standing ones (kind 2).
+constexpr double kPinSquare[] = {1, 1, 2, 1, 2, 2, 1, 2};
+constexpr double kPinLying1[] = {0, 2, 2, 2, 2, 3, 0, 3};
+constexpr double kPinLying2[] = {1, 0, 3, 0, 3, 1, 1, 1};
+constexpr double kPinStanding1[] = {0, 0, 1, 0, 1, 2, 0, 2};
+constexpr double kPinStanding2[] = {2, 1, 3, 1, 3, 3, 2, 3};
+constexpr Tile kPinwheel[] = {
+    {0, kPinSquare}, {1, kPinLying1}, {1, kPinLying2}, {2, kPinStanding1}, {2, kPinStanding2}};
+constexpr LatticeTiling kTiling11{3, 0, 0, 3, 3, 0.5, kPinwheel};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 }  // namespace
 
 bool tilingSupported(int n) {
-    return n >= 1 && n <= 9;
+    return n >= 1 && n <= 11;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -221,6 +237,10 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling8, p);
         case 9:
             return latticeTilingValue(kTiling9, p);
+        case 10:
+            return latticeTilingValue(kTiling10, p);
+        case 11:
+            return latticeTilingValue(kTiling11, p);
         default:
             return 0.0;
     }
