@@ -209,12 +209,42 @@ constexpr Tile kPinwheel[] = {
     {0, kPinSquare}, {1, kPinLying1}, {1, kPinLying2}, {2, kPinStanding1}, {2, kPinStanding2}};
 constexpr LatticeTiling kTiling11{3, 0, 0, 3, 3, 0.5, kPinwheel};
 
+// Tiling 12: a 6 x 6 block of unit squares (kind 0), lying 2 x 1
+// rectangles (kind 1) and standing ones (kind 2), mapped from povray's
+// values cell by cell.
+constexpr double kBasketS0[] = {1, 1, 2, 1, 2, 2, 1, 2};
+constexpr double kBasketS1[] = {4, 1, 5, 1, 5, 2, 4, 2};
+constexpr double kBasketS2[] = {1, 4, 2, 4, 2, 5, 1, 5};
+constexpr double kBasketS3[] = {4, 4, 5, 4, 5, 5, 4, 5};
+constexpr double kBasketH0[] = {0, 2, 2, 2, 2, 3, 0, 3};
+constexpr double kBasketH1[] = {0, 3, 2, 3, 2, 4, 0, 4};
+constexpr double kBasketH2[] = {4, 2, 6, 2, 6, 3, 4, 3};
+constexpr double kBasketH3[] = {4, 3, 6, 3, 6, 4, 4, 4};
+constexpr double kBasketH4[] = {1, 5, 3, 5, 3, 6, 1, 6};
+constexpr double kBasketH5[] = {3, 5, 5, 5, 5, 6, 3, 6};
+constexpr double kBasketH6[] = {1, 0, 3, 0, 3, 1, 1, 1};
+constexpr double kBasketH7[] = {3, 0, 5, 0, 5, 1, 3, 1};
+constexpr double kBasketV0[] = {5, 4, 6, 4, 6, 6, 5, 6};
+constexpr double kBasketV1[] = {0, 4, 1, 4, 1, 6, 0, 6};
+constexpr double kBasketV2[] = {5, 0, 6, 0, 6, 2, 5, 2};
+constexpr double kBasketV3[] = {0, 0, 1, 0, 1, 2, 0, 2};
+constexpr double kBasketV4[] = {2, 3, 3, 3, 3, 5, 2, 5};
+constexpr double kBasketV5[] = {3, 3, 4, 3, 4, 5, 3, 5};
+constexpr double kBasketV6[] = {2, 1, 3, 1, 3, 3, 2, 3};
+constexpr double kBasketV7[] = {3, 1, 4, 1, 4, 3, 3, 3};
+constexpr Tile kBasketweave[] = {{0, kBasketS0}, {0, kBasketS1}, {0, kBasketS2}, {0, kBasketS3},
+                                 {1, kBasketH0}, {1, kBasketH1}, {1, kBasketH2}, {1, kBasketH3},
+                                 {1, kBasketH4}, {1, kBasketH5}, {1, kBasketH6}, {1, kBasketH7},
+                                 {2, kBasketV0}, {2, kBasketV1}, {2, kBasketV2}, {2, kBasketV3},
+                                 {2, kBasketV4}, {2, kBasketV5}, {2, kBasketV6}, {2, kBasketV7}};
+constexpr LatticeTiling kTiling12{6, 0, 0, 6, 3, 0.5, kBasketweave};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 }  // namespace
 
 bool tilingSupported(int n) {
-    return n >= 1 && n <= 11;
+    return n >= 1 && n <= 12;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -241,6 +271,8 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling10, p);
         case 11:
             return latticeTilingValue(kTiling11, p);
+        case 12:
+            return latticeTilingValue(kTiling12, p);
         default:
             return 0.0;
     }
