@@ -239,12 +239,35 @@ constexpr Tile kBasketweave[] = {{0, kBasketS0}, {0, kBasketS1}, {0, kBasketS2},
                                  {2, kBasketV4}, {2, kBasketV5}, {2, kBasketV6}, {2, kBasketV7}};
 constexpr LatticeTiling kTiling12{6, 0, 0, 6, 3, 0.5, kBasketweave};
 
+// Tiling 18: 2 x 2 blocks in a checkerboard, split into two lying 2 x 1
+// rectangles (kind 0) or two standing ones (kind 1); the block [0, 2] x
+// [0, 2] stands.
+constexpr double kWeaveStanding1[] = {0, 0, 1, 0, 1, 2, 0, 2};
+constexpr double kWeaveStanding2[] = {1, 0, 2, 0, 2, 2, 1, 2};
+constexpr double kWeaveStanding3[] = {2, 2, 3, 2, 3, 4, 2, 4};
+constexpr double kWeaveStanding4[] = {3, 2, 4, 2, 4, 4, 3, 4};
+constexpr double kWeaveLying1[] = {2, 0, 4, 0, 4, 1, 2, 1};
+constexpr double kWeaveLying2[] = {2, 1, 4, 1, 4, 2, 2, 2};
+constexpr double kWeaveLying3[] = {0, 2, 2, 2, 2, 3, 0, 3};
+constexpr double kWeaveLying4[] = {0, 3, 2, 3, 2, 4, 0, 4};
+constexpr Tile kBlockWeave[] = {{1, kWeaveStanding1}, {1, kWeaveStanding2}, {1, kWeaveStanding3},
+                                {1, kWeaveStanding4}, {0, kWeaveLying1},    {0, kWeaveLying2},
+                                {0, kWeaveLying3},    {0, kWeaveLying4}};
+constexpr LatticeTiling kTiling18{4, 0, 0, 4, 2, 0.5, kBlockWeave};
+
+// Tiling 15: the Pythagorean tiling of unit squares (kind 0) and 2 x 2
+// squares (kind 1, flat inside the shade width 0.5); lattice (2, 1) and
+// (1, -2).
+constexpr double kPythagoreanBig[] = {-2, 0, 0, 0, 0, 2, -2, 2};
+constexpr Tile kPythagorean[] = {{0, kUnitSquare}, {1, kPythagoreanBig}};
+constexpr LatticeTiling kTiling15{2, 1, 1, -2, 2, 0.5, kPythagorean};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 }  // namespace
 
 bool tilingSupported(int n) {
-    return n >= 1 && n <= 12;
+    return (n >= 1 && n <= 12) || n == 15 || n == 18;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -273,6 +296,10 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling11, p);
         case 12:
             return latticeTilingValue(kTiling12, p);
+        case 15:
+            return latticeTilingValue(kTiling15, p);
+        case 18:
+            return latticeTilingValue(kTiling18, p);
         default:
             return 0.0;
     }
