@@ -262,12 +262,49 @@ constexpr double kPythagoreanBig[] = {-2, 0, 0, 0, 0, 2, -2, 2};
 constexpr Tile kPythagorean[] = {{0, kUnitSquare}, {1, kPythagoreanBig}};
 constexpr LatticeTiling kTiling15{2, 1, 1, -2, 2, 0.5, kPythagorean};
 
+// Tiling 16: rhombitrihexagonal (3.4.6.4): unit hexagons (kind 2, one
+// centred at (-1, 0) with corners along x), unit squares on their edges
+// (kind 0) and triangles at their corners (kind 1); lattice (1 + sqrt3)
+// (cos 30, sin 30) and (0, 1 + sqrt3); shaded over the triangles' inradius.
+constexpr double kRhombiHexagon[] = {
+    0,  0, -0.49999999999999989, 0.8660254037844386,   -1.4999999999999998,  0.86602540378443871,
+    -2, 0, -1.5000000000000004,  -0.86602540378443837, -0.49999999999999989, -0.8660254037844386};
+constexpr double kRhombiSquare1[] = {0,
+                                     0,
+                                     0.86602540378443871,
+                                     0.49999999999999994,
+                                     0.36602540378443882,
+                                     1.3660254037844386,
+                                     -0.49999999999999989,
+                                     0.8660254037844386};
+constexpr double kRhombiSquare2[] = {
+    -0.49999999999999989, 0.8660254037844386, -0.49999999999999983, 1.8660254037844386,
+    -1.4999999999999998,  1.8660254037844388, -1.4999999999999998,  0.86602540378443871};
+constexpr double kRhombiSquare3[] = {-1.4999999999999998,
+                                     0.86602540378443871,
+                                     -2.3660254037844384,
+                                     1.3660254037844386,
+                                     -2.8660254037844388,
+                                     0.50000000000000011,
+                                     -2,
+                                     0};
+constexpr double kRhombiTriangle1[] = {
+    0, 0, 0.86602540378443871, -0.49999999999999994, 0.86602540378443871, 0.49999999999999994};
+constexpr double kRhombiTriangle2[] = {-0.49999999999999989, 0.8660254037844386,
+                                       0.36602540378443882,  1.3660254037844386,
+                                       -0.49999999999999983, 1.8660254037844386};
+constexpr Tile kRhombitrihexagonal[] = {{2, kRhombiHexagon},   {0, kRhombiSquare1},
+                                        {0, kRhombiSquare2},   {0, kRhombiSquare3},
+                                        {1, kRhombiTriangle1}, {1, kRhombiTriangle2}};
+constexpr LatticeTiling kTiling16{2.3660254037844388, 1.3660254037844384, 0, 2.7320508075688772, 3,
+                                  kSqrt3 / 6.0,       kRhombitrihexagonal};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 12) || n == 15 || n == 18;
+    return (n >= 1 && n <= 12) || n == 15 || n == 16 || n == 18;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -298,6 +335,8 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling12, p);
         case 15:
             return latticeTilingValue(kTiling15, p);
+        case 16:
+            return latticeTilingValue(kTiling16, p);
         case 18:
             return latticeTilingValue(kTiling18, p);
         default:
