@@ -345,10 +345,40 @@ constexpr LatticeTiling kTiling22{3.7320508075688772, 0, 1.8660254037844386,
 
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
+// Tilings of the unit triangles of tiling 3 where the six triangles round
+// every vertex of an index-7 sublattice merge into a hexagon (snub
+// hexagonal, 3.3.3.3.6): a vertex (u, v) (at x = u + v/2, z = v sqrt3/2) is
+// a hexagon centre when (a (u - u0) + b (v - v0)) mod 7 is 0. Triangles pointing
+// +z are kind 0, -z kind 1, hexagons kind 2 (flat inside the triangles'
+// inradius).
+double snubHexagonal(const Vec3& p, long long u0, long long v0, long long a, long long b) {
+    const double u = p.x - p.z / kSqrt3, v = p.z * 2.0 / kSqrt3;
+    const double iu = std::floor(u), iv = std::floor(v);
+    const double fu = u - iu, fv = v - iv;
+    const bool up = fu + fv < 1.0;
+    const auto cu = static_cast<long long>(iu), cv = static_cast<long long>(iv);
+    const long long corners[3][2] = {
+        {up ? cu : cu + 1, up ? cv : cv + 1}, {cu + 1, cv}, {cu, cv + 1}};
+    for (const auto& c : corners) {
+        const long long r = (a * (c[0] - u0) + b * (c[1] - v0)) % 7;
+        if (r != 0) continue;
+        const Vec3 centre{static_cast<double>(c[0]) + 0.5 * static_cast<double>(c[1]), 0,
+                          kSqrt3 / 2.0 * static_cast<double>(c[1])};
+        // hexagonalDistance measures from the lattice through x0; shift the
+        // point so that this centre is the lattice's origin.
+        const double h = hexagonalDistance(p - centre, 0.0);
+        const double d = kSqrt3 / 2.0 * (1.0 - h);
+        return (2.0 + std::max(0.0, 1.0 - d / (kSqrt3 / 6.0))) / 3.0;
+    }
+    const double m =
+        up ? std::min({fu, fv, 1.0 - fu - fv}) : std::min({1.0 - fu, 1.0 - fv, fu + fv - 1.0});
+    return ((up ? 0.0 : 1.0) + 1.0 - 3.0 * m) / 3.0;
+}
+
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 12) || n == 15 || n == 16 || n == 18 || n == 22;
+    return (n >= 1 && n <= 12) || n == 15 || n == 16 || n == 18 || n == 19 || n == 20 || n == 22;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -383,6 +413,13 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling16, p);
         case 18:
             return latticeTilingValue(kTiling18, p);
+        case 19:
+            // Centres at (-1, 0) + the lattice of (1, 2) and (-2, 3).
+            return snubHexagonal(p, -1, 0, 3, 2);
+        case 20:
+            // The mirror image: centres at (0.5, -sqrt3/2) + the lattice of
+            // (2, 1) and (-1, 3).
+            return snubHexagonal(p, 1, -1, 3, 1);
         case 22:
             return latticeTilingValue(kTiling22, p);
         default:
