@@ -343,6 +343,70 @@ constexpr LatticeTiling kTiling22{3.7320508075688772, 0, 1.8660254037844386,
                                   3.2320508075688772, 3, kSqrt3 / 6.0,
                                   kTruncatedHexagonal};
 
+// Tilings 23 and 24: truncated trihexagonal (4.6.12) of unit edges: a
+// dodecagon centred at (0, -0.5 - sqrt3/2) with an edge on z = 0.5, the
+// hexagons on every other edge (one centred at (0, 0.5 + sqrt3/2), corners
+// along x) and squares between; lattice (3 + sqrt3) (1, 0) and (3 + sqrt3)
+// (1/2, sqrt3/2); shaded over the squares' inradius 0.5. Tiling 23 has
+// hexagons 0, squares 1, dodecagons 2; tiling 24 tells the squares' three
+// directions apart.
+constexpr double kTtDodecagon[] = {1.866025403784439,
+                                   -0.8660254037844386,
+                                   1.366025403784439,
+                                   0,
+                                   0.5,
+                                   0.50000000000000044,
+                                   -0.50000000000000022,
+                                   0.50000000000000044,
+                                   -1.3660254037844388,
+                                   0,
+                                   -1.8660254037844388,
+                                   -0.86602540378443804,
+                                   -1.866025403784439,
+                                   -1.8660254037844388,
+                                   -1.366025403784439,
+                                   -2.7320508075688776,
+                                   -0.49999999999999983,
+                                   -3.2320508075688776,
+                                   0.49999999999999917,
+                                   -3.2320508075688776,
+                                   1.3660254037844386,
+                                   -2.7320508075688776,
+                                   1.866025403784439,
+                                   -1.8660254037844386};
+constexpr double kTtHexagon1[] = {1.0000000000000002,   1.3660254037844386,   0.50000000000000033,
+                                  2.2320508075688772,   -0.49999999999999961, 2.2320508075688772,
+                                  -0.99999999999999978, 1.3660254037844388,   -0.50000000000000022,
+                                  0.50000000000000022,  0.50000000000000033,  0.5};
+constexpr double kTtHexagon2[] = {3.3660254037844388, 0,
+                                  2.8660254037844388, 0.86602540378443837,
+                                  1.866025403784439,  0.86602540378443849,
+                                  1.3660254037844388, 0,
+                                  1.8660254037844384, -0.8660254037844386,
+                                  2.8660254037844388, -0.86602540378443882};
+constexpr double kTtSquare1[] = {2.8660254037844384,   -0.8660254037844386, 1.8660254037844384,
+                                 -0.86602540378443849, 1.8660254037844384,  -1.8660254037844386,
+                                 2.8660254037844384,   -1.8660254037844388};
+constexpr double kTtSquare2[] = {1,
+                                 1.3660254037844384,
+                                 0.5,
+                                 0.49999999999999961,
+                                 1.3660254037844384,
+                                 0,
+                                 1.8660254037844388,
+                                 0.86602540378443793};
+constexpr double kTtSquare3[] = {
+    -1.8660254037844379,  0.86602540378443893, -1.3660254037844379,  0,
+    -0.49999999999999933, 0.50000000000000011, -0.99999999999999944, 1.3660254037844388};
+constexpr Tile kTruncTrihex3[] = {{0, kTtHexagon1}, {0, kTtHexagon2}, {1, kTtSquare1},
+                                  {1, kTtSquare2},  {1, kTtSquare3},  {2, kTtDodecagon}};
+constexpr LatticeTiling kTiling23{
+    4.7320508075688767, 0, 2.3660254037844384, 4.0980762113533151, 3, 0.5, kTruncTrihex3};
+constexpr Tile kTruncTrihex5[] = {{0, kTtHexagon1}, {0, kTtHexagon2}, {1, kTtSquare1},
+                                  {2, kTtSquare2},  {3, kTtSquare3},  {4, kTtDodecagon}};
+constexpr LatticeTiling kTiling24{
+    4.7320508075688767, 0, 2.3660254037844384, 4.0980762113533151, 5, 0.5, kTruncTrihex5};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 // Tilings of the unit triangles of tiling 3 where the six triangles round
@@ -378,7 +442,8 @@ double snubHexagonal(const Vec3& p, long long u0, long long v0, long long a, lon
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 12) || n == 15 || n == 16 || n == 18 || n == 19 || n == 20 || n == 22;
+    return (n >= 1 && n <= 12) || n == 15 || n == 16 || n == 18 || n == 19 || n == 20 ||
+           (n >= 22 && n <= 24);
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -422,6 +487,10 @@ double tilingValue(int n, const Vec3& p) {
             return snubHexagonal(p, 1, -1, 3, 1);
         case 22:
             return latticeTilingValue(kTiling22, p);
+        case 23:
+            return latticeTilingValue(kTiling23, p);
+        case 24:
+            return latticeTilingValue(kTiling24, p);
         default:
             return 0.0;
     }
