@@ -30,7 +30,7 @@ global_settings { assumed_gamma 1.0 }
 #declare P4r = function { pattern { pigment_pattern { pavement number_of_sides 4 exterior 2 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare P6 = function { pattern { pigment_pattern { pavement number_of_sides 6 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #fopen Out "tiling_values.out" write
-#declare S = seed(11);
+#declare S = seed(12);
 #for (I, 0, 39)
   #local X = (rand(S) - 0.5) * 8;
   #local Y = (rand(S) - 0.5) * 8;
