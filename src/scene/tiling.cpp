@@ -407,6 +407,21 @@ constexpr Tile kTruncTrihex5[] = {{0, kTtHexagon1}, {0, kTtHexagon2}, {1, kTtSqu
 constexpr LatticeTiling kTiling24{
     4.7320508075688767, 0, 2.3660254037844384, 4.0980762113533151, 5, 0.5, kTruncTrihex5};
 
+// Tiling 21: snub square (3.3.4.3.4) of unit edges: squares centred at
+// (c, c) (kind 4) and (c, -c) (kind 5), c = (1 + sqrt3) / 4, turned by
+// +-15 degrees, and triangles in four directions (kinds 0 to 3); lattice
+// (2c, 2c) and (2c, -2c); shaded over the triangles' inradius.
+constexpr double kQ = 0.5 + kH;  // 2c
+constexpr double kSnubTriangle0[] = {0, -0.5, kH, 0, 0, 0.5};
+constexpr double kSnubTriangle1[] = {0, 0.5, 0.5, kQ, -0.5, kQ};
+constexpr double kSnubTriangle2[] = {0, -0.5, 0, 0.5, -kH, 0};
+constexpr double kSnubTriangle3[] = {-0.5, -kQ, 0.5, -kQ, 0, -0.5};
+constexpr double kSnubSquare1[] = {0, 0.5, kH, 0, kQ, kH, 0.5, kQ};
+constexpr double kSnubSquare2[] = {0.5, -kQ, kQ, -kH, kH, 0, 0, -0.5};
+constexpr Tile kSnubSquare[] = {{0, kSnubTriangle0}, {1, kSnubTriangle1}, {2, kSnubTriangle2},
+                                {3, kSnubTriangle3}, {4, kSnubSquare1},   {5, kSnubSquare2}};
+constexpr LatticeTiling kTiling21{kQ, kQ, kQ, -kQ, 6, kSqrt3 / 6.0, kSnubSquare};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 // Tilings of the unit triangles of tiling 3 where the six triangles round
@@ -442,8 +457,7 @@ double snubHexagonal(const Vec3& p, long long u0, long long v0, long long a, lon
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 12) || n == 15 || n == 16 || n == 18 || n == 19 || n == 20 ||
-           (n >= 22 && n <= 24);
+    return (n >= 1 && n <= 12) || n == 15 || n == 16 || (n >= 18 && n <= 24);
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -485,6 +499,8 @@ double tilingValue(int n, const Vec3& p) {
             // The mirror image: centres at (0.5, -sqrt3/2) + the lattice of
             // (2, 1) and (-1, 3).
             return snubHexagonal(p, 1, -1, 3, 1);
+        case 21:
+            return latticeTilingValue(kTiling21, p);
         case 22:
             return latticeTilingValue(kTiling22, p);
         case 23:
