@@ -301,6 +301,14 @@ constexpr Tile kRhombitrihexagonal[] = {{2, kRhombiHexagon},   {0, kRhombiSquare
                                         {1, kRhombiTriangle1}, {1, kRhombiTriangle2}};
 constexpr LatticeTiling kTiling16{2.3660254037844388, 1.3660254037844384, 0, 2.7320508075688772, 3,
                                   kSqrt3 / 6.0,       kRhombitrihexagonal};
+// Tiling 17: the same tiles in six kinds: squares facing 90, 30 and 150
+// degrees 0, 1, 2; triangles at the hexagon's corners at 60 and 0 degrees
+// 3 and 4; hexagons 5 (measured at each tile's centre).
+constexpr Tile kRhombitrihexagonal6[] = {{5, kRhombiHexagon},   {1, kRhombiSquare1},
+                                         {0, kRhombiSquare2},   {2, kRhombiSquare3},
+                                         {4, kRhombiTriangle1}, {3, kRhombiTriangle2}};
+constexpr LatticeTiling kTiling17{2.3660254037844388, 1.3660254037844384,  0, 2.7320508075688772, 6,
+                                  kSqrt3 / 6.0,       kRhombitrihexagonal6};
 
 // Tiling 22: truncated hexagonal (3.12.12): dodecagons of unit side (kind
 // 2, one centred at (0, -0.5 - sqrt3/2) with an edge on z = 0.5) and the
@@ -457,7 +465,7 @@ double snubHexagonal(const Vec3& p, long long u0, long long v0, long long a, lon
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 12) || n == 15 || n == 16 || (n >= 18 && n <= 24);
+    return (n >= 1 && n <= 12) || (n >= 15 && n <= 24);
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -490,6 +498,8 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling15, p);
         case 16:
             return latticeTilingValue(kTiling16, p);
+        case 17:
+            return latticeTilingValue(kTiling17, p);
         case 18:
             return latticeTilingValue(kTiling18, p);
         case 19:
