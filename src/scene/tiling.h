@@ -1,8 +1,12 @@
-// The tiling and pavement patterns (povray 3.7's `tiling N`): tiles in the xz plane, each
-// shaded from 0 at its centre to 1 at its edges, the value band split
-// between the tilings' kinds of tile (measured from povray's renders).
-// Only the three regular tilings are implemented: 1 squares, 2 hexagons, 3
-// triangles; the parser refuses the others.
+// The tiling and pavement patterns (povray 3.7's `tiling N` and
+// `pavement`): tiles in the xz plane. A tiling with K kinds of tile gives a
+// tile of kind k the values k/K (inside) to (k+1)/K (on its edges): 1 - d/w
+// clamped at 0, d the distance to the tile's nearest edge and w the
+// tiling's shade width (mostly the inradius of its smallest tile). All
+// geometry, kinds and widths were measured from povray's values (read
+// through pigment_pattern); points exactly on an edge may pick another
+// tile than povray. Tilings 13, 14 and the five-fold 25 to 27 are not
+// implemented and the parser refuses them.
 #pragma once
 
 #include "util/vec3.h"
