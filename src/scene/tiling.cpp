@@ -137,8 +137,10 @@ double latticeTilingValue(const LatticeTiling& t, const Vec3& p) {
     const double det = t.ax * t.bz - t.az * t.bx;
     const double s = std::floor((p.x * t.bz - p.z * t.bx) / det);
     const double u = std::floor((t.ax * p.z - t.az * p.x) / det);
-    for (int n = -2; n <= 2; ++n)
-        for (int m = -2; m <= 2; ++m) {
+    // The point's own cell first: most points are found there.
+    constexpr int kOffsets[] = {0, -1, 1, -2, 2};
+    for (const int n : kOffsets)
+        for (const int m : kOffsets) {
             const double ox = (s + n) * t.ax + (u + m) * t.bx;
             const double oz = (s + n) * t.az + (u + m) * t.bz;
             const double x = p.x - ox, z = p.z - oz;
