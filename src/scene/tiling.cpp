@@ -432,6 +432,27 @@ constexpr Tile kSnubSquare[] = {{0, kSnubTriangle0}, {1, kSnubTriangle1}, {2, kS
                                 {3, kSnubTriangle3}, {4, kSnubSquare1},   {5, kSnubSquare2}};
 constexpr LatticeTiling kTiling21{kQ, kQ, kQ, -kQ, 6, kSqrt3 / 6.0, kSnubSquare};
 
+// Tiling 14: squares of side sqrt2 (kind 4) on a 2 sqrt2 grid, the strips
+// between them cut along their middles and, where they cross, along the
+// diagonals: vertical halves west (kind 0) and east (kind 1), horizontal
+// halves north (kind 2) and south (kind 3); shaded over sqrt2 / 4.
+constexpr double kS2 = 1.4142135623730951, kHalfS2 = kS2 / 2.0, kTwoS2 = 2.0 * kS2;
+constexpr double kCrossSquare[] = {kHalfS2,       kHalfS2,       kHalfS2 + kS2, kHalfS2,
+                                   kHalfS2 + kS2, kHalfS2 + kS2, kHalfS2,       kHalfS2 + kS2};
+constexpr double kCrossWest[] = {0, 0, 0, kTwoS2, -kHalfS2, kHalfS2 + kS2, -kHalfS2, kHalfS2};
+constexpr double kCrossEast[] = {0, 0, kHalfS2, kHalfS2, kHalfS2, kHalfS2 + kS2, 0, kTwoS2};
+constexpr double kCrossNorth[] = {0, 0, kTwoS2, 0, kHalfS2 + kS2, kHalfS2, kHalfS2, kHalfS2};
+constexpr double kCrossSouth[] = {0, 0, kHalfS2, -kHalfS2, kHalfS2 + kS2, -kHalfS2, kTwoS2, 0};
+constexpr Tile kCrossTiles[] = {
+    {0, kCrossWest}, {1, kCrossEast}, {2, kCrossNorth}, {3, kCrossSouth}, {4, kCrossSquare}};
+constexpr LatticeTiling kTiling14{kTwoS2, 0, 0, kTwoS2, 5, kS2 / 4.0, kCrossTiles};
+
+// Tiling 13: the same tiles in three kinds: squares 0, horizontal halves 1,
+// vertical halves 2.
+constexpr Tile kCrossTiles3[] = {
+    {2, kCrossWest}, {2, kCrossEast}, {1, kCrossNorth}, {1, kCrossSouth}, {0, kCrossSquare}};
+constexpr LatticeTiling kTiling13{kTwoS2, 0, 0, kTwoS2, 3, kS2 / 4.0, kCrossTiles3};
+
 constexpr LatticeTiling kTiling8{1, 0, 0.5, 1 + kH, 3, kSqrt3 / 6.0, kSquaresAndTriangles};
 
 // Tilings of the unit triangles of tiling 3 where the six triangles round
@@ -467,7 +488,7 @@ double snubHexagonal(const Vec3& p, long long u0, long long v0, long long a, lon
 }  // namespace
 
 bool tilingSupported(int n) {
-    return (n >= 1 && n <= 12) || (n >= 15 && n <= 24);
+    return n >= 1 && n <= 24;
 }
 
 double tilingValue(int n, const Vec3& p) {
@@ -496,6 +517,10 @@ double tilingValue(int n, const Vec3& p) {
             return latticeTilingValue(kTiling11, p);
         case 12:
             return latticeTilingValue(kTiling12, p);
+        case 13:
+            return latticeTilingValue(kTiling13, p);
+        case 14:
+            return latticeTilingValue(kTiling14, p);
         case 15:
             return latticeTilingValue(kTiling15, p);
         case 16:

@@ -5,8 +5,8 @@
 // tiling's shade width (mostly the inradius of its smallest tile). All
 // geometry, kinds and widths were measured from povray's values (read
 // through pigment_pattern); points exactly on an edge may pick another
-// tile than povray. Tilings 13, 14 and the five-fold 25 to 27 are not
-// implemented and the parser refuses them.
+// tile than povray. The five-fold tilings 25 to 27 are not implemented and
+// the parser refuses them.
 #pragma once
 
 #include "util/vec3.h"

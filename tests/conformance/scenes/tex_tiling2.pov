@@ -1,4 +1,4 @@
-// Conformance: tilings 8 to 12 and 15 to 24 (semi-regular tilings of triangles,
+// Conformance: tilings 8 to 24 (semi-regular tilings of triangles,
 // squares and hexagons, running bond, pinwheel, basketweaves, Pythagorean), one per
 // object, with colour maps that separate the kinds of tile. Points exactly
 // on tile edges are avoided: there povray picks tiles by its own rounding
@@ -24,3 +24,5 @@ sphere { <-2.6, 3.2, 1>, 0.7 pigment { tiling 23 color_map { Kinds3 } translate 
 sphere { <2.6, 3.2, 1>, 0.7 pigment { tiling 24 color_map { [0 rgb 0] [0.2 rgb 1] [0.2 rgb <1, 0, 0>] [0.4 rgb <1, 1, 0>] [0.4 rgb <0, 1, 0>] [0.6 rgb <0, 1, 1>] [0.6 rgb <0, 0, 1>] [0.8 rgb <1, 0, 1>] [0.8 rgb 0.5] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.12 rotate x * -60 } }
 disc { <0, 0.03, -4.2>, y, 0.6 pigment { tiling 21 color_map { [0 rgb <1, 0, 0>] [0.1667 rgb <1, 1, 0>] [0.1667 rgb <0, 1, 0>] [0.3333 rgb <0, 1, 1>] [0.3333 rgb <0, 0, 1>] [0.5 rgb <1, 0, 1>] [0.5 rgb 0.3] [0.6667 rgb 1] [0.6667 rgb <0.5, 0.2, 0>] [0.8333 rgb <1, 0.6, 0.2>] [0.8333 rgb <0, 0.2, 0.5>] [1 rgb <0.3, 0.6, 1>] } translate <0.013, 0, 0.017> scale 0.2 } }
 sphere { <0, 3.2, 3.5>, 0.7 pigment { tiling 17 color_map { [0 rgb <1, 0, 0>] [0.1667 rgb <1, 1, 0>] [0.1667 rgb <0, 1, 0>] [0.3333 rgb <0, 1, 1>] [0.3333 rgb <0, 0, 1>] [0.5 rgb <1, 0, 1>] [0.5 rgb 0.3] [0.6667 rgb 1] [0.6667 rgb <0.5, 0.2, 0>] [0.8333 rgb <1, 0.6, 0.2>] [0.8333 rgb <0, 0.2, 0.5>] [1 rgb <0.3, 0.6, 1>] } translate <0.013, 0, 0.017> scale 0.12 rotate x * -60 } }
+sphere { <-2.6, 3.2, 3.5>, 0.7 pigment { tiling 13 color_map { Kinds3 } translate <0.013, 0, 0.017> scale 0.15 rotate x * -60 } }
+sphere { <2.6, 3.2, 3.5>, 0.7 pigment { tiling 14 color_map { [0 rgb 0] [0.2 rgb 1] [0.2 rgb <1, 0, 0>] [0.4 rgb <1, 1, 0>] [0.4 rgb <0, 1, 0>] [0.6 rgb <0, 1, 1>] [0.6 rgb <0, 0, 1>] [0.8 rgb <1, 0, 1>] [0.8 rgb 0.5] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.15 rotate x * -60 } }

@@ -1,5 +1,5 @@
 // tiling 1 (squares), 2 (hexagons), 3 (triangles), 4 and 5 (rhombi), 6 (herringbone), 7 (octagons and squares),
-// 8 to 12 and 15 to 24
+// 8 to 24
 // and single-cell pavement: pattern values read through pigment_pattern
 // (povray 3.7 refuses tiling and pavement in a pattern function); 4 decimals,
 // as the grey passes through single-precision colours.
@@ -27,6 +27,8 @@ global_settings { assumed_gamma 1.0 }
 #declare T24 = function { pattern { pigment_pattern { tiling 24 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T21 = function { pattern { pigment_pattern { tiling 21 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare T17 = function { pattern { pigment_pattern { tiling 17 color_map { [0 rgb 0] [1 rgb 1] } } } }
+#declare T13 = function { pattern { pigment_pattern { tiling 13 color_map { [0 rgb 0] [1 rgb 1] } } } }
+#declare T14 = function { pattern { pigment_pattern { tiling 14 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare P3 = function { pattern { pigment_pattern { pavement color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare P4 = function { pattern { pigment_pattern { pavement number_of_sides 4 exterior 1 color_map { [0 rgb 0] [1 rgb 1] } } } }
 #declare P4r = function { pattern { pigment_pattern { pavement number_of_sides 4 exterior 2 color_map { [0 rgb 0] [1 rgb 1] } } } }
@@ -38,7 +40,7 @@ global_settings { assumed_gamma 1.0 }
   #local Y = (rand(S) - 0.5) * 8;
   #local Z = (rand(S) - 0.5) * 8;
   #write (Out, str(X, 0, 4), " ", str(Z, 0, 4), ": ", str(T1(X, Y, Z), 0, 4), " ", str(T2(X, Y, Z), 0, 4), " ", str(T3(X, Y, Z), 0, 4), " ", str(T4(X, Y, Z), 0, 4), " ", str(T5(X, Y, Z), 0, 4), " ", str(T6(X, Y, Z), 0, 4), " ", str(T7(X, Y, Z), 0, 4), "\n")
-  #write (Out, "  tilings 8 to 12, 15 to 24: ", str(T8(X, Y, Z), 0, 4), " ", str(T9(X, Y, Z), 0, 4), " ", str(T10(X, Y, Z), 0, 4), " ", str(T11(X, Y, Z), 0, 4), " ", str(T12(X, Y, Z), 0, 4), " ", str(T15(X, Y, Z), 0, 4), " ", str(T16(X, Y, Z), 0, 4), " ", str(T17(X, Y, Z), 0, 4), " ", str(T18(X, Y, Z), 0, 4), " ", str(T19(X, Y, Z), 0, 4), " ", str(T20(X, Y, Z), 0, 4), " ", str(T21(X, Y, Z), 0, 4), " ", str(T22(X, Y, Z), 0, 4), " ", str(T23(X, Y, Z), 0, 4), " ", str(T24(X, Y, Z), 0, 4), "\n")
+  #write (Out, "  tilings 8 to 24: ", str(T8(X, Y, Z), 0, 4), " ", str(T9(X, Y, Z), 0, 4), " ", str(T10(X, Y, Z), 0, 4), " ", str(T11(X, Y, Z), 0, 4), " ", str(T12(X, Y, Z), 0, 4), " ", str(T13(X, Y, Z), 0, 4), " ", str(T14(X, Y, Z), 0, 4), " ", str(T15(X, Y, Z), 0, 4), " ", str(T16(X, Y, Z), 0, 4), " ", str(T17(X, Y, Z), 0, 4), " ", str(T18(X, Y, Z), 0, 4), " ", str(T19(X, Y, Z), 0, 4), " ", str(T20(X, Y, Z), 0, 4), " ", str(T21(X, Y, Z), 0, 4), " ", str(T22(X, Y, Z), 0, 4), " ", str(T23(X, Y, Z), 0, 4), " ", str(T24(X, Y, Z), 0, 4), "\n")
   #write (Out, "  pavement ", str(P3(X, Y, Z), 0, 4), " ", str(P4(X, Y, Z), 0, 4), " ", str(P4r(X, Y, Z), 0, 4), " ", str(P6(X, Y, Z), 0, 4), "\n")
 #end
 #fclose Out
