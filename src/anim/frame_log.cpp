@@ -16,6 +16,10 @@ RunStreams::RunStreams(const options::RenderOptions& o) {
     for (int i = 0; i < options::kTextStreams; ++i) {
         streams_[i].console =
             o.streams[i].console && (i == static_cast<int>(TextStream::All) || all.console);
+        // Why a render failed always reaches the console: with -GA or -GF
+        // povray still prints its fatal line, and a silent non-zero exit
+        // leaves the user nothing to go on.
+        if (i == static_cast<int>(TextStream::Fatal)) streams_[i].console = true;
         if (o.streams[i].file.empty()) continue;
         streams_[i].file = std::fopen(o.streams[i].file.c_str(), "w");
         if (!streams_[i].file)

@@ -22,7 +22,12 @@ std::vector<unsigned char> encode(const EncodeRequest& r) {
                                 : r.pixelType == PixelType::UInt16 ? OIIO::TypeDesc::UINT16
                                                                    : OIIO::TypeDesc::UINT8;
     OIIO::ImageSpec spec(r.width, r.height, r.channels, type);
-    if (r.channels == 4) spec.alpha_channel = 3;
+    if (r.channels == 4) {
+        spec.alpha_channel = 3;
+        // The colour is already un-premultiplied (as povray writes alpha);
+        // without this the writer would divide it by alpha again.
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+    }
     if (r.compression) spec.attribute("compression", r.compression);
     // Encoded in memory: the caller writes the file itself, checking every
     // write (OpenImageIO's own writers do not all report a full disk).

@@ -460,7 +460,10 @@ const OptionSpec kOptions[] = {
      [](RenderOptions& o, const OptionInput& in) { o.outputAlpha = toBool(in); },
      FR_WRITE(onOff(o.outputAlpha)),
      [](const RenderOptions& o) -> const char* {
-         return o.outputAlpha ? "alpha channel output" : nullptr;
+         // PNG and TGA carry the alpha channel; ppm, jpeg, bmp and hdr
+         // cannot and ignore it, as in povray.
+         return o.outputAlpha && o.outputType == 'E' ? "alpha channel output (+UA) to EXR"
+                                                     : nullptr;
      }},
     {"Output_File_Name", "O", OptionType::Path, "scene name",
      "Output image file, or a folder (ending in /) to put it in. Frame numbers are appended in "

@@ -121,6 +121,13 @@ FocalBlurSampler::FocalBlurSampler(const CameraRays& camera) : camera_(camera) {
 
 PixelSample FocalBlurSampler::sample(double x, double y,
                                      const std::function<RGB(const scene::Ray&)>& trace) const {
+    return sample(x, y, std::function<PixelSample(const scene::Ray&)>([&](const scene::Ray& r) {
+                      return PixelSample{trace(r), 0.0};
+                  }));
+}
+
+PixelSample FocalBlurSampler::sample(
+    double x, double y, const std::function<PixelSample(const scene::Ray&)>& trace) const {
     SampleRandom random(x, y);
     PixelSample sum;
     RGB squares;
@@ -146,8 +153,10 @@ PixelSample FocalBlurSampler::sample(double x, double y,
             const Vec3 target = planar_ ? base->direction * (focalDistance_ / directionLength_)
                                         : normalize(base->direction) * focalDistance_;
             const scene::Ray ray{base->origin + offset, normalize(target - offset)};
-            const RGB colour = trace(ray);
+            const PixelSample traced = trace(ray);
+            const RGB& colour = traced.rgb;
             sum.rgb += colour;
+            sum.transmit += traced.transmit;
             squares += RGB(colour.r * colour.r, colour.g * colour.g, colour.b * colour.b);
         }
         if (n >= maxSamples_) break;

@@ -29,6 +29,10 @@ class FocalBlurSampler {
     // [i, i+1) x [j, j+1)); trace() returns the colour along a ray.
     PixelSample sample(double x, double y,
                        const std::function<RGB(const scene::Ray&)>& trace) const;
+    // The same with trace() giving colour and transmittance (alpha
+    // output); both are averaged, the stopping test sees the colour.
+    PixelSample sample(double x, double y,
+                       const std::function<PixelSample(const scene::Ray&)>& trace) const;
 
     // Aperture positions in the unit disc, in the order they are used.
     const std::vector<std::pair<double, double>>& grid() const { return grid_; }

@@ -55,7 +55,7 @@ struct GridSampler {
         if (dist == 0) return light.color;
         dir = dir / dist;
         ++shadowRays;
-        return light.color * world.shadowFilter({p, dir}, selfHit, dist, selfHit);
+        return light.color * world.shadowFilter({p, dir}, selfHit, dist, selfHit, &light);
     }
 };
 
@@ -101,6 +101,16 @@ RGB subdivideAreaGrid(int size1, int size2, int adaptive,
     return block(block, 0, 0, size1 - 1, size2 - 1, 0);
 }
 
+LightsFor::LightsFor(const std::vector<scene::Light>& scene, const scene::Object& primitive) {
+    const scene::LightGroup* group = primitive.lightGroup.get();
+    if (!group) {
+        first_ = scene;
+        return;
+    }
+    if (group->globalLights) first_ = scene;
+    second_ = group->lights;
+}
+
 bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path) {
     if (light.parallel || light.kind == scene::LightKind::Cylinder) {
         // Light travels along the axis; the way back to it is the reverse
@@ -142,7 +152,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
         light.isArea && quality.areaLights && (light.area.size1 > 1 || light.area.size2 > 1);
     if (!sampleArea) {
         ++shadowRays;
-        return color * world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit);
+        return color *
+               world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit, &light);
     }
 
     const scene::AreaLight& area = light.area;

@@ -11,9 +11,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
+#include <vector>
 
 #include "render/world.h"
 #include "scene/lights.h"
+#include "scene/object.h"
 #include "util/color.h"
 
 namespace frameray::render {
@@ -25,6 +28,36 @@ struct LightingQuality {
     bool areaLights = true;
 
     static LightingQuality forQuality(int quality) { return {quality >= 4, quality >= 5}; }
+};
+
+// The lights that shade one primitive: the scene's, its light group's
+// (scene::LightGroup), or both in that order. Iterable with a range for.
+class LightsFor {
+  public:
+    LightsFor(const std::vector<scene::Light>& scene, const scene::Object& primitive);
+
+    class Iterator {
+      public:
+        Iterator(const LightsFor* list, size_t index) : list_(list), index_(index) {}
+        const scene::Light& operator*() const { return list_->at(index_); }
+        Iterator& operator++() {
+            ++index_;
+            return *this;
+        }
+        bool operator!=(const Iterator& o) const { return index_ != o.index_; }
+
+      private:
+        const LightsFor* list_;
+        size_t index_;
+    };
+    Iterator begin() const { return {this, 0}; }
+    Iterator end() const { return {this, first_.size() + second_.size()}; }
+
+  private:
+    const scene::Light& at(size_t i) const {
+        return i < first_.size() ? first_[i] : second_[i - first_.size()];
+    }
+    std::span<const scene::Light> first_, second_;
 };
 
 // The way from a surface point to a light.

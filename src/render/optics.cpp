@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/noise.h"
+
 namespace frameray::render {
 
 double fresnelReflectance(double cosIncidence, double relativeIor) {
@@ -59,6 +61,30 @@ RGB interiorFade(const scene::Interior& in, double distance) {
     }
     const double a = std::isinf(ratio) ? 0.0 : 1.0 / (1.0 + std::pow(ratio, in.fadePower));
     return in.fadeColor + (RGB(1.0) - in.fadeColor) * a;
+}
+
+double iridFilmThickness(const scene::Iridescence& irid, const Vec3& p) {
+    if (irid.turbulence == 0) return irid.thickness;
+    scene::Turbulence turb;
+    turb.octaves = 5;
+    const double t = scene::turbulence(p, turb, scene::NoiseGenerator::RangeCorrected);
+    return irid.thickness * (1.0 + irid.turbulence * (2.0 * t - 1.0));
+}
+
+RGB iridTint(double amount, double thickness, const RGB& wavelength, double cosView,
+             double cosLight) {
+    const double path = 2.0 * std::numbers::pi * thickness * (cosView + cosLight);
+    auto channel = [&](double w) { return 1.0 + amount * std::cos(path / w); };
+    return {channel(wavelength.r), channel(wavelength.g), channel(wavelength.b)};
+}
+
+double fakeCaustics(const scene::Object& obj, const Vec3& p, const Vec3& dir) {
+    if (!obj.interior || obj.interior->caustics == 0) return 1.0;
+    Vec3 n = obj.normalAt(p);
+    if (dot(n, dir) > 0) n = -n;
+    if (obj.texture) n = obj.texture->perturbNormal(p, n);
+    const double c = std::fabs(dot(n, normalize(dir)));
+    return 1.0 + std::pow(c, 45.0 * obj.interior->caustics);
 }
 
 RGB reflectionExponent(const RGB& c, double exponent) {

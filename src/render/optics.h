@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "scene/interior.h"
+#include "scene/object.h"
 #include "scene/texture.h"
 #include "util/color.h"
 #include "util/vec3.h"
@@ -41,6 +42,28 @@ std::optional<Vec3> refractedDirection(const Vec3& d, const Vec3& n, double eta)
 // The factor by which light crossing `distance` inside `interior` is
 // multiplied (1 when the interior does not fade).
 RGB interiorFade(const scene::Interior& interior, double distance);
+
+// irid's film thickness at world point p: thickness * (1 + turbulence *
+// (2 T(p) - 1)), T being povray's 5-octave noise turbulence (omega 0.5,
+// lambda 2) in world space (measured: exact to 1e-5 on a flat plane,
+// unmoved by the object's transformations).
+double iridFilmThickness(const scene::Iridescence& irid, const Vec3& p);
+
+// The tint irid gives light arriving at cosine cosLight and leaving toward
+// the viewer at cosine cosView, per channel of wavelength w:
+// 1 + amount * cos(2 pi thickness (cosView + cosLight) / w) (measured;
+// it scales diffuse light and highlights, not ambient).
+RGB iridTint(double amount, double thickness, const RGB& wavelength, double cosView,
+             double cosLight);
+
+// povray's fake caustics: the factor by which light passing through the
+// surface of `obj` at p along `dir` (a shadow ray) is brightened,
+// 1 + |cos|^(45 * caustics), cos between dir and the surface's normal
+// turned against dir and then perturbed by the texture's normal (measured:
+// doubles the light head-on at any caustics value; a bumpy box matches
+// only with the normal turned before the perturbation). 1 when the
+// object's interior has no caustics.
+double fakeCaustics(const scene::Object& obj, const Vec3& p, const Vec3& dir);
 
 // Per channel max(c, 0)^(1 / exponent): reflection { exponent E }.
 RGB reflectionExponent(const RGB& c, double exponent);

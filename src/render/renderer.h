@@ -22,6 +22,9 @@ struct FrameSettings {
     int blockSize = 32;  // Render_Block_Size: anti-aliasing depends on it
     AntialiasSettings antialias;
     int quality = 9;  // +Q: fog and rainbows from 9 up
+    // Output_Alpha (+UA): the background turns transparent black and each
+    // pixel keeps how much of it shows through (FrameImage::alpha).
+    bool alpha = false;
 };
 
 // Linear working-space colours, clipped to [0,1], row-major from the top.
@@ -29,6 +32,10 @@ struct FrameImage {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;  // 3 floats per pixel
+    // With FrameSettings::alpha: 1 - transmittance per pixel, in [0, 1];
+    // rgb is then what the visible surfaces add (the background adds
+    // nothing). Empty otherwise.
+    std::vector<float> alpha;
 };
 
 struct FrameStats {

@@ -1,11 +1,13 @@
 #include "render/tracer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <optional>
 
 #include "render/lighting.h"
 #include "render/optics.h"
+#include "util/sample_random.h"
 
 namespace frameray::render {
 
@@ -36,8 +38,9 @@ double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
 // The region a primitive's surface bounds: its interior, shared with the
 // other primitives of a CSG that inherited it, or the primitive itself.
 InteriorStack::Region regionOf(const scene::Object& primitive) {
-    if (primitive.interior) return {primitive.interior.get(), primitive.interior.get()};
-    return {&primitive, nullptr};
+    if (primitive.interior)
+        return {primitive.interior.get(), primitive.interior.get(), primitive.hollow};
+    return {&primitive, nullptr, primitive.hollow};
 }
 
 }  // namespace
@@ -48,9 +51,20 @@ bool InteriorStack::contains(const void* key) const {
     return false;
 }
 
-double InteriorStack::ior() const {
+double InteriorStack::ior(SpectralBand band) const {
     const Region* r = innermost();
-    return r && r->interior ? r->interior->ior : 1.0;
+    return r && r->interior ? dispersedIor(*r->interior, band) : 1.0;
+}
+
+bool InteriorStack::allHollow() const {
+    for (int i = 0; i < size_; ++i)
+        if (!regions_[i].hollow) return false;
+    return true;
+}
+
+bool InteriorStack::disperses() const {
+    const Region* r = innermost();
+    return r && r->interior && r->interior->dispersion != 1.0;
 }
 
 void InteriorStack::push(const Region& r) {
@@ -72,7 +86,8 @@ Tracer::Tracer(const World& world, int quality)
       atmosphere_(world.scene(), quality >= 9),
       lighting_(LightingQuality::forQuality(quality)),
       secondaryRays_(quality >= 8),
-      quickColours_(quality < 2) {
+      quickColours_(quality < 2),
+      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
     // in reverse declaration order, so the innermost (last listed) is the
@@ -85,10 +100,11 @@ Tracer::Tracer(const World& world, int quality)
     }
 }
 
-RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts) const {
+RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit) const {
     ++counts.camera;
     State state;
     state.inside = cameraInside_;
+    state.transmit = transmit;
     return trace(ray, 0.0, state, counts);
 }
 
@@ -97,7 +113,26 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     const InteriorStack::Region* medium = state.inside.innermost();
     const bool fades = medium && medium->interior && medium->interior->fades();
     if (!world_.intersect(ray, tMin, scene::kInfinity, hit, state.kind)) {
-        RGB sky = atmosphere_.miss(ray).rgb;
+        if (state.transmit) {
+            // Alpha output, seen straight or through surfaces: a 3.7
+            // scene's sky (sky sphere over background, whose default is
+            // clear) adds its opaque part and lets the rest through;
+            // before 3.7, and without #version, povray makes the
+            // background transparent black whatever it is (measured).
+            // Fog then covers it as any colour, its transmittance passing
+            // on what the sky lets through.
+            const Color sky =
+                opaqueSky_ ? atmosphere_.sky(normalize(ray.direction)) : Color(RGB(0.0), 0.0, 1.0);
+            const Color seen = state.inside.allHollow()
+                                   ? atmosphere_.along(ray, kMissDepth / length(ray.direction), sky)
+                                   : sky;
+            *state.transmit = seen.transmit;
+            return seen.rgb;
+        }
+        // No fog for a ray that leaves the scene inside an object that is
+        // not hollow (measured: the sky seen from inside an inverse plane).
+        RGB sky = state.inside.allHollow() ? atmosphere_.miss(ray).rgb
+                                           : atmosphere_.sky(normalize(ray.direction)).rgb;
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
         return sky;
     }
@@ -107,6 +142,16 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     }
     RGB color = shade(ray, hit, state, counts);
     if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
+    // povray leaves out fog and rainbows along rays inside objects that
+    // are not hollow (measured: a transmitting box 4 units deep in fog
+    // shows the fog only in front of it and beyond it; inside a hollow
+    // sky sphere the fog stays).
+    if (!state.inside.allHollow()) return color;
+    if (state.transmit) {
+        const Color seen = atmosphere_.along(ray, hit.t, Color(color, 0.0, *state.transmit));
+        *state.transmit = seen.transmit;
+        return seen.rgb;
+    }
     return atmosphere_.along(ray, hit.t, Color(color)).rgb;
 }
 
@@ -149,27 +194,51 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-    for (const scene::Light& light : scene_.lights) {
+    // crand: povray darkens each light's diffuse term by crand times a
+    // fresh random number in [0, 1) (measured: uniform, independent per
+    // light, scaled by the light and the pigment, not clamped). povray's
+    // numbers change from render to render; these come from the point, so
+    // frames stay deterministic.
+    std::optional<SampleRandom> grain;
+    if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
+    const bool irid = fin.irid.amount != 0;
+    const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
+    for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
-        // A light behind the surface only reaches double_illuminate
-        // objects: their far side is lit as if it faced the light.
+        // A light behind the surface reaches double_illuminate objects,
+        // whose far side is lit as if it faced the light, and surfaces
+        // with a back-side diffuse value (`diffuse A, B`), which take B of
+        // it with no highlights (measured: double_illuminate wins when
+        // both are given).
         Vec3 ln = n;
         double cosIncidence = dot(n, toLight);
+        double diffuse = fin.diffuse;
+        bool fromBehind = false;
         if (cosIncidence <= 0 && obj.doubleIlluminate) {
             ln = -n;
             cosIncidence = -cosIncidence;
+        } else if (cosIncidence < 0 && fin.diffuseBack > 0) {
+            cosIncidence = -cosIncidence;
+            diffuse = fin.diffuseBack;
+            fromBehind = true;
         }
         if (cosIncidence <= 0) continue;
-        const RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
+        RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
         if (lightColor.isBlack()) continue;
-        if (fin.diffuse > 0) {
-            const double intensity =
-                fin.diffuse *
+        if (irid)
+            lightColor =
+                lightColor * iridTint(fin.irid.amount, filmThickness, scene_.globals.iridWavelength,
+                                      -dot(viewDir, n), cosIncidence);
+        if (diffuse > 0) {
+            double intensity =
+                diffuse *
                 (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
+            if (grain) intensity -= fin.crand * grain->next();
             color += lightColor * lit * intensity;
         }
+        if (fromBehind) continue;
         // povray 3.7: shadowless lights give no highlights.
         if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless) {
             // Metallic highlights take the pigment's colour, except where
@@ -208,10 +277,15 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // adc_bailout without giving its share to the others (measured: weights
     // under 1/255 leave no trace, at every threshold).
     RGB color(0.0);
+    double transmitSum = 0, partTransmit = 0;
+    State part = state;
+    if (state.transmit) part.transmit = &partTransmit;
     obj.visitTextures(p, own, [&](const scene::Texture& t, double w) {
         if (w * state.weight < scene_.globals.adcBailout) return;
-        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, state, counts) * w;
+        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, part, counts) * w;
+        transmitSum += partTransmit * w;
     });
+    if (state.transmit) *state.transmit = transmitSum;
     return color;
 }
 
@@ -226,14 +300,20 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const Vec3 q = top.transform.inversePoint(texP);
         const Vec3 entry = top.map->entryPoint(q);
         const scene::SurfaceInfo surface{geometric, viewDir};
+        double transmitSum = 0, entryTransmit = 0;
+        State part = state;
+        if (state.transmit) part.transmit = &entryTransmit;
         top.map->visit(
             q,
             [&](const scene::Texture& t, double w) {
-                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, state, counts) * w;
+                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, part, counts) * w;
+                transmitSum += entryTransmit * w;
             },
             &surface);
+        if (state.transmit) *state.transmit = transmitSum;
         return color;
     }
+    if (state.transmit) *state.transmit = 0.0;
     const double eps = selfHitEpsilon(p, ray);
     const bool spawns = secondaryRays_ && state.level < scene_.globals.maxTraceLevel;
     const double adcBailout = scene_.globals.adcBailout;
@@ -244,18 +324,29 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         InteriorStack beyond;
         double iorHere;
         double iorBeyond;
+        // The ior ratio of povray 3.7's fresnel reflection. Leaving an
+        // object while inside others too, povray divides the innermost
+        // region's ior (usually the object's own) by the object's, a
+        // ratio of 1: no fresnel reflection from inside (measured: with
+        // the camera inside a plane's half-space, a fresnel glass sphere's
+        // image is the same for every max_trace_level from 3 up; alone in
+        // the air, its inner reflections show). Refraction is not affected.
+        double fresnelRatio;
     };
     std::optional<Crossing> crossing;
     auto crossingInfo = [&]() -> const Crossing& {
         if (crossing) return *crossing;
         const InteriorStack::Region region = regionOf(obj);
         const bool leaving = state.inside.contains(region.key);
-        Crossing c{state.inside, state.inside.ior(), 1.0};
+        Crossing c{state.inside, state.inside.ior(state.band), 1.0, 1.0};
         if (leaving)
             c.beyond.remove(region.key);
         else
             c.beyond.push(region);
-        c.iorBeyond = leaving ? c.beyond.ior() : (region.interior ? region.interior->ior : 1.0);
+        const double own = region.interior ? dispersedIor(*region.interior, state.band) : 1.0;
+        c.iorBeyond = leaving ? c.beyond.ior(state.band) : own;
+        c.fresnelRatio =
+            leaving && state.inside.size() > 1 ? c.iorHere / own : c.iorBeyond / c.iorHere;
         crossing = c;
         return *crossing;
     };
@@ -266,6 +357,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         child.weight = state.weight * weightColor.maxComponent();
         child.kind = scene::RayKind::Reflection;
         child.inside = state.inside;
+        child.band = state.band;
         if (child.weight < adcBailout) return RGB(0.0);
         ++counts.reflection;
         return trace({p, reflected}, eps, child, counts);
@@ -278,6 +370,9 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     // povray 3.7). Whatever all layers let through continues the ray.
     RGB color(0.0);
     RGB through(1.0);  // what the layers evaluated so far let through
+    // The same as one number, for alpha output: povray counts filter by
+    // the pigment's grey (0.297 R + 0.589 G + 0.114 B), measured.
+    double throughGrey = 1.0;
     bool transmits = false;
     RGB reflectivity(0.0);
     Vec3 n = geometric;
@@ -299,9 +394,20 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         if (spawns && fin.reflection.any()) {
             const double cosView = std::clamp(-dot(viewDir, n), 0.0, 1.0);
             const Crossing& c = crossingInfo();
-            reflectivity = reflectance(fin.reflection, cosView, c.iorBeyond / c.iorHere, pigment);
+            reflectivity = reflectance(fin.reflection, cosView, c.fresnelRatio, pigment);
             if (!reflectivity.isBlack()) {
-                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                // A perturbed normal can send the mirror ray under the
+                // surface; povray then mirrors the view ray about the
+                // geometric normal if the ray is behind the perturbed one
+                // too, else mirrors the ray back above the surface
+                // (measured: textures.inc Brushed_Aluminum).
+                if (const double under = dot(reflected, geometric); under < 0) {
+                    if (dot(reflected, n) < 0)
+                        reflected = viewDir - geometric * (2 * dot(viewDir, geometric));
+                    else
+                        reflected = reflected - geometric * (2 * under);
+                }
                 color += reflectivity * reflectionExponent(spawnReflection(reflected, reflectivity),
                                                            fin.reflection.exponent);
             }
@@ -312,6 +418,9 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         transmits = surface.filter + surface.transmit > 0;
         if (!transmits) break;
         through = through * (pigment * surface.filter + RGB(surface.transmit));
+        throughGrey *=
+            surface.filter * (0.297 * pigment.r + 0.589 * pigment.g + 0.114 * pigment.b) +
+            surface.transmit;
         if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
         if (through.isBlack() && i + 1 < layerCount) {
             transmits = false;
@@ -326,6 +435,47 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     child.weight = state.weight * through.maxComponent();
     child.kind = state.kind;
     child.inside = c.beyond;
+    child.band = state.band;
+    double childTransmit = 0;
+    if (state.transmit) child.transmit = &childTransmit;
+    // What the continued ray reports, through this surface's layers.
+    auto passTransmit = [&](double seen) {
+        if (state.transmit) *state.transmit = throughGrey * seen;
+    };
+    if (state.band.white() && c.iorHere != c.iorBeyond &&
+        (state.inside.disperses() || c.beyond.disperses())) {
+        // A white ray bending into or out of a dispersive interior splits
+        // into the interior's bands, each bent by its own ior.
+        const InteriorStack& dispersive = c.beyond.disperses() ? c.beyond : state.inside;
+        const int bands = dispersive.innermost()->interior->dispersionSamples;
+        child.level = state.level + 1;
+        RGB sum(0.0);
+        double seen = 0;
+        for (int k = 0; k < bands; ++k) {
+            child.band = dispersionBand(k, bands);
+            const double eta = state.inside.ior(child.band) / c.beyond.ior(child.band);
+            const RGB weight = dispersionBandColour(k, bands);
+            if (const auto bent = refractedDirection(viewDir, n, eta)) {
+                ++counts.refraction;
+                childTransmit = 0;
+                sum += weight * trace({p, *bent}, eps, child, counts);
+                seen += childTransmit / bands;
+            } else {
+                const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
+                               std::max(0.0, 1.0 - reflectivity.g),
+                               std::max(0.0, 1.0 - reflectivity.b));
+                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+                State mirrored = child;
+                mirrored.kind = scene::RayKind::Reflection;
+                mirrored.inside = state.inside;
+                mirrored.transmit = nullptr;
+                ++counts.reflection;
+                sum += weight * rest * trace({p, reflected}, eps, mirrored, counts);
+            }
+        }
+        passTransmit(seen);
+        return color + through * sum;
+    }
     if (c.iorHere == c.iorBeyond) {
         // Straight on: povray continues the ray at the same trace level
         // (measured: max_trace_level 2 sees through any number of
@@ -333,10 +483,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         child.level = state.level;
         ++counts.transmission;
         color += through * trace({p, viewDir}, eps, child, counts);
+        passTransmit(childTransmit);
     } else if (const auto bent = refractedDirection(viewDir, n, c.iorHere / c.iorBeyond)) {
         child.level = state.level + 1;
         ++counts.refraction;
         color += through * trace({p, *bent}, eps, child, counts);
+        passTransmit(childTransmit);
     } else {
         // Total internal reflection: the ray is mirrored back inside with
         // what the reflection term did not already take, so the surface

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "render/atmosphere.h"
+#include "render/dispersion.h"
 #include "render/lighting.h"
 #include "render/world.h"
 #include "util/color.h"
@@ -40,13 +41,21 @@ class InteriorStack {
     struct Region {
         const void* key = nullptr;  // identity: the Interior, or the primitive without one
         const scene::Interior* interior = nullptr;  // null: ior 1, no fading
+        bool hollow = false;                        // fog reaches rays inside
     };
     static constexpr int kCapacity = 16;  // deeper nesting is treated as air
 
     bool empty() const { return size_ == 0; }
+    int size() const { return size_; }
     bool contains(const void* key) const;
-    // The ior of the innermost region, 1 outside everything.
-    double ior() const;
+    // The ior of the innermost region for a ray of `band` (dispersion.h),
+    // 1 outside everything.
+    double ior(SpectralBand band = {}) const;
+    // Whether the innermost region disperses light.
+    bool disperses() const;
+    // Whether every region is hollow (or there is none): povray computes
+    // fog only along such rays.
+    bool allHollow() const;
     const Region* innermost() const { return size_ ? &regions_[size_ - 1] : nullptr; }
     void push(const Region& r);
     void remove(const void* key);
@@ -64,7 +73,10 @@ class Tracer {
     explicit Tracer(const World& world, int quality = 9);
 
     // Colour seen along a camera ray (working colour space, unclipped).
-    RGB traceCamera(const scene::Ray& ray, RayCounts& counts) const;
+    // With `transmit`, alpha output: the background counts as black and
+    // *transmit receives how much of it shows through (povray's
+    // transmittance: 1 - alpha).
+    RGB traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit = nullptr) const;
 
   private:
     struct State {
@@ -72,6 +84,12 @@ class Tracer {
         double weight = 1.0;  // how much this ray can still add to the pixel (adc_bailout)
         scene::RayKind kind = scene::RayKind::Camera;
         InteriorStack inside;
+        SpectralBand band;  // white until a dispersive interior splits the ray
+        // With alpha output (+UA), where a camera ray and the rays that
+        // continue it through surfaces report how much of the background
+        // shows through (missed rays then see black); null otherwise and
+        // for reflected rays, which see the background as usual.
+        double* transmit = nullptr;
     };
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
@@ -94,6 +112,7 @@ class Tracer {
     LightingQuality lighting_;
     bool secondaryRays_;
     bool quickColours_;           // +Q0, +Q1
+    bool opaqueSky_;              // alpha output sees the sky's own transmit (3.7 scenes)
     InteriorStack cameraInside_;  // regions containing the camera
 };
 

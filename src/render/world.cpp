@@ -1,10 +1,13 @@
 #include "render/world.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <stdexcept>
+
+#include "render/optics.h"
 
 namespace frameray::render {
 
@@ -19,6 +22,11 @@ struct TraceContext {
     double tMin;
     double tMax;
     const scene::Object* hitObject;
+    // Shadow queries: the top-level object that blocks the light, and
+    // whether a surface was crossed that lets some light through.
+    const scene::Object* blocker = nullptr;
+    std::uint16_t blockerKind = 0;
+    bool translucent = false;
     scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
     std::uint64_t* tests = nullptr;                // the calling thread's counters, by kind
     // An exception must not unwind through Embree (it would be lost there
@@ -38,6 +46,26 @@ void guarded(TraceContext* ctx, Body body) {
         ctx->error = std::current_exception();
     }
 }
+
+}  // namespace
+
+RGB lightPassing(const scene::Object& obj, const Vec3& p) {
+    if (obj.componentTextures.empty()) {
+        if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
+        return obj.texture->throughAt(p);
+    }
+    // A blob's component textures, blended as for shading (an untextured
+    // part with the default texture is opaque).
+    RGB through(0.0);
+    const scene::Texture opaque;
+    obj.visitTextures(p, obj.texture ? *obj.texture : opaque,
+                      [&](const scene::Texture& t, double w) {
+                          if (&t != &opaque) through += t.throughAt(p) * w;
+                      });
+    return through;
+}
+
+namespace {
 
 float roundUp(double v) {
     float f = static_cast<float>(v);
@@ -100,11 +128,18 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     guarded(ctx, [&] {
-        ++ctx->tests[primitivesOf(args->geometryUserPtr).kinds[args->primID]];
+        const std::uint16_t kind = primitivesOf(args->geometryUserPtr).kinds[args->primID];
+        ++ctx->tests[kind];
         const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
         scene::SurfaceHit h;
         if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
-        ctx->hitObject = h.primitive;
+        if (!lightPassing(*h.primitive, ctx->ray->at(h.t)).isBlack()) {
+            // Light may pass here: keep searching for an opaque crossing.
+            ctx->translucent = true;
+            return;
+        }
+        ctx->blocker = obj;
+        ctx->blockerKind = kind;
         // Embree's convention for "occluded".
         RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
     });
@@ -152,8 +187,8 @@ std::uint16_t World::kindOf(const scene::Object& object) {
 
 ShapeTestCounts World::shapeTests() const {
     std::vector<std::uint64_t> sum(kindNames_.size(), 0);
-    for (const Counters& c : tests_)
-        for (size_t i = 0; i < c.size(); ++i) sum[i] += c[i];
+    for (const ThreadState& state : tests_)
+        for (size_t i = 0; i < state.tests.size(); ++i) sum[i] += state.tests[i];
     ShapeTestCounts out;
     for (size_t i = 0; i < kindNames_.size(); ++i) out.emplace_back(kindNames_[i], sum[i]);
     std::sort(out.begin(), out.end());
@@ -161,7 +196,12 @@ ShapeTestCounts World::shapeTests() const {
 }
 
 World::World(const scene::Scene& scene)
-    : scene_(scene), tests_([this] { return Counters(kindNames_.size(), 0); }) {
+    : scene_(scene), tests_([this] {
+          ThreadState state;
+          state.tests.assign(kindNames_.size(), 0);
+          state.lastBlocker.assign(scene_.lights.size(), Blocker{});
+          return state;
+      }) {
     device_ = rtcNewDevice("verbose=0");
     if (!device_) throw std::runtime_error("Embree: cannot create a device");
     bvh_ = rtcNewScene(device_);
@@ -241,15 +281,22 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
     return true;
 }
 
-bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
-    std::uint64_t* tests = counters();
+World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double tMax,
+                                     ThreadState& state) const {
+    Occlusion found;
+    std::uint64_t* tests = state.tests.data();
     for (size_t i = 0; i < unbounded_.size(); ++i) {
         const scene::Object* obj = unbounded_[i];
         ++tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
-        if (obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) return true;
+        if (!obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) continue;
+        if (lightPassing(*h.primitive, ray.at(h.t)).isBlack()) {
+            found.blocker = {obj, unboundedKinds_[i]};
+            return found;
+        }
+        found.translucent = true;
     }
-    if (!hasBounded_) return false;
+    if (!hasBounded_) return found;
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
@@ -261,34 +308,75 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     if (ctx.error) std::rethrow_exception(ctx.error);
-    return ctx.hitObject != nullptr;
+    if (ctx.blocker) found.blocker = {ctx.blocker, ctx.blockerKind};
+    found.translucent = found.translucent || ctx.translucent;
+    return found;
 }
 
-RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit) const {
+bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
+    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local());
+    return o.blocker.object || o.translucent;
+}
+
+RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                        const scene::Light* light) const {
+    ThreadState& state = tests_.local();
+    // povray's shadow cache: the object that last blocked this light is
+    // tried first, since neighbouring points are usually shadowed by the
+    // same object. A hit that lets no light through settles the ray.
+    Blocker* cached = nullptr;
+    if (light && !scene_.lights.empty() && light >= scene_.lights.data() &&
+        light < scene_.lights.data() + scene_.lights.size())
+        cached = &state.lastBlocker[static_cast<size_t>(light - scene_.lights.data())];
+    if (cached && cached->object) {
+        ++state.tests[cached->kind];
+        scene::SurfaceHit h;
+        if (cached->object->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h) &&
+            lightPassing(*h.primitive, ray.at(h.t)).isBlack())
+            return RGB(0.0);
+    }
     // Most shadow rays are either clear or blocked by something opaque:
-    // the any-hit test settles the clear ones at once.
-    if (!occluded(ray, tMin, tMax)) return RGB(1.0);
+    // one any-hit search settles both.
+    const Occlusion o = findOccluder(ray, tMin, tMax, state);
+    if (o.blocker.object) {
+        if (cached) *cached = o.blocker;
+        return RGB(0.0);
+    }
+    if (!o.translucent) return RGB(1.0);
+    // Only translucent surfaces in the way: multiply what each lets through.
     RGB passed(1.0);
     double from = tMin;
     Hit hit;
-    while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
-        const scene::Object& obj = *hit.object;
-        const Vec3 p = ray.at(hit.t);
-        RGB through(0.0);
-        if (obj.componentTextures.empty()) {
-            if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
-            through = obj.texture->throughAt(p);
-        } else {
-            // A blob's component textures, blended as for shading (an
-            // untextured part with the default texture is opaque).
-            const scene::Texture opaque;
-            obj.visitTextures(p, obj.texture ? *obj.texture : opaque,
-                              [&](const scene::Texture& t, double w) {
-                                  if (&t != &opaque) through += t.throughAt(p) * w;
-                              });
+    // Fading interiors the ray has entered, with where: the light is faded
+    // over the distance from entry to exit (measured: povray's shadow
+    // under a fade_distance sphere is as dark as the fade of the chord
+    // predicts). Leaving one it did not enter (a ray starting inside)
+    // fades nothing, as in povray (measured: glass.inc I_Glass1..4).
+    struct Inside {
+        const scene::Interior* interior;
+        double from;
+    };
+    std::array<Inside, 8> inside{};
+    size_t insideCount = 0;
+    const double speed = length(ray.direction);
+    auto crossFading = [&](const scene::Object& obj, const Vec3& p, double t) {
+        const scene::Interior* in = obj.interior.get();
+        if (!in || !in->fades()) return;
+        for (size_t i = 0; i < insideCount; ++i) {
+            if (inside[i].interior != in) continue;
+            passed *= interiorFade(*in, (t - inside[i].from) * speed);
+            inside[i] = inside[--insideCount];
+            return;
         }
+        if (dot(obj.normalAt(p), ray.direction) < 0 && insideCount < inside.size())
+            inside[insideCount++] = {in, t};
+    };
+    while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
+        const Vec3 p = ray.at(hit.t);
+        crossFading(*hit.object, p, hit.t);
+        const RGB through = lightPassing(*hit.object, p);
         if (through.isBlack()) return RGB(0.0);
-        passed *= through;
+        passed *= through * fakeCaustics(*hit.object, p, ray.direction);
         if (passed.isBlack()) return passed;
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);

@@ -25,6 +25,10 @@ using ShapeTestCounts = std::vector<std::pair<std::string, std::uint64_t>>;
 // The closest surface a ray meets: its distance parameter and the
 // primitive hit (for a CSG object, the child whose surface it is; its
 // transform gives the normal and its texture the colour).
+// What passes through object `obj`'s surface at p: black when its texture is
+// opaque there (render-side, shared by shadow rays and their cache).
+RGB lightPassing(const scene::Object& obj, const Vec3& p);
+
 struct Hit {
     double t = scene::kInfinity;
     const scene::Object* object = nullptr;
@@ -49,8 +53,11 @@ class World {
     // crossed multiplies it by filter * pigment + transmit (the pigment at
     // the crossing), so an opaque surface stops it. `selfHit` is the
     // margin past one crossing where the search for the next starts.
-    // Returns black as soon as nothing passes.
-    RGB shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit) const;
+    // Returns black as soon as nothing passes. `light`, when given, is the
+    // light the ray goes to: the object that last blocked it (per thread)
+    // is tried first.
+    RGB shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                     const scene::Light* light = nullptr) const;
 
     const scene::Scene& scene() const { return scene_; }
 
@@ -77,16 +84,32 @@ class World {
     std::vector<const scene::Object*> unbounded_;
     std::vector<std::uint16_t> unboundedKinds_;
     bool hasBounded_ = false;
-    // Per-frame statistics: each thread counts into its own array (one
-    // counter per kind), so the hot path takes no lock and shares no cache
-    // line; the World lives for one frame, so no state outlives it.
+    // A top-level object that blocked a shadow ray, with its statistics kind.
+    struct Blocker {
+        const scene::Object* object = nullptr;
+        std::uint16_t kind = 0;
+    };
+    struct Occlusion {
+        Blocker blocker;           // set when an opaque crossing was found
+        bool translucent = false;  // a crossing that lets light through was seen
+    };
+    // Per-frame, per-thread state: the test counters (one per kind, so the
+    // hot path takes no lock and shares no cache line) and the last blocker
+    // of each light. The World lives for one frame, so no state outlives it.
+    struct ThreadState {
+        std::vector<std::uint64_t> tests;
+        std::vector<Blocker> lastBlocker;  // indexed like scene().lights
+    };
+    // One any-hit search of (tMin, tMax) for a crossing that stops the light.
+    Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax,
+                           ThreadState& state) const;
+
     std::vector<std::string> kindNames_;
-    using Counters = std::vector<std::uint64_t>;
-    mutable tbb::enumerable_thread_specific<Counters, tbb::cache_aligned_allocator<Counters>,
+    mutable tbb::enumerable_thread_specific<ThreadState, tbb::cache_aligned_allocator<ThreadState>,
                                             tbb::ets_key_per_instance>
         tests_;
     std::uint16_t kindOf(const scene::Object& object);
-    std::uint64_t* counters() const { return tests_.local().data(); }
+    std::uint64_t* counters() const { return tests_.local().tests.data(); }
 };
 
 }  // namespace frameray::render

@@ -9,7 +9,7 @@
 namespace frameray::scene {
 
 class ColorMap {
-public:
+  public:
     struct Entry {
         double value;
         Color color;
@@ -17,7 +17,9 @@ public:
     static constexpr std::size_t kMaxEntries = 256;  // POV-Ray's limit
 
     ColorMap() = default;
-    // Entries must be sorted by value; equal values make a sharp step.
+    // Entries are normally sorted by value; equal values make a sharp step.
+    // Unsorted ones are looked up as povray does (measured): the first
+    // entry, in written order, above the value and the one before it.
     explicit ColorMap(std::vector<Entry> entries) : entries_(std::move(entries)) {}
 
     // POV-Ray's map for a colour-mapped pattern without one: black to white.
@@ -30,7 +32,7 @@ public:
     const std::vector<Entry>& entries() const { return entries_; }
     bool empty() const { return entries_.empty(); }
 
-private:
+  private:
     std::vector<Entry> entries_;
 };
 

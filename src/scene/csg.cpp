@@ -155,10 +155,10 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
                   const Object& flags) {
     const bool needsTexture = !obj->texture && texture;
     const bool needsInterior = !obj->interior && flags.interior;
-    const bool needsFlags = (flags.noShadow && !obj->noShadow) ||
-                            (flags.noImage && !obj->noImage) ||
-                            (flags.noReflection && !obj->noReflection) ||
-                            (flags.doubleIlluminate && !obj->doubleIlluminate);
+    const bool needsFlags =
+        (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
+        (flags.noReflection && !obj->noReflection) ||
+        (flags.doubleIlluminate && !obj->doubleIlluminate) || (flags.hollow && !obj->hollow);
     if (!obj->isCsg() && !needsTexture && !needsInterior && !needsFlags) return obj;
     auto copy = std::make_shared<Object>(*obj);
     if (needsTexture) copy->texture = texture;
@@ -167,6 +167,7 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
     copy->noImage |= flags.noImage;
     copy->noReflection |= flags.noReflection;
     copy->doubleIlluminate |= flags.doubleIlluminate;
+    copy->hollow |= flags.hollow;
     for (ObjectRef& child : copy->children) child = inherit(child, copy->texture, *copy);
     return copy;
 }

@@ -19,7 +19,7 @@ struct Interior {
     double fadeDistance = 0.0;
     double fadePower = 0.0;
     RGB fadeColor{0.0};
-    double caustics = 0.0;  // povray's fake caustics (accepted)
+    double caustics = 0.0;  // povray's fake caustics (render/optics.h, fakeCaustics)
 
     // povray fades whenever fade_distance > 0, even at the default power 0
     // (measured: 1 / (1 + (d / fade_distance)^0) = 0.5 of the light passes).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/object.h"
+
 namespace frameray::scene {
 
 double smoothEdge(double low, double high, double x) {
@@ -26,12 +28,27 @@ Vec3 AreaLight::gridOffset(double i, double j, const Vec3& a1, const Vec3& a2) c
         // within 1e-3 of the axes).
         u += 0.001;
         v += 0.001;
-        const double r = std::hypot(u, v);
+        const double r = std::sqrt(u * u + v * v);  // u, v are small: no overflow
         const double scale = std::max(std::fabs(u), std::fabs(v)) / r;
         u *= scale;
         v *= scale;
     }
     return a1 * u + a2 * v;
+}
+
+void Light::transformBy(const Transform& t) {
+    position = t.point(position);
+    pointAt = t.point(pointAt);
+    area.axis1 = t.direction(area.axis1);
+    area.axis2 = t.direction(area.axis2);
+    auto moved = [&](const std::shared_ptr<const Object>& obj) -> std::shared_ptr<const Object> {
+        if (!obj) return obj;
+        auto copy = std::make_shared<Object>(*obj);
+        copy->transformBy(t);
+        return copy;
+    };
+    looksLike = moved(looksLike);
+    projectedThrough = moved(projectedThrough);
 }
 
 Vec3 Light::axis() const {

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "util/color.h"
+#include "util/matrix.h"
 #include "util/vec3.h"
 
 namespace frameray::scene {
@@ -67,6 +68,10 @@ struct Light {
     // The visible stand-in (already placed at the light, no_shadow); the
     // scene gets a copy when the light is placed in it.
     std::shared_ptr<const Object> looksLike;
+
+    // Applies `t` after everything so far: position, point_at, the area
+    // axes, looks_like and projected_through move with it.
+    void transformBy(const Transform& t);
 
     // Unit vector of the spot/cylinder/parallel axis, light towards target.
     Vec3 axis() const;

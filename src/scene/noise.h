@@ -15,8 +15,11 @@ enum class NoiseGenerator { Original = 1, RangeCorrected = 2, Perlin = 3 };
 // Scalar noise in [0, 1].
 double solidNoise(const Vec3& p, NoiseGenerator generator);
 
-// Vector noise (POV-Ray's DNoise): each component in about [-1, 1].
+// Vector noise (POV-Ray's DNoise): each component in about [-1, 1]. Runs
+// an AVX2 form where the CPU has it, bit-identical to the portable form.
 Vec3 vectorNoise(const Vec3& p);
+// The portable form (SSE2 only), for the test that the two agree.
+Vec3 vectorNoisePortable(const Vec3& p);
 
 // Turbulence parameters. POV-Ray keeps omega and lambda in single
 // precision; the rounding shows in the images, so they are floats here.

@@ -97,9 +97,9 @@ double sampleValue(const Pattern& pat, const Vec3& q, const SurfaceInfo* surface
 }  // namespace
 
 Vec3 mapEntryPoint(const Pattern& pattern, const Vec3& p) {
-    const bool ownTurbulence = pattern.kind == PatternKind::Marble ||
-                               pattern.kind == PatternKind::Wood ||
-                               pattern.kind == PatternKind::Agate;
+    // Agate's `turbulence` displaces the point as a warp (patternPoint).
+    const bool ownTurbulence =
+        pattern.kind == PatternKind::Marble || pattern.kind == PatternKind::Wood;
     bool warped = pattern.turbulence.has_value() && !ownTurbulence;
     for (const Warp& w : pattern.chain) warped = warped || w.kind != Warp::Kind::Transform;
     if (!warped) return p;

@@ -5,42 +5,13 @@
 
 #include "scene/blob.h"
 #include "scene/csg.h"
+#include "scene/scratch.h"
 
 namespace frameray::scene {
 
 namespace {
 
-// Per-thread scratch vectors for hit lists, handed out as a stack so that
-// nested queries (a bounding object tested inside a CSG child's query)
-// never share one. Keeps the ray callbacks free of allocations once warm.
-class ScratchHits {
-  public:
-    ScratchHits() : hits_(acquire()) {}
-    ~ScratchHits() { --depth(); }
-    ScratchHits(const ScratchHits&) = delete;
-    ScratchHits& operator=(const ScratchHits&) = delete;
-    std::vector<SurfaceHit>& get() { return hits_; }
-
-  private:
-    static std::vector<std::unique_ptr<std::vector<SurfaceHit>>>& pool() {
-        thread_local std::vector<std::unique_ptr<std::vector<SurfaceHit>>> p;
-        return p;
-    }
-    static size_t& depth() {
-        thread_local size_t d = 0;
-        return d;
-    }
-    static std::vector<SurfaceHit>& acquire() {
-        auto& p = pool();
-        size_t& d = depth();
-        if (d == p.size()) p.push_back(std::make_unique<std::vector<SurfaceHit>>());
-        auto& v = *p[d++];
-        v.clear();
-        return v;
-    }
-
-    std::vector<SurfaceHit>& hits_;
-};
+using ScratchHits = ScratchVector<SurfaceHit>;
 
 bool visibleTo(const Object& primitive, RayKind kind) {
     switch (kind) {
@@ -76,6 +47,7 @@ void Object::transformBy(const Transform& t) {
         if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
     }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
+    for (Light& light : lights) light.transformBy(t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
     if (texture) {

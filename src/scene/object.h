@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "scene/interior.h"
+#include "scene/lights.h"
 #include "scene/shapes.h"
 #include "scene/texture.h"
 
@@ -31,6 +32,14 @@ enum class RayKind {
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
     Any,         // sees everything (bounding tests)
+};
+
+// The lights of a light_group (povray 3.7): they light only the objects of
+// their group, which see the scene's own lights only when the outermost
+// group says global_lights on. Every object casts shadows from every light.
+struct LightGroup {
+    std::vector<Light> lights;
+    bool globalLights = false;
 };
 
 // A crossing of an object's surface: the ray parameter and the primitive
@@ -68,6 +77,18 @@ struct Object {
     bool noImage = false;
     bool noReflection = false;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
+    bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
+
+    // Light sources written inside this CSG node or light_group, in world
+    // space and moved with it; the parser hands them to the scene (or to
+    // the group) when the object is placed (sdl::placeObjectLights).
+    std::vector<Light> lights;
+    // Parse-time: this node is a light_group, and its global_lights value.
+    bool isLightGroup = false;
+    bool globalLights = false;
+    // Set on the primitives of a light_group once placed: the lights that
+    // shade them. Null: the scene's lights.
+    std::shared_ptr<const LightGroup> lightGroup;
 
     bool isCsg() const { return !shape; }
 

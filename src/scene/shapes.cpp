@@ -1,13 +1,15 @@
 #include "scene/shapes.h"
 
-#include "scene/shape_math.h"
-
 #include <cmath>
+
+#include "scene/scratch.h"
+#include "scene/shape_math.h"
 
 namespace frameray::scene {
 
 bool Shape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
-    std::vector<double> ts;
+    ScratchVector<double> scratch;
+    std::vector<double>& ts = scratch.get();
     allHits(ray, tMin, tMax, ts);
     if (ts.empty()) return false;
     t = ts.front();
@@ -83,8 +85,10 @@ Bounds Plane::insideBounds() const {
     if (nonZero != 1) return b;
     // normal_[axis] is +1 or -1 here.
     const double limit = (distance_ + kInsideMargin) / normal_[axis];
-    if (normal_[axis] > 0) b.hi[axis] = limit;
-    else b.lo[axis] = limit;
+    if (normal_[axis] > 0)
+        b.hi[axis] = limit;
+    else
+        b.lo[axis] = limit;
     return b;
 }
 
@@ -95,22 +99,43 @@ void Plane::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
 
 // --- Box --------------------------------------------------------------------
 
-void Box::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
-    double tNear = -kInfinity, tFar = kInfinity;
+bool Box::slabs(const Ray& ray, double& tNear, double& tFar) const {
+    tNear = -kInfinity;
+    tFar = kInfinity;
     for (int axis = 0; axis < 3; ++axis) {
         const double o = ray.origin[axis], d = ray.direction[axis];
         if (d == 0) {
-            if (o < lo_[axis] || o > hi_[axis]) return;
+            if (o < lo_[axis] || o > hi_[axis]) return false;
             continue;
         }
         double t0 = (lo_[axis] - o) / d, t1 = (hi_[axis] - o) / d;
         if (t0 > t1) std::swap(t0, t1);
-        tNear = std::fmax(tNear, t0);
-        tFar = std::fmin(tFar, t1);
-        if (tNear > tFar) return;
+        tNear = maxOf(tNear, t0);
+        tFar = minOf(tFar, t1);
+        if (tNear > tFar) return false;
     }
+    return true;
+}
+
+void Box::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
+    double tNear, tFar;
+    if (!slabs(ray, tNear, tFar)) return;
     if (tNear > tMin && tNear < tMax) ts.push_back(tNear);
     if (tFar > tMin && tFar < tMax && tFar != tNear) ts.push_back(tFar);
+}
+
+bool Box::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    double tNear, tFar;
+    if (!slabs(ray, tNear, tFar)) return false;
+    if (tNear > tMin && tNear < tMax) {
+        t = tNear;
+        return true;
+    }
+    if (tFar > tMin && tFar < tMax && tFar != tNear) {
+        t = tFar;
+        return true;
+    }
+    return false;
 }
 
 Vec3 Box::normal(const Vec3& p) const {
@@ -122,8 +147,16 @@ Vec3 Box::normal(const Vec3& p) const {
         const double extent = std::fmax(hi_[axis] - lo_[axis], 1e-300);
         const double dLo = std::fabs(p[axis] - lo_[axis]) / extent;
         const double dHi = std::fabs(p[axis] - hi_[axis]) / extent;
-        if (dLo < bestDist) { bestDist = dLo; bestAxis = axis; sign = -1; }
-        if (dHi < bestDist) { bestDist = dHi; bestAxis = axis; sign = 1; }
+        if (dLo < bestDist) {
+            bestDist = dLo;
+            bestAxis = axis;
+            sign = -1;
+        }
+        if (dHi < bestDist) {
+            bestDist = dHi;
+            bestAxis = axis;
+            sign = 1;
+        }
     }
     Vec3 n;
     n[bestAxis] = sign;
@@ -133,7 +166,8 @@ Vec3 Box::normal(const Vec3& p) const {
 bool Box::inside(const Vec3& p) const {
     // Faces count as inside (povray: intersecting two boxes that share a
     // face leaves that face visible).
-    return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z && p.z <= hi_.z;
+    return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z &&
+           p.z <= hi_.z;
 }
 
 }  // namespace frameray::scene

@@ -13,12 +13,13 @@
 namespace frameray::scene {
 
 class Shape {
-public:
+  public:
     virtual ~Shape() = default;
 
     // All ray parameters t in (tMin, tMax) where the ray crosses the surface,
     // appended to `ts` in increasing order.
-    virtual void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const = 0;
+    virtual void allHits(const Ray& ray, double tMin, double tMax,
+                         std::vector<double>& ts) const = 0;
     // First crossing in (tMin, tMax); the default uses allHits.
     virtual bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const;
     // Outward unit normal at a point on the surface.
@@ -58,11 +59,13 @@ public:
     // patch with flatness subdivides by world-space distances) returns
     // its rebuilt self for the object-to-world transform `toWorld`; the
     // rest return null.
-    virtual std::shared_ptr<const Shape> placedBy(const Transform& /*toWorld*/) const { return nullptr; }
+    virtual std::shared_ptr<const Shape> placedBy(const Transform& /*toWorld*/) const {
+        return nullptr;
+    }
 };
 
 class Sphere final : public Shape {
-public:
+  public:
     Sphere(const Vec3& center, double radius) : center_(center), radius_(radius) {}
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
     bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
@@ -71,26 +74,28 @@ public:
     Bounds bounds() const override;
     const char* name() const override { return "sphere"; }
 
-private:
+  private:
     Vec3 center_;
     double radius_;
 };
 
 // The half-space below `normal . p = distance`; its surface is the plane.
 class Plane final : public Shape {
-public:
+  public:
     Plane(const Vec3& normal, double distance);
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
     bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
     Vec3 normal(const Vec3&) const override { return normal_; }
-    bool inside(const Vec3& p) const override { return dot(p, normal_) - distance_ < kInsideMargin; }
+    bool inside(const Vec3& p) const override {
+        return dot(p, normal_) - distance_ < kInsideMargin;
+    }
     Bounds bounds() const override { return Bounds::infinite(); }
     // A half-space along an axis is bounded on one side (clipped_by
     // { plane { y, 0 } } bounds the clipped object from above).
     Bounds insideBounds() const override;
     const char* name() const override { return "plane"; }
 
-private:
+  private:
     // povray keeps points up to 1e-10 beyond the plane inside.
     static constexpr double kInsideMargin = 1e-10;
     Vec3 normal_;      // unit length
@@ -98,16 +103,20 @@ private:
 };
 
 class Box final : public Shape {
-public:
+  public:
     Box(const Vec3& corner1, const Vec3& corner2)
         : lo_(vmin(corner1, corner2)), hi_(vmax(corner1, corner2)) {}
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
+    bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;
     Vec3 normal(const Vec3& p) const override;
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return {lo_, hi_}; }
     const char* name() const override { return "box"; }
 
-private:
+  private:
+    // Where the ray enters and leaves the slabs; false when it misses.
+    bool slabs(const Ray& ray, double& tNear, double& tFar) const;
+
     Vec3 lo_, hi_;
 };
 

@@ -1,6 +1,21 @@
 #include "scene/texture.h"
 
+#include <cmath>
+
 namespace frameray::scene {
+
+void applyAlbedo(Finish& f, const FinishAlbedo& albedo) {
+    if (albedo.diffuse) {
+        const double k = (f.brilliance + 1.0) / 2.0;
+        f.diffuse *= k;
+        f.diffuseBack *= k;
+    }
+    if (albedo.phong) f.phong *= (f.phongSize + 1.0) / 2.0;
+    if (albedo.specular) {
+        const double e = 1.0 / f.roughness;
+        f.specular *= (e + 2.0) / (4.0 * (2.0 - std::pow(2.0, -e / 2.0)));
+    }
+}
 
 namespace {
 

@@ -134,6 +134,21 @@ struct Finish {
     double legacyIor = 0.0;  // 0 = not given
 };
 
+// Which of a finish block's values were given with `albedo`: povray 3.7
+// then reads them as the fraction of the light the surface sends back in
+// all, and derives the coefficient from the lobe's shape (measured):
+//   diffuse  = albedo * (brilliance + 1) / 2        (both values of diffuse)
+//   phong    = albedo * (phong_size + 1) / 2
+//   specular = albedo * (e + 2) / (4 * (2 - 2^(-e / 2))), e = 1 / roughness
+struct FinishAlbedo {
+    bool diffuse = false;
+    bool phong = false;
+    bool specular = false;
+};
+
+// Converts the albedo values of `f` to coefficients (see FinishAlbedo).
+void applyAlbedo(Finish& f, const FinishAlbedo& albedo);
+
 struct Texture;
 
 // A patterned texture: `texture_map { [v texture body] .. }`, a list

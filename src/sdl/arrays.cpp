@@ -12,7 +12,10 @@ Value Interpreter::parseArrayDeclaration() {
     const Token at = next();  // array
     auto array = std::make_shared<ArrayValue>();
     size_t total = 1;
-    while (peek().is(Sym::LBracket)) {
+    // rawPeek: a directive after the declaration (`#declare A[0] = 1` on
+    // the next line, as in shapes.inc's HF_Square) must not run before the
+    // array is bound.
+    while (rawPeek().is(Sym::LBracket)) {
         const Token open = next();
         const double size = parseFloat();
         expect(Sym::RBracket, "']'");
@@ -31,7 +34,7 @@ Value Interpreter::parseArrayDeclaration() {
     if (array->dims.empty()) fail(at, "expected '[' with the array size after 'array'");
     chargeArrayElements(total, at);
     array->elements.assign(total, Value{});
-    if (peek().is(Sym::LBrace)) {
+    if (rawPeek().is(Sym::LBrace)) {
         size_t next = 0;
         parseArrayInitializer(*array, 0, next);
     }

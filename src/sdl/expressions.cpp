@@ -405,8 +405,16 @@ Value Interpreter::parseVectorLiteral() {
         if (n >= 5) fail(at, "a vector has at most 5 components");
         out.v[n++] = c;
         // povray accepts a comma before the closing '>' (<0.2,0.1,0.5,> in
-        // its example float4.pov).
-    } while (accept(Sym::Comma) && !peek().is(Sym::Greater));
+        // its example float4.pov), and no comma at all between components
+        // (woods.inc: < -1 0 0 >; < 1 -2 > is one component, 1 - 2).
+        if (accept(Sym::Comma)) {
+            if (peek().is(Sym::Greater)) break;
+            continue;
+        }
+        const Token after = peek();
+        if (after.kind != TokenKind::Number && !after.is(Sym::LParen) && !after.isIdentifier())
+            break;
+    } while (true);
     expect(Sym::Greater, "'>' closing the vector");
     if (n < 2) fail(open, "a vector needs at least 2 components");
     out.size = static_cast<uint8_t>(n);

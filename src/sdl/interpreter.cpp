@@ -57,6 +57,7 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const InteriorPtr&) const { return "interior"; }
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
+        const char* operator()(const MaterialPtr&) const { return "material"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -579,6 +580,8 @@ Value Interpreter::parseRValue() {
             return parseFinish(nullptr);
         case Keyword::kw_interior:
             return parseInterior(nullptr);
+        case Keyword::kw_material:
+            return parseMaterial();
         case Keyword::kw_texture:
             return std::make_shared<const scene::Texture>(parseLayeredTextures(nullptr, true));
         case Keyword::kw_normal:
@@ -883,7 +886,10 @@ void Interpreter::directiveMacro(const Token& at) {
     if (!peek().is(Sym::RParen)) {
         do {
             macro->params.push_back(expectIdentifier());
-        } while (accept(Sym::Comma));
+            // povray accepts a comma before the ')' (shapes3.inc's
+            // Rounded_Tube) and none between two names (its
+            // Half_Hollowed_Rounded_Cylinder2).
+        } while ((accept(Sym::Comma) && !peek().is(Sym::RParen)) || rawPeek().isIdentifier());
     }
     expect(Sym::RParen, "')'");
     macro->file = cursors_.back().file;
@@ -911,7 +917,7 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
             if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
             if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
             ++count;
-        } while (accept(Sym::Comma));
+        } while (accept(Sym::Comma) && !peek().is(Sym::RParen));  // M(1, 2,) as povray
     }
     expect(Sym::RParen, "')'");
     if (count != macro.params.size())

@@ -320,6 +320,7 @@ class Interpreter {
     bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
     std::shared_ptr<const scene::Shape> parseShape(const Token& kind);  // after '{'
     void parseCsgChildren(const Token& kind, scene::Object& csg);       // union/merge/... objects
+    void parseLightGroupMembers(scene::Object& group);  // light_group's lights, objects
     // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
@@ -335,6 +336,12 @@ class Interpreter {
     scene::Camera parseCamera();      // parse_camera.cpp
     scene::Light parseLightSource();  // parse_light.cpp
     void placeLight(scene::Light light);
+    // Hands the light sources written inside a placed object's CSG nodes
+    // to the scene, and a light_group's to the primitives of its group
+    // (scene::LightGroup); returns the object with them settled.
+    scene::ObjectRef placeObjectLights(const scene::ObjectRef& obj,
+                                       const std::shared_ptr<const scene::LightGroup>& group,
+                                       const std::optional<bool>& outermostGlobal);
     TexturePtr parseTexture(const scene::Texture* base);
     PigmentPtr parsePigment();
     // Pattern keywords and their modifiers inside pigment { }; false when
@@ -385,6 +392,8 @@ class Interpreter {
     void parseReflectionBlock(scene::Finish& finish);
     void parseIridescence(scene::Finish& finish);
     InteriorPtr parseInterior(const scene::Interior* base);
+    // --- material (parse_material.cpp) ---
+    MaterialPtr parseMaterial();
     // Whether the next token can start a float expression (for items whose
     // value is optional, such as `metallic` or `fresnel`).
     bool floatFollows();

@@ -94,8 +94,17 @@ void Interpreter::parseIridescence(scene::Finish& f) {
 }
 
 void Interpreter::parseFinishItems(scene::Finish& f) {
+    // Which values of this block were given as albedos; they are converted
+    // to povray's coefficients when the block closes, with the block's
+    // final brilliance, roughness and phong_size (measured: the order of
+    // the items does not matter, and a finish that starts from a declared
+    // one does not convert its values again).
+    scene::FinishAlbedo albedo;
     for (;;) {
-        if (accept(Sym::RBrace)) return;
+        if (accept(Sym::RBrace)) {
+            scene::applyAlbedo(f, albedo);
+            return;
+        }
         const Token t = next();
         switch (t.kw) {
             case Keyword::kw_ambient:
@@ -105,32 +114,27 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 f.emission = parseColor().rgb;
                 break;
             case Keyword::kw_diffuse:
-                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
+                // diffuse [albedo] A [, B]: B lights the surface from lights
+                // on its far side (povray 3.7, measured: B * cos^brilliance).
+                albedo.diffuse = accept(Keyword::kw_albedo);
                 f.diffuse = parseFloat();
-                if (accept(Sym::Comma)) {
-                    f.diffuseBack = parseFloat();
-                    // povray 3.7's experimental light through the back side.
-                    if (f.diffuseBack != 0) unsupported(t, "diffuse with a back-side value");
-                }
+                f.diffuseBack = accept(Sym::Comma) ? parseFloat() : 0.0;
                 break;
             case Keyword::kw_brilliance:
                 f.brilliance = parseFloat();
                 break;
             case Keyword::kw_crand:
                 f.crand = parseFloat();
-                // povray's crand draws a new random number per pixel;
-                // not simulated yet.
-                if (f.crand != 0) unsupported(t, "crand");
                 break;
             case Keyword::kw_phong:
-                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
+                albedo.phong = accept(Keyword::kw_albedo);
                 f.phong = parseFloat();
                 break;
             case Keyword::kw_phong_size:
                 f.phongSize = parseFloat();
                 break;
             case Keyword::kw_specular:
-                if (peek().is(Keyword::kw_albedo)) unsupported(peek(), "albedo");
+                albedo.specular = accept(Keyword::kw_albedo);
                 f.specular = parseFloat();
                 break;
             case Keyword::kw_roughness:
@@ -155,7 +159,6 @@ void Interpreter::parseFinishItems(scene::Finish& f) {
                 break;
             case Keyword::kw_irid:
                 parseIridescence(f);
-                if (f.irid.amount != 0) unsupported(t, "irid");
                 break;
             case Keyword::kw_refraction:
                 // 2.0: refraction 1 turned bending on; 3.x bends whenever
@@ -211,7 +214,6 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_dispersion:
                 in.dispersion = parseFloat();
-                if (in.dispersion != 1.0) unsupported(t, "dispersion");
                 break;
             case Keyword::kw_dispersion_samples:
                 in.dispersionSamples = static_cast<int>(parseFloat());
@@ -228,9 +230,6 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_caustics:
                 in.caustics = parseFloat();
-                // povray's fake caustics brighten shadow rays through the
-                // object; not simulated yet.
-                if (in.caustics != 0) unsupported(t, "caustics");
                 break;
             case Keyword::kw_media:
                 unsupported(t, "media");

@@ -918,9 +918,12 @@ scene::ColorMap Interpreter::parseColorMap() {
         const Token open = peek();
         expect(Sym::LBracket, "'[' or '}' in color_map");
         const double v1 = parseMapValue();
-        const bool hadComma = accept(Sym::Comma);
-        if (hadComma && peek().kind == TokenKind::Number) {
-            // [v1, v2 color C1 color C2]: a band from C1 to C2
+        accept(Sym::Comma);
+        if (peek().kind == TokenKind::Number) {
+            // [v1, v2 color C1 color C2] or, without the comma, [v1 v2 color
+            // C1 color C2] (woodmaps.inc, stars.inc): a band from C1 to C2.
+            // povray wants 'color' before a colour here, so a number after
+            // the first value always starts the second.
             const double v2 = parseFloat();
             const Color c1 = parseColor();
             const Color c2 = parseColor();
@@ -935,9 +938,9 @@ scene::ColorMap Interpreter::parseColorMap() {
                  fmt::format("a color_map holds at most {} entries", scene::ColorMap::kMaxEntries));
     }
     if (entries.empty()) fail(kw, "color_map needs at least one entry");
-    for (std::size_t i = 1; i < entries.size(); ++i)
-        if (entries[i].value < entries[i - 1].value)
-            fail(kw, "color_map entries must be in increasing order");
+    // Entries out of order are kept as written: povray accepts them
+    // (woods.inc T_Wood32 has [0.95 ..] [0.90 ..]) and ColorMap::at scans
+    // them in order as povray does.
     return scene::ColorMap(std::move(entries));
 }
 

@@ -57,7 +57,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_julia_fractal, false},
     {Keyword::kw_polygon, false},
     {Keyword::kw_ovus, false},
-    {Keyword::kw_light_group, false},
+    {Keyword::kw_light_group, true},
 };
 
 const ObjectKeyword* findObjectKeyword(Keyword kw) {
@@ -84,7 +84,8 @@ bool Interpreter::parseStatement() {
             textured->texture = std::make_shared<const scene::Texture>(defaultTexture_);
             obj = std::move(textured);
         }
-        scene_.objects.push_back(scene::csg::resolveInheritance(obj));
+        scene_.objects.push_back(
+            placeObjectLights(scene::csg::resolveInheritance(obj), nullptr, std::nullopt));
         return true;
     }
     switch (t.kw) {
@@ -143,6 +144,14 @@ ObjectPtr Interpreter::parseObject() {
     std::optional<scene::Texture> texture;
     switch (kind.kw) {
         case Keyword::kw_object: {
+            // object { OBJECT ... } wraps an object statement as povray does
+            // (object { sphere { ... } translate x }).
+            if (isObjectStart(peek()) && !peek().isIdentifier()) {
+                *obj = *parseObject();
+                if (obj->texture) texture = *obj->texture;
+                obj->texture.reset();
+                break;
+            }
             const Token id = next();
             if (!id.isIdentifier())
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
@@ -160,6 +169,9 @@ ObjectPtr Interpreter::parseObject() {
         case Keyword::kw_intersection:
         case Keyword::kw_difference:
             parseCsgChildren(kind, *obj);
+            break;
+        case Keyword::kw_light_group:
+            parseLightGroupMembers(*obj);
             break;
         case Keyword::kw_text:
             parseTextObject(*obj);
@@ -186,6 +198,12 @@ ObjectPtr Interpreter::parseObject() {
 
     for (;;) {
         if (accept(Sym::RBrace)) break;
+        // Only a light_group statement itself takes global_lights (povray
+        // refuses it in object { GROUP }).
+        if (kind.is(Keyword::kw_light_group) && accept(Keyword::kw_global_lights)) {
+            obj->globalLights = parseOptionalBool();
+            continue;
+        }
         if (!parseObjectModifier(*obj, texture)) {
             const Token t = peek();
             // povray reads a CSG's objects before its modifiers.
@@ -194,6 +212,10 @@ ObjectPtr Interpreter::parseObject() {
                             "No matching }} in '{}', {} found instead: a CSG's objects come before "
                             "its modifiers",
                             kind.text, t.text));
+            if (t.is(Keyword::kw_global_lights))
+                fail(t, fmt::format("No matching }} in '{}', global_lights found instead: it "
+                                    "belongs in a light_group statement itself",
+                                    kind.text));
             if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                 unsupported(t, fmt::format("'{}' in {}", t.text, kind.text));
             fail(t, fmt::format("expected an object modifier or '}}', found {}", describeToken(t)));
@@ -224,8 +246,14 @@ void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
             csg.op = scene::CsgOp::Union;
             break;
     }
-    while (isObjectStart(peek())) {
+    for (;;) {
         const Token at = peek();
+        // Light sources may sit in any CSG; they move with it.
+        if (at.is(Keyword::kw_light_source)) {
+            csg.lights.push_back(parseLightSource());
+            continue;
+        }
+        if (!isObjectStart(at)) break;
         csg.children.push_back(parseObject());
         // povray's warning (its wording, for difference too); the triangle
         // still takes part, enclosing nothing.
@@ -234,6 +262,62 @@ void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
             warn(at, "Patch objects not allowed in intersection.");
     }
     if (csg.children.size() < 2) warn(kind, "Should have at least 2 objects in csg.");
+}
+
+void Interpreter::parseLightGroupMembers(scene::Object& group) {
+    // A union of its objects that its lights light alone.
+    group.op = scene::CsgOp::Union;
+    group.isLightGroup = true;
+    for (;;) {
+        const Token at = peek();
+        if (at.is(Keyword::kw_light_source))
+            group.lights.push_back(parseLightSource());
+        else if (isObjectStart(at))
+            group.children.push_back(parseObject());
+        else
+            break;
+    }
+}
+
+namespace {
+
+// Whether a light source or a light_group lies anywhere in the tree.
+bool holdsLights(const scene::Object& obj) {
+    if (!obj.lights.empty() || obj.isLightGroup) return true;
+    for (const scene::ObjectRef& child : obj.children)
+        if (holdsLights(*child)) return true;
+    return false;
+}
+
+}  // namespace
+
+scene::ObjectRef Interpreter::placeObjectLights(
+    const scene::ObjectRef& obj, const std::shared_ptr<const scene::LightGroup>& group,
+    const std::optional<bool>& outermostGlobal) {
+    if (!group && !holdsLights(*obj)) return obj;
+    auto copy = std::make_shared<scene::Object>(*obj);
+    std::shared_ptr<const scene::LightGroup> childGroup = group;
+    std::optional<bool> childGlobal = outermostGlobal;
+    if (copy->isLightGroup) {
+        // A nested group's objects see its own lights only; whether they
+        // also see the scene's is the outermost group's global_lights
+        // (measured: an inner group's own setting changes nothing).
+        auto lit = std::make_shared<scene::LightGroup>();
+        lit->lights = copy->lights;
+        lit->globalLights = outermostGlobal.value_or(copy->globalLights);
+        for (const scene::Light& light : lit->lights)
+            if (light.looksLike) scene_.objects.push_back(light.looksLike);
+        childGroup = std::move(lit);
+        childGlobal = childGroup->globalLights;
+    } else {
+        // Lights of a plain CSG node light the whole scene.
+        for (scene::Light& light : copy->lights) placeLight(std::move(light));
+    }
+    copy->lights.clear();
+    if (copy->shape) copy->lightGroup = childGroup;
+    for (scene::ObjectRef& child : copy->children)
+        child = placeObjectLights(child, childGroup, childGlobal);
+    return copy;
 }
 
 std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
@@ -419,6 +503,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
             return true;
+        case Keyword::kw_material: {
+            // Its texture replaces the object's; its interior too.
+            const MaterialPtr m = parseMaterial();
+            if (m->texture) texture = *m->texture;
+            if (m->interior) obj.interior = m->interior;
+            return true;
+        }
         case Keyword::kw_inverse:
             next();
             obj.inverse = !obj.inverse;
@@ -456,12 +547,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             applySturm(obj, tok);
             return true;
         case Keyword::kw_hollow:
-            // Only changes media and fog inside the object; neither exists yet.
+            // Lets fog reach rays inside the object (see render::Tracer).
             next();
+            obj.hollow = true;
             if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) ||
                 peek().is(Keyword::kw_off) || peek().is(Keyword::kw_true) ||
                 peek().is(Keyword::kw_false))
-                parseFloat();
+                obj.hollow = parseFloat() != 0;
             return true;
         default:
             return false;
@@ -575,6 +667,9 @@ void Interpreter::parseGlobalSettings() {
                 break;
             case Keyword::kw_ambient_light:
                 g.ambientLight = parseColor().rgb;
+                break;
+            case Keyword::kw_irid_wavelength:
+                g.iridWavelength = parseColor().rgb;
                 break;
             case Keyword::kw_number_of_waves:
             case Keyword::kw_noise_generator:

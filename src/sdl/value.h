@@ -54,6 +54,14 @@ using SkySpherePtr = std::shared_ptr<const scene::SkySphere>;
 using InteriorPtr = std::shared_ptr<const scene::Interior>;
 using NormalPtr = std::shared_ptr<const scene::Normal>;  // null: normal { } without a pattern
 
+// `material { texture { } interior { } }`: what it gives an object. An
+// unset part leaves the object's own.
+struct MaterialValue {
+    TexturePtr texture;
+    InteriorPtr interior;
+};
+using MaterialPtr = std::shared_ptr<const MaterialValue>;
+
 struct ArrayValue;
 struct FileHandle;
 struct SplineValue;
@@ -79,7 +87,7 @@ struct IdentifierAlias {
 using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
                            FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
                            ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr,
-                           SkySpherePtr, InteriorPtr, BlendMapPtr, NormalPtr>;
+                           SkySpherePtr, InteriorPtr, BlendMapPtr, NormalPtr, MaterialPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other

@@ -63,18 +63,6 @@ Matrix4 Matrix4::operator*(const Matrix4& o) const {
     return r;
 }
 
-Vec3 Matrix4::transformPoint(const Vec3& p) const {
-    return {p.x * m[0][0] + p.y * m[1][0] + p.z * m[2][0] + m[3][0],
-            p.x * m[0][1] + p.y * m[1][1] + p.z * m[2][1] + m[3][1],
-            p.x * m[0][2] + p.y * m[1][2] + p.z * m[2][2] + m[3][2]};
-}
-
-Vec3 Matrix4::transformDirection(const Vec3& d) const {
-    return {d.x * m[0][0] + d.y * m[1][0] + d.z * m[2][0],
-            d.x * m[0][1] + d.y * m[1][1] + d.z * m[2][1],
-            d.x * m[0][2] + d.y * m[1][2] + d.z * m[2][2]};
-}
-
 Vec3 Matrix4::transformNormalByInverse(const Vec3& n) const {
     // Multiplying by the transpose of this (inverse) matrix.
     return {n.x * m[0][0] + n.y * m[0][1] + n.z * m[0][2],

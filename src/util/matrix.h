@@ -24,8 +24,17 @@ struct Matrix4 {
     static Matrix4 fromPovMatrix(const std::array<double, 12>& v);
 
     Matrix4 operator*(const Matrix4& o) const;
-    Vec3 transformPoint(const Vec3& p) const;
-    Vec3 transformDirection(const Vec3& d) const;
+    // Inline: every ray test of a transformed object runs both.
+    Vec3 transformPoint(const Vec3& p) const {
+        return {p.x * m[0][0] + p.y * m[1][0] + p.z * m[2][0] + m[3][0],
+                p.x * m[0][1] + p.y * m[1][1] + p.z * m[2][1] + m[3][1],
+                p.x * m[0][2] + p.y * m[1][2] + p.z * m[2][2] + m[3][2]};
+    }
+    Vec3 transformDirection(const Vec3& d) const {
+        return {d.x * m[0][0] + d.y * m[1][0] + d.z * m[2][0],
+                d.x * m[0][1] + d.y * m[1][1] + d.z * m[2][1],
+                d.x * m[0][2] + d.y * m[1][2] + d.z * m[2][2]};
+    }
     // Transforms a normal given the INVERSE matrix of the object transform:
     // n' = n * (M^-1)^T.
     Vec3 transformNormalByInverse(const Vec3& n) const;
@@ -36,7 +45,7 @@ struct Matrix4 {
 // A transformation with its inverse kept alongside, composed as objects are
 // transformed in the scene file.
 class Transform {
-public:
+  public:
     Transform() : fwd_(Matrix4::identity()), inv_(Matrix4::identity()) {}
     Transform(const Matrix4& fwd, const Matrix4& inv) : fwd_(fwd), inv_(inv) {}
 
@@ -60,7 +69,7 @@ public:
     const Matrix4& matrix() const { return fwd_; }
     const Matrix4& inverseMatrix() const { return inv_; }
 
-private:
+  private:
     Matrix4 fwd_, inv_;
 };
 

@@ -1,7 +1,9 @@
 // frameray-compare: compares a rendered image with a golden image.
 //
-//     frameray-compare TEST.png GOLDEN.png [--min-match F] [--diff DIFF.png]
+//     frameray-compare TEST.png GOLDEN.png [--min-match F] [--diff DIFF.png] [--blur R]
 //
+// --blur R compares the images' local means over (2R + 1)^2 windows, for
+// scenes whose per-pixel randomness no two renders share (crand).
 // Prints one line (match fraction, PSNR, max difference, PASS/FAIL) and
 // exits 0 on pass, 1 on fail, 2 when the images cannot be read or compared.
 // On fail, --diff writes an image marking the failing pixels in red.
@@ -26,10 +28,12 @@ constexpr int kExitError = 2;
 
 void print_usage(std::FILE* to) {
     std::fprintf(to,
-                 "usage: frameray-compare TEST.png GOLDEN.png [--min-match F] [--diff DIFF.png]\n"
+                 "usage: frameray-compare TEST.png GOLDEN.png [--min-match F] [--diff DIFF.png]"
+                 " [--blur R]\n"
                  "  match = fraction of pixels whose every channel (R,G,B, and A when both\n"
                  "  images have it) is within 4/255 of the golden; passes when\n"
-                 "  match >= F (default 0.99). Exit 0 pass, 1 fail, 2 error.\n");
+                 "  match >= F (default 0.99). --blur R first averages both images over\n"
+                 "  (2R+1)^2 windows. Exit 0 pass, 1 fail, 2 error.\n");
 }
 
 // Loads any image OpenImageIO reads, as 0..255-scale samples. Grey images
@@ -99,6 +103,7 @@ bool parse_fraction(std::string_view text, double& value) {
 int main(int argc, char** argv) {
     std::string test_path, golden_path, diff_path;
     conf::CompareOptions options;
+    int blur = 0;
 
     int positional = 0;
     for (int i = 1; i < argc; ++i) {
@@ -132,6 +137,21 @@ int main(int argc, char** argv) {
                 return kExitError;
             }
             diff_path = value;
+        } else if (arg.starts_with("--blur")) {
+            double radius = 0;
+            if (!value_of("--blur", value) || value.empty()) {
+                std::fprintf(stderr, "frameray-compare: --blur needs a radius in pixels\n");
+                return kExitError;
+            }
+            std::string copy(value);
+            char* end = nullptr;
+            radius = std::strtod(copy.c_str(), &end);
+            if (end != copy.c_str() + copy.size() || radius < 0 || radius > 64 ||
+                radius != static_cast<int>(radius)) {
+                std::fprintf(stderr, "frameray-compare: --blur needs a radius in pixels (0-64)\n");
+                return kExitError;
+            }
+            blur = static_cast<int>(radius);
         } else if (arg.starts_with("-") && arg.size() > 1) {
             std::fprintf(stderr, "frameray-compare: unknown option '%s'\n", argv[i]);
             print_usage(stderr);
@@ -165,6 +185,10 @@ int main(int argc, char** argv) {
         return kExitError;
     }
 
+    if (blur > 0) {
+        test = conf::box_blur(test, blur);
+        golden = conf::box_blur(golden, blur);
+    }
     const conf::CompareResult result = conf::compare_images(test, golden, options);
     std::printf("%s: %s\n", test_path.c_str(), conf::format_result(result, options).c_str());
 

@@ -106,6 +106,38 @@ Image make_diff_image(const Image& test, const Image& golden, const CompareOptio
     return diff;
 }
 
+Image box_blur(const Image& image, int radius) {
+    if (radius <= 0) return image;
+    Image out = image;
+    const int c_count = image.channels;
+    // Separable: rows, then columns.
+    std::vector<float> rows(image.samples.size());
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const int x0 = std::max(0, x - radius), x1 = std::min(image.width - 1, x + radius);
+            for (int c = 0; c < c_count; ++c) {
+                double sum = 0;
+                for (int k = x0; k <= x1; ++k) sum += image.at(k, y, c);
+                rows[(static_cast<std::size_t>(y) * image.width + x) * c_count + c] =
+                    static_cast<float>(sum / (x1 - x0 + 1));
+            }
+        }
+    }
+    for (int y = 0; y < image.height; ++y) {
+        const int y0 = std::max(0, y - radius), y1 = std::min(image.height - 1, y + radius);
+        for (int x = 0; x < image.width; ++x) {
+            for (int c = 0; c < c_count; ++c) {
+                double sum = 0;
+                for (int k = y0; k <= y1; ++k)
+                    sum += rows[(static_cast<std::size_t>(k) * image.width + x) * c_count + c];
+                out.samples[(static_cast<std::size_t>(y) * image.width + x) * c_count + c] =
+                    static_cast<float>(sum / (y1 - y0 + 1));
+            }
+        }
+    }
+    return out;
+}
+
 std::string format_result(const CompareResult& result, const CompareOptions& options) {
     char psnr[32];
     if (std::isinf(result.psnr_db)) {

@@ -54,6 +54,12 @@ CompareResult compare_images(const Image& test, const Image& golden,
 // as a dim grey so the failures can be located in the scene.
 Image make_diff_image(const Image& test, const Image& golden, const CompareOptions& options = {});
 
+// The image averaged over (2 radius + 1)^2 windows (cut at the borders).
+// For scenes with per-pixel randomness that no two renders share (crand):
+// both images are smoothed before the per-pixel comparison, so what is
+// compared is the local mean.
+Image box_blur(const Image& image, int radius);
+
 // One-line report: match, PSNR, max difference and PASS/FAIL.
 std::string format_result(const CompareResult& result, const CompareOptions& options);
 

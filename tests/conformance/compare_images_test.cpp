@@ -28,6 +28,20 @@ void offset_pixels(Image& image, int count, int c, float delta) {
     for (int i = 0; i < count; ++i) image.samples[i * image.channels + c] += delta;
 }
 
+TEST(CompareImages, BoxBlurAveragesWindowsCutAtBorders) {
+    Image a{3, 1, 3, {0, 0, 0, 30, 60, 90, 90, 0, 30}};
+    const Image b = box_blur(a, 1);
+    EXPECT_FLOAT_EQ(b.at(0, 0, 0), 15.0f);  // pixels 0 and 1
+    EXPECT_FLOAT_EQ(b.at(1, 0, 0), 40.0f);  // all three
+    EXPECT_FLOAT_EQ(b.at(2, 0, 1), 30.0f);  // pixels 1 and 2
+    EXPECT_EQ(box_blur(a, 0).samples, a.samples);
+    // Noise of zero mean vanishes from a flat image.
+    Image noisy{8, 8, 3, {}};
+    for (int i = 0; i < 8 * 8 * 3; ++i) noisy.samples.push_back(100.0f + ((i / 3) % 2 ? 6 : -6));
+    const Image smooth = box_blur(noisy, 2);
+    EXPECT_NEAR(smooth.at(4, 4, 0), 100.0f, 1.5f);
+}
+
 TEST(CompareImages, IdenticalImagesMatchCompletely) {
     const Image a = gradient(32, 24);
     const CompareResult r = compare_images(a, a);

@@ -48,6 +48,12 @@ while IFS= read -r line || [ -n "$line" ]; do
     if [ ${#options[@]} -gt 0 ] && [[ "${options[0]}" =~ ^[0-9]*\.?[0-9]+$ ]]; then
         options=("${options[@]:1}")
     fi
+    # Options starting with "--" are for frameray-compare, not povray.
+    render_options=()
+    for option in "${options[@]}"; do
+        [[ "$option" == --* ]] || render_options+=("$option")
+    done
+    options=("${render_options[@]}")
     if [ $# -gt 0 ] && [ -z "${wanted[$name]:-}" ]; then
         continue
     fi

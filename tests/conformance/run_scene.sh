@@ -20,6 +20,18 @@ outdir="$5"
 min_match="$6"
 shift 6
 
+# Options starting with "--" are for the comparison (frameray-compare's
+# --blur); the rest are render switches.
+render_options=()
+compare_options=()
+for option in "$@"; do
+    case "$option" in
+        --*) compare_options+=("$option") ;;
+        *) render_options+=("$option") ;;
+    esac
+done
+set -- "${render_options[@]}"
+
 name="$(basename "$scene" .pov)"
 output="$outdir/$name.png"
 diff="$outdir/$name.diff.png"
@@ -41,5 +53,5 @@ if [ ! -f "$output" ]; then
     exit 1
 fi
 
-echo "+ $compare $output $golden --min-match $min_match --diff $diff"
-"$compare" "$output" "$golden" --min-match "$min_match" --diff "$diff"
+echo "+ $compare $output $golden --min-match $min_match --diff $diff ${compare_options[*]}"
+"$compare" "$output" "$golden" --min-match "$min_match" --diff "$diff" "${compare_options[@]}"

@@ -449,7 +449,9 @@ TEST(Options, UnsupportedValuesAreNamed) {
     EXPECT_EQ(firstUnsupported(
                   parse({"+A0.2", "+UF", "+UO", "-UA", "+Q4", "+J", "+AM2", "+R3", "+BS16"})),
               "");
-    EXPECT_EQ(firstUnsupported(parse({"+UA"})), "Output_Alpha (alpha channel output)");
+    EXPECT_EQ(firstUnsupported(parse({"+UA"})), "");
+    EXPECT_EQ(firstUnsupported(parse({"+UA", "+FE"})),
+              "Output_Alpha (alpha channel output (+UA) to EXR)");
     EXPECT_EQ(firstUnsupported(parse({"+Q2"})), "");
     EXPECT_EQ(firstUnsupported(parse({"+Q0"})), "");  // quick colours
     EXPECT_EQ(firstUnsupported(parse({"+Q1"})), "");
