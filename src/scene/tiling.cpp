@@ -549,7 +549,28 @@ double tilingValue(int n, const Vec3& p) {
     }
 }
 
+namespace {
+
+// pavement number_of_sides 4 number_of_tiles 2: dominoes [0, 1] x [0, 2]
+// in columns, shaded like the squares (interior and form change nothing,
+// measured).
+constexpr double kDomino[] = {0, 0, 1, 0, 1, 2, 0, 2};
+constexpr Tile kDominoes[] = {{0, kDomino}};
+constexpr LatticeTiling kPavementDominoes{1, 0, 0, 2, 1, 0.5, kDominoes};
+
+}  // namespace
+
 double pavementValue(const PavementSettings& s, const Vec3& p) {
+    if (s.tiles == 2 && s.sides == 4) {
+        if (s.exterior == 0) return latticeTilingValue(kPavementDominoes, p);
+        // Corners cut or rounded: the offset from the domino's middle
+        // segment x = 0.5, z in [0.5, 1.5], measured as for the squares.
+        const double dx = std::abs(p.x - std::floor(p.x) - 0.5);
+        const double fz = p.z - 2.0 * std::floor(p.z / 2.0);
+        const double dz = std::max(0.0, std::abs(fz - 1.0) - 0.5);
+        const double r = s.exterior == 1 ? dx + dz : std::hypot(dx, dz);
+        return std::min(1.0, 2.0 * r);
+    }
     switch (s.sides) {
         case 4: {
             // Unit squares with edges on whole x and z, shaded by the

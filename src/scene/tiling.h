@@ -20,10 +20,11 @@ bool tilingSupported(int n);
 double tilingValue(int n, const Vec3& p);
 
 // pavement: tiles made of number_of_tiles triangles, squares or hexagons
-// of unit side, shaded from 1 on their edges to 0 inside. Only single
-// tiles are implemented (number_of_tiles 1, pattern 1); `exterior` shapes
-// the squares' corners (0 sharp, 1 cut, 2 round), `interior` and `form`
-// only matter between the cells of a multi-cell tile.
+// of unit side, shaded from 1 on their edges to 0 inside. Implemented:
+// single cells (number_of_tiles 1) and square dominoes (2), pattern 1;
+// `exterior` shapes the squares' and dominoes' corners (0 sharp, 1 cut, 2
+// round); `interior` and `form` change nothing there (measured). The
+// parser refuses the rest.
 struct PavementSettings {
     int sides = 3;
     int tiles = 1;

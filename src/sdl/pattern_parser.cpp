@@ -182,6 +182,7 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
             unsupported(item, fmt::format("'{}' in pigment", item.text));
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
+    checkPavement(result.pattern(), peek());
 }
 
 PigmentPtr Interpreter::parsePigmentListEntry() {
@@ -296,17 +297,15 @@ void Interpreter::parsePavementItem(scene::PavementSettings& s) {
         case Keyword::kw_number_of_sides:
             if (v != 3 && v != 4 && v != 6)
                 fail(at, "number_of_sides of pavement must be 3, 4 or 6.");
-            if (v != 4 && s.exterior != 0)
-                unsupported(at, fmt::format("pavement exterior {} with {} sides", s.exterior, v));
-            if (v == 6 && (s.form == 1 || s.form == 2))
-                unsupported(at, fmt::format("pavement form {} with 6 sides", s.form));
             s.sides = v;
             break;
         case Keyword::kw_number_of_tiles:
             if (v < 1 || v > (s.sides == 6 ? 5 : 6))
                 fail(at, fmt::format("number_of_tiles of pavement must be between 1 and {}.",
                                      s.sides == 6 ? 5 : 6));
-            if (v > 1) unsupported(at, fmt::format("pavement number_of_tiles {}", v));
+            // Single cells, and square dominoes (the sides may follow;
+            // checkPavement looks again at the end of the pattern).
+            if (v > 2) unsupported(at, fmt::format("pavement number_of_tiles {}", v));
             s.tiles = v;
             break;
         case Keyword::kw_pattern:
@@ -316,22 +315,31 @@ void Interpreter::parsePavementItem(scene::PavementSettings& s) {
             break;
         case Keyword::kw_exterior:
             // Measured: values other than 1 and 2 act as 0.
-            if ((v == 1 || v == 2) && s.sides != 4)
-                unsupported(at, fmt::format("pavement exterior {} with {} sides", v, s.sides));
             s.exterior = (v == 1 || v == 2) ? v : 0;
             break;
         case Keyword::kw_interior:
             s.interior = v;
             break;
         default:  // form
-            // Measured: form 1 and 2 reshape the hexagons' corners (not
-            // implemented); for squares and triangles, and other values,
-            // it changes nothing in a single-cell tile.
-            if (s.sides == 6 && (v == 1 || v == 2))
-                unsupported(at, fmt::format("pavement form {} with 6 sides", v));
+            // Measured: for squares and triangles, and values other than 1
+            // and 2, form changes nothing in single cells and dominoes.
             s.form = v;
             break;
     }
+}
+
+// Settings checked once the whole pavement is known (they may come in any
+// order): dominoes for squares only, corner shapes not built for the others.
+void Interpreter::checkPavement(const scene::Pattern& pattern, const Token& at) {
+    if (pattern.kind != scene::PatternKind::Pavement) return;
+    const scene::PavementSettings& s = pattern.pavement;
+    if (s.tiles > 1 && s.sides != 4)
+        unsupported(at, fmt::format("pavement number_of_tiles {} with {} sides", s.tiles, s.sides));
+    if (s.exterior != 0 && s.sides != 4)
+        unsupported(at, fmt::format("pavement exterior {} with {} sides", s.exterior, s.sides));
+    // form 1 and 2 reshape the hexagons' corners (measured; not built).
+    if (s.sides == 6 && (s.form == 1 || s.form == 2))
+        unsupported(at, fmt::format("pavement form {} with 6 sides", s.form));
 }
 
 // slope <S> | slope { <S> [, LO, HI] [altitude <A> [, LO, HI]] }
@@ -700,6 +708,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                                closing == Sym::RBrace ? "}" : "]", describeToken(item)));
     }
     normal.pattern = holder.pattern();
+    checkPavement(normal.pattern, peek());
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
 }
