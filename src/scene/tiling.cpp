@@ -9,6 +9,7 @@ namespace frameray::scene {
 namespace {
 
 constexpr double kSqrt3 = 1.7320508075688772;
+constexpr double kPi = 3.14159265358979323846;
 
 // Tiling 1: unit squares with edges on whole x and z; 1 - (distance to the
 // nearest edge) / 0.5.
@@ -558,9 +559,50 @@ constexpr double kDomino[] = {0, 0, 1, 0, 1, 2, 0, 2};
 constexpr Tile kDominoes[] = {{0, kDomino}};
 constexpr LatticeTiling kPavementDominoes{1, 0, 0, 2, 1, 0.5, kDominoes};
 
+// number_of_sides 3 number_of_tiles 2: lozenges leaning left (tiling 4's
+// mirrored), shaded over the triangles' inradius (flat inside).
+constexpr Tile kLozengeLeft[] = {{0, kLeaningLeft}};
+constexpr LatticeTiling kPavementLozenges{1, 0, 0.5, kH, 1, kSqrt3 / 6.0, kLozengeLeft};
+
+// number_of_sides 6 number_of_tiles 2: the hexagons of the single-cell
+// pavement (centred at (1, 0) + i (1.5, sqrt3/2) + j (0, sqrt3)) joined in
+// pairs, (i, j) with even i to (i + 1, j - 1) (measured); shaded over
+// sqrt3/6 from the point's own hexagon's other five edges.
+double hexagonPairs(const Vec3& p) {
+    const double x = p.x - 1.0, z = p.z;
+    const double q = x * (2.0 / 3.0), r = z / kSqrt3 - x / 3.0, t = -q - r;
+    double rq = std::round(q), rr = std::round(r);
+    const double rt = std::round(t);
+    const double dq = std::abs(rq - q), dr = std::abs(rr - r), dt = std::abs(rt - t);
+    if (dq > dr && dq > dt)
+        rq = -rr - rt;
+    else if (dr > dt)
+        rr = -rq - rt;
+    const bool first = std::fmod(std::abs(rq), 2.0) == 0.0;
+    const double pq = first ? rq + 1 : rq - 1, pr = first ? rr - 1 : rr + 1;
+    auto centre = [](double i, double j) {
+        return std::pair{1.0 + 1.5 * i, kSqrt3 / 2.0 * i + kSqrt3 * j};
+    };
+    const auto [ax, az] = centre(rq, rr);
+    const auto [bx, bz] = centre(pq, pr);
+    // The distance to the point's own hexagon's five other edges, as lines
+    // (measured: povray ignores the partner's edges).
+    double d = 1e300;
+    for (int k = 0; k < 6; ++k) {
+        const double a = (k + 0.5) * kPi / 3.0;
+        const double nx = std::cos(a), nz = std::sin(a);
+        if (std::abs(ax + kSqrt3 * nx - bx) < 1e-9 && std::abs(az + kSqrt3 * nz - bz) < 1e-9)
+            continue;
+        d = std::min(d, kSqrt3 / 2.0 - ((p.x - ax) * nx + (p.z - az) * nz));
+    }
+    return std::max(0.0, 1.0 - d / (kSqrt3 / 6.0));
+}
+
 }  // namespace
 
 double pavementValue(const PavementSettings& s, const Vec3& p) {
+    if (s.tiles == 2 && s.sides == 6) return hexagonPairs(p);
+    if (s.tiles == 2 && s.sides == 3) return latticeTilingValue(kPavementLozenges, p);
     if (s.tiles == 2 && s.sides == 4) {
         if (s.exterior == 0) return latticeTilingValue(kPavementDominoes, p);
         // Corners cut or rounded: the offset from the domino's middle

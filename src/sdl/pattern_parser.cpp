@@ -333,8 +333,13 @@ void Interpreter::parsePavementItem(scene::PavementSettings& s) {
 void Interpreter::checkPavement(const scene::Pattern& pattern, const Token& at) {
     if (pattern.kind != scene::PatternKind::Pavement) return;
     const scene::PavementSettings& s = pattern.pavement;
-    if (s.tiles > 1 && s.sides != 4)
-        unsupported(at, fmt::format("pavement number_of_tiles {} with {} sides", s.tiles, s.sides));
+    // interior 1 and 2 reshape the hexagon pairs' inner corners (measured;
+    // not built).
+    if (s.tiles == 2 && s.sides == 6 && (s.interior == 1 || s.interior == 2))
+        unsupported(at, fmt::format("pavement interior {} with 6 sides and 2 tiles", s.interior));
+    // form 1 and 2 reshape the lozenges' corners (measured; not built).
+    if (s.tiles == 2 && s.sides == 3 && (s.form == 1 || s.form == 2))
+        unsupported(at, fmt::format("pavement form {} with 3 sides and 2 tiles", s.form));
     if (s.exterior != 0 && s.sides != 4)
         unsupported(at, fmt::format("pavement exterior {} with {} sides", s.exterior, s.sides));
     // form 1 and 2 reshape the hexagons' corners (measured; not built).

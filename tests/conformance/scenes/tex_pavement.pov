@@ -1,5 +1,6 @@
 // Conformance: single-cell pavement (triangles, squares with the three
-// exterior corner shapes, hexagons) and square dominoes, tiling 7 (octagons and squares) and
+// exterior corner shapes, hexagons), two-cell tiles (dominoes, lozenges,
+// hexagon pairs), tiling 7 (octagons and squares) and
 // tiling 4 and 5 (rhombi),
 // in pigments and a normal.
 #version 3.7;
@@ -17,3 +18,5 @@ box { <-1, 0, 1.6>, <1, 2.4, 2.4> pigment { pavement number_of_sides 4 exterior 
 box { <1.6, 0, 1.6>, <3.6, 2.4, 2.4> pigment { pavement number_of_sides 4 exterior 2 number_of_tiles 1 pattern 1 color_map { [0 rgb <0.2, 0.2, 0.6>] [1 rgb 1] } scale 0.5 rotate x * 90 } }
 disc { <-2.4, 0.03, -3.2>, y, 0.7 pigment { pavement number_of_sides 4 number_of_tiles 2 exterior 2 color_map { [0 rgb <0.9, 0.5, 0.1>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.2 } }
 disc { <2.4, 0.03, -3.2>, y, 0.7 pigment { pavement number_of_tiles 2 interior 1 form 2 number_of_sides 4 color_map { [0 rgb <0.1, 0.5, 0.9>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.2 } }
+box { <-1, 2.45, 1.6>, <1, 2.5, 2.4> pigment { pavement number_of_sides 3 number_of_tiles 2 color_map { [0 rgb <0.5, 0, 0.5>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.2 } }
+disc { <0, 0.03, -3.8>, y, 0.6 pigment { pavement number_of_sides 6 number_of_tiles 2 form 3 color_map { [0 rgb <0, 0.4, 0.2>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.15 } }
