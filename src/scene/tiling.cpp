@@ -559,6 +559,12 @@ constexpr double kDomino[] = {0, 0, 1, 0, 1, 2, 0, 2};
 constexpr Tile kDominoes[] = {{0, kDomino}};
 constexpr LatticeTiling kPavementDominoes{1, 0, 0, 2, 1, 0.5, kDominoes};
 
+// number_of_sides 4 number_of_tiles 3 pattern 1: straight trominoes
+// [0, 3] x [0, 1] in rows.
+constexpr double kTromino[] = {0, 0, 3, 0, 3, 1, 0, 1};
+constexpr Tile kTrominoes[] = {{0, kTromino}};
+constexpr LatticeTiling kPavementTrominoes{3, 0, 0, 1, 1, 0.5, kTrominoes};
+
 // number_of_sides 3 number_of_tiles 2: lozenges leaning left (tiling 4's
 // mirrored), shaded over the triangles' inradius (flat inside).
 constexpr Tile kLozengeLeft[] = {{0, kLeaningLeft}};
@@ -601,6 +607,8 @@ double hexagonPairs(const Vec3& p) {
 }  // namespace
 
 double pavementValue(const PavementSettings& s, const Vec3& p) {
+    if (s.tiles == 3 && s.sides == 4 && s.exterior == 0)
+        return latticeTilingValue(kPavementTrominoes, p);
     if (s.tiles == 2 && s.sides == 6) return hexagonPairs(p);
     if (s.tiles == 2 && s.sides == 3) return latticeTilingValue(kPavementLozenges, p);
     if (s.tiles == 2 && s.sides == 4) {

@@ -21,7 +21,8 @@ double tilingValue(int n, const Vec3& p);
 
 // pavement: tiles made of number_of_tiles triangles, squares or hexagons
 // of unit side, shaded from 1 on their edges to 0 inside. Implemented:
-// number_of_tiles 1 and 2 (pattern 1: lozenges, dominoes, hexagon pairs);
+// number_of_tiles 1 and 2 (pattern 1: lozenges, dominoes, hexagon pairs)
+// and the straight square tromino (3, pattern 1);
 // `exterior` shapes the squares' and dominoes' corners (0 sharp, 1 cut, 2
 // round); `interior` and `form` change nothing in what is implemented
 // except where the parser refuses them (measured).

@@ -305,13 +305,12 @@ void Interpreter::parsePavementItem(scene::PavementSettings& s) {
                                      s.sides == 6 ? 5 : 6));
             // Single cells, and square dominoes (the sides may follow;
             // checkPavement looks again at the end of the pattern).
-            if (v > 2) unsupported(at, fmt::format("pavement number_of_tiles {}", v));
+            if (v > 3) unsupported(at, fmt::format("pavement number_of_tiles {}", v));
             s.tiles = v;
             break;
         case Keyword::kw_pattern:
             if (v < 1) fail(at, "pattern value for pavement is out of range.");
-            if (v > 1) unsupported(at, fmt::format("pavement pattern {}", v));
-            s.pattern = v;
+            s.pattern = v;  // checked against the tile count in checkPavement
             break;
         case Keyword::kw_exterior:
             // Measured: values other than 1 and 2 act as 0.
@@ -333,8 +332,29 @@ void Interpreter::parsePavementItem(scene::PavementSettings& s) {
 void Interpreter::checkPavement(const scene::Pattern& pattern, const Token& at) {
     if (pattern.kind != scene::PatternKind::Pavement) return;
     const scene::PavementSettings& s = pattern.pavement;
+    // povray's pattern counts per number_of_tiles (from its messages).
+    static constexpr int kPatterns3[] = {1, 1, 1, 3, 4, 12};
+    static constexpr int kPatterns4[] = {1, 1, 2, 5, 12, 35};
+    static constexpr int kPatterns6[] = {1, 1, 3, 7, 22};
+    const int* counts = s.sides == 3 ? kPatterns3 : s.sides == 4 ? kPatterns4 : kPatterns6;
+    const int tileCount = s.sides == 6 ? 5 : 6;
+    if (s.tiles >= 1 && s.tiles <= tileCount && s.pattern > counts[s.tiles - 1]) {
+        std::string list;
+        for (int i = 0; i < tileCount; ++i) {
+            if (i > 0) list.push_back(',');
+            list.append(std::to_string(counts[i]));
+        }
+        fail(at,
+             fmt::format("pattern value for pavement is out of range. max per tile:({})", list));
+    }
     // interior 1 and 2 reshape the hexagon pairs' inner corners (measured;
     // not built).
+    // Three cells: only the straight squares tromino (pattern 1) with sharp
+    // corners.
+    if (s.tiles == 3 && (s.sides != 4 || s.pattern != 1 || s.exterior != 0))
+        unsupported(at,
+                    fmt::format("pavement number_of_tiles 3 with {} sides, pattern {}, exterior {}",
+                                s.sides, s.pattern, s.exterior));
     if (s.tiles == 2 && s.sides == 6 && (s.interior == 1 || s.interior == 2))
         unsupported(at, fmt::format("pavement interior {} with 6 sides and 2 tiles", s.interior));
     // form 1 and 2 reshape the lozenges' corners (measured; not built).

@@ -1,6 +1,6 @@
 // Conformance: single-cell pavement (triangles, squares with the three
 // exterior corner shapes, hexagons), two-cell tiles (dominoes, lozenges,
-// hexagon pairs), tiling 7 (octagons and squares) and
+// hexagon pairs), straight trominoes, tiling 7 (octagons and squares) and
 // tiling 4 and 5 (rhombi),
 // in pigments and a normal.
 #version 3.7;
@@ -20,3 +20,4 @@ disc { <-2.4, 0.03, -3.2>, y, 0.7 pigment { pavement number_of_sides 4 number_of
 disc { <2.4, 0.03, -3.2>, y, 0.7 pigment { pavement number_of_tiles 2 interior 1 form 2 number_of_sides 4 color_map { [0 rgb <0.1, 0.5, 0.9>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.2 } }
 box { <-1, 2.45, 1.6>, <1, 2.5, 2.4> pigment { pavement number_of_sides 3 number_of_tiles 2 color_map { [0 rgb <0.5, 0, 0.5>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.2 } }
 disc { <0, 0.03, -3.8>, y, 0.6 pigment { pavement number_of_sides 6 number_of_tiles 2 form 3 color_map { [0 rgb <0, 0.4, 0.2>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.15 } }
+box { <1.6, 2.45, 1.6>, <3.6, 2.5, 2.4> pigment { pavement number_of_sides 4 number_of_tiles 3 interior 2 form 1 color_map { [0 rgb <0.6, 0.4, 0>] [1 rgb 1] } translate <0.013, 0, 0.017> scale 0.2 } }
