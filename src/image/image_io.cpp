@@ -11,6 +11,7 @@
 
 #include "image/codecs.h"
 #include "image/gif_decoder.h"
+#include "image/png_palette.h"
 #include "image/png_writer.h"
 #include "util/durable_file.h"
 
@@ -164,7 +165,16 @@ SourceImage readSource(const fs::path& path) {
         src.palette = std::move(gif.palette);
         return src;
     }
-    return codecs().readSource(path.string());
+    SourceImage read = codecs().readSource(path.string());
+    // Palette PNGs: the colours come from OpenImageIO as for any PNG, the
+    // indices from libpng.
+    if (auto palette = readPalettePng(path)) {
+        if (palette->width == read.pixels.width && palette->height == read.pixels.height) {
+            read.indices = std::move(palette->indices);
+            read.palette = std::move(palette->palette);
+        }
+    }
+    return read;
 }
 
 }  // namespace frameray::image

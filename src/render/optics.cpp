@@ -82,7 +82,11 @@ double fakeCaustics(const scene::Object& obj, const Vec3& p, const Vec3& dir) {
     if (!obj.interior || obj.interior->caustics == 0) return 1.0;
     Vec3 n = obj.normalAt(p);
     if (dot(n, dir) > 0) n = -n;
-    if (obj.texture) n = obj.texture->perturbNormal(p, n);
+    if (obj.texture) {
+        const scene::Texture& tex = *obj.texture;
+        const Vec3 uv = tex.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
+        n = tex.perturbNormal(tex.uvMapping ? uv : p, n, uv);
+    }
     const double c = std::fabs(dot(n, normalize(dir)));
     return 1.0 + std::pow(c, 45.0 * obj.interior->caustics);
 }

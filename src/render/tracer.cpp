@@ -138,10 +138,18 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     }
     if (quickColours_) {
         const scene::Object& obj = *hit.object;
-        return quickColour(obj.texture ? *obj.texture : defaultTexture(), ray.at(hit.t));
+        const Vec3 p = ray.at(hit.t);
+        const scene::Texture& tex = obj.texture ? *obj.texture : defaultTexture();
+        return quickColour(tex, p, tex.usesUv() ? obj.surfaceUv(p) : p);
     }
-    RGB color = shade(ray, hit, state, counts);
-    if (fades) color = color * interiorFade(*medium->interior, hit.t * length(ray.direction));
+    RGB color;
+    if (fades) {
+        State faded = state;
+        faded.fade = interiorFade(*medium->interior, hit.t * length(ray.direction));
+        color = shade(ray, hit, faded, counts);
+    } else {
+        color = shade(ray, hit, state, counts);
+    }
     // povray leaves out fog and rainbows along rays inside objects that
     // are not hollow (measured: a transmitting box 4 units deep in fog
     // shows the fog only in front of it and beyond it; inside a hollow
@@ -159,27 +167,30 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
 // bottom texture layer's pigment, or that pigment's quick_color, with no
 // lighting, shadows, transparency or reflection; a patterned texture
 // (texture_map, checker of textures, tiles) shows its entries' colours.
-RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p) const {
+RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const {
     const scene::Texture& bottom = top.layersBelow.empty() ? top : *top.layersBelow.back();
+    const Vec3 at = bottom.uvMapping ? uv : p;
     if (bottom.map) {
         RGB color(0.0);
-        const Vec3 q = bottom.transform.inversePoint(p);
+        const Vec3 q = bottom.transform.inversePoint(at);
         const Vec3 entry = bottom.map->entryPoint(q);
         bottom.map->visit(
-            q, [&](const scene::Texture& t, double w) { color += quickColour(t, entry) * w; });
+            q, [&](const scene::Texture& t, double w) { color += quickColour(t, entry, uv) * w; });
         return color;
     }
     if (!bottom.pigment) return RGB(0.0);
     const scene::Pigment& pigment = *bottom.pigment;
     if (pigment.quickColor()) return pigment.quickColor()->rgb;
-    return pigment.at(bottom.transform.inversePoint(p)).rgb;
+    scene::SurfaceInfo surface{};
+    surface.uv = uv;
+    return pigment.at(bottom.transform.inversePoint(at), &surface).rgb;
 }
 
 // Ambient, emission, diffuse and highlights of one texture layer whose
 // pigment at the point is `surface`, shaded with the normal n.
 RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
-                       RayCounts& counts) const {
+                       const RGB& fade, RayCounts& counts) const {
     const scene::Finish& fin = tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
@@ -225,7 +236,8 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
             fromBehind = true;
         }
         if (cosIncidence <= 0) continue;
-        RGB lightColor = lightArriving(world_, light, p, path, eps, lighting_, counts.shadow);
+        RGB lightColor =
+            lightArriving(world_, light, p, path, eps, lighting_, counts.shadow) * fade;
         if (lightColor.isBlack()) continue;
         if (irid)
             lightColor =
@@ -270,8 +282,11 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // Shade the side facing the viewer.
     if (dot(geometric, viewDir) > 0) geometric = -geometric;
     const scene::Texture& own = obj.texture ? *obj.texture : defaultTexture();
+    // uv_mapping's point, found only when a texture asks for it.
+    const Vec3 uv =
+        !obj.componentTextures.empty() || own.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
     if (obj.componentTextures.empty())
-        return shadeTexture(own, ray, obj, p, p, viewDir, geometric, state, counts);
+        return shadeTexture(own, ray, obj, p, p, uv, viewDir, geometric, state, counts);
     // A blob's component textures: each is shaded and the colours blended
     // (as povray 3.7 does). povray skips a texture whose weight is under
     // adc_bailout without giving its share to the others (measured: weights
@@ -282,7 +297,7 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     if (state.transmit) part.transmit = &partTransmit;
     obj.visitTextures(p, own, [&](const scene::Texture& t, double w) {
         if (w * state.weight < scene_.globals.adcBailout) return;
-        color += shadeTexture(t, ray, obj, p, p, viewDir, geometric, part, counts) * w;
+        color += shadeTexture(t, ray, obj, p, p, uv, viewDir, geometric, part, counts) * w;
         transmitSum += partTransmit * w;
     });
     if (state.transmit) *state.transmit = transmitSum;
@@ -290,23 +305,24 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
 }
 
 RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
-                         const Vec3& p, const Vec3& texP, const Vec3& viewDir,
+                         const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
                          const Vec3& geometric, const State& state, RayCounts& counts) const {
     // A patterned texture: povray 3.7 shades each texture the pattern
     // picks (with its own reflection and transmission) and blends the
     // shaded colours by their weights (measured).
     if (top.map) {
         RGB color(0.0);
-        const Vec3 q = top.transform.inversePoint(texP);
+        const Vec3 q = top.transform.inversePoint(top.uvMapping ? uv : texP);
         const Vec3 entry = top.map->entryPoint(q);
-        const scene::SurfaceInfo surface{geometric, viewDir};
+        const scene::SurfaceInfo surface{geometric, viewDir, uv};
         double transmitSum = 0, entryTransmit = 0;
         State part = state;
         if (state.transmit) part.transmit = &entryTransmit;
         top.map->visit(
             q,
             [&](const scene::Texture& t, double w) {
-                color += shadeTexture(t, ray, obj, p, entry, viewDir, geometric, part, counts) * w;
+                color +=
+                    shadeTexture(t, ray, obj, p, entry, uv, viewDir, geometric, part, counts) * w;
                 transmitSum += entryTransmit * w;
             },
             &surface);
@@ -381,14 +397,16 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
+        // A uv-mapped layer is evaluated at the surface's uv.
+        const Vec3& layerP = tex.uvMapping ? uv : texP;
         const scene::SurfaceInfo unperturbed{geometric, viewDir};
-        n = tex.perturbNormal(texP, geometric, &unperturbed);
+        n = tex.perturbNormal(layerP, geometric, uv, &unperturbed);
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
-        const scene::SurfaceInfo info{n, viewDir};
-        const Color surface = tex.pigment->at(tex.transform.inversePoint(texP), &info);
+        const scene::SurfaceInfo info{n, viewDir, uv};
+        const Color surface = tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         pigment = surface.rgb;
-        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, counts);
+        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts);
         color += i == 0 ? local : through * local;
 
         if (spawns && fin.reflection.any()) {
@@ -458,7 +476,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
             if (const auto bent = refractedDirection(viewDir, n, eta)) {
                 ++counts.refraction;
                 childTransmit = 0;
-                sum += weight * trace({p, *bent}, eps, child, counts);
+                sum += weight * trace({p, *bent}, eps, child, counts) * state.fade;
                 seen += childTransmit / bands;
             } else {
                 const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
@@ -482,12 +500,12 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         // non-refracting surfaces).
         child.level = state.level;
         ++counts.transmission;
-        color += through * trace({p, viewDir}, eps, child, counts);
+        color += through * trace({p, viewDir}, eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else if (const auto bent = refractedDirection(viewDir, n, c.iorHere / c.iorBeyond)) {
         child.level = state.level + 1;
         ++counts.refraction;
-        color += through * trace({p, *bent}, eps, child, counts);
+        color += through * trace({p, *bent}, eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else {
         // Total internal reflection: the ray is mirrored back inside with

@@ -85,6 +85,12 @@ class Tracer {
         scene::RayKind kind = scene::RayKind::Camera;
         InteriorStack inside;
         SpectralBand band;  // white until a dispersive interior splits the ray
+        // How much of the light and of the transmitted rays at this ray's
+        // hit survive the interior the ray crossed to get there; the
+        // surface's ambient, emission and reflection are not faded
+        // (measured: povray 3.7 leaves them whole). Set by trace() for the
+        // one hit, never inherited.
+        RGB fade{1.0};
         // With alpha output (+UA), where a camera ray and the rays that
         // continue it through surfaces report how much of the background
         // shows through (missed rays then see black); null otherwise and
@@ -95,16 +101,17 @@ class Tracer {
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
     RGB shade(const scene::Ray& ray, const Hit& hit, const State& state, RayCounts& counts) const;
     // p is where the surface is lit, texP where the texture is evaluated
-    // (they differ inside a warped texture map).
+    // (they differ inside a warped texture map); uv is the surface's
+    // (u, v, 0) for uv_mapping.
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
-                     const Vec3& p, const Vec3& texP, const Vec3& viewDir, const Vec3& geometric,
-                     const State& state, RayCounts& counts) const;
+                     const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
+                     const Vec3& geometric, const State& state, RayCounts& counts) const;
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
-                   const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
+                   const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps, const RGB& fade,
                    RayCounts& counts) const;
 
     // +Q0/+Q1: the colour of texture `top` at p with no lighting at all.
-    RGB quickColour(const scene::Texture& top, const Vec3& p) const;
+    RGB quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const;
 
     const World& world_;
     const scene::Scene& scene_;

@@ -52,15 +52,18 @@ void guarded(TraceContext* ctx, Body body) {
 RGB lightPassing(const scene::Object& obj, const Vec3& p) {
     if (obj.componentTextures.empty()) {
         if (!obj.texture) return RGB(0.0);  // the default texture is opaque black
-        return obj.texture->throughAt(p);
+        // uv_mapping's point, found only when the texture asks for it.
+        const Vec3 uv = obj.texture->usesUv() ? obj.surfaceUv(p) : p;
+        return obj.texture->throughAt(p, &uv);
     }
     // A blob's component textures, blended as for shading (an untextured
     // part with the default texture is opaque).
     RGB through(0.0);
     const scene::Texture opaque;
+    const Vec3 uv = obj.surfaceUv(p);
     obj.visitTextures(p, obj.texture ? *obj.texture : opaque,
                       [&](const scene::Texture& t, double w) {
-                          if (&t != &opaque) through += t.throughAt(p) * w;
+                          if (&t != &opaque) through += t.throughAt(p, &uv) * w;
                       });
     return through;
 }

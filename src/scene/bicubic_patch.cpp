@@ -105,6 +105,7 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
       flatness_(flatness),
       placement_(placement) {
     std::vector<Vec3> vertices, normals;
+    std::vector<std::array<double, 2>> uvs;
     std::vector<MeshTriangle> tris;
     // A corner's normal; where the derivatives vanish (a collapsed edge)
     // the normal a little inside the patch.
@@ -117,6 +118,7 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
     auto addVertex = [&](double u, double v) {
         vertices.push_back(point(u, v));
         normals.push_back(cornerNormal(u, v));
+        uvs.push_back({u, v});
         return static_cast<uint32_t>(vertices.size() - 1);
     };
     auto addQuad = [&](uint32_t p00, uint32_t p10, uint32_t p01, uint32_t p11) {
@@ -127,6 +129,8 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
         for (size_t k = 0; k < 3; ++k) {
             a.normal[k] = static_cast<int32_t>(a.vertex[k]);
             b.normal[k] = static_cast<int32_t>(b.vertex[k]);
+            a.uv[k] = static_cast<int32_t>(a.vertex[k]);
+            b.uv[k] = static_cast<int32_t>(b.vertex[k]);
         }
         tris.push_back(a);
         tris.push_back(b);
@@ -168,8 +172,10 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
             };
         split(0, 1, 0, 1, 0, 0);
     }
-    mesh_ = std::make_shared<const TriangleMesh>(std::move(vertices), std::move(normals),
-                                                 std::move(tris));
+    auto mesh =
+        std::make_shared<TriangleMesh>(std::move(vertices), std::move(normals), std::move(tris));
+    mesh->setUvs(std::move(uvs));
+    mesh_ = std::move(mesh);
 }
 
 }  // namespace frameray::scene

@@ -44,6 +44,11 @@ class BicubicPatch final : public Shape {
     bool inside(const Vec3&) const override { return false; }
     bool isPatch() const override { return true; }
     Bounds bounds() const override { return mesh_->bounds(TriangleMesh::kAllGroups); }
+    // uv_mapping: the patch parameters (u, v) of the point.
+    bool uv(const Vec3& p, double& u, double& v) const override {
+        mesh_->uvAt(p, TriangleMesh::kAllGroups, u, v);
+        return true;
+    }
     Bounds insideBounds() const override { return {}; }
     const char* name() const override { return "bicubic_patch"; }
 

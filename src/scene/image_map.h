@@ -21,7 +21,7 @@ namespace frameray::scene {
 
 enum class ImageMapping { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5 };
 
-enum class ImageInterpolation { None = 0, Bilinear = 2, NormalizedDistance = 4 };
+enum class ImageInterpolation { None = 0, Bilinear = 2, Bicubic = 3, NormalizedDistance = 4 };
 
 // The prepared pixels of one image as a pigment, pattern or bump map uses
 // them; row 0 is the image's top row.
@@ -62,6 +62,9 @@ class ImageMap {
     // The scalar at texel (ix, iy), wrapped or clamped as the map repeats
     // (bump maps sample neighbouring texels).
     double texelValue(int ix, int iy) const;
+    // The texel (x from the left, y from the top) that image point (u, v)
+    // shows without interpolation.
+    void nearestTexel(double u, double v, int& ix, int& iy) const;
     // Texel coordinates (in pixels, x from the left, y from the top) of
     // image point (u, v), before the half-pixel shift of interpolation.
     void texelCoordinates(double u, double v, double& x, double& y) const;

@@ -252,7 +252,7 @@ Vec3 TriangleMesh::triangleNormal(uint32_t tri, const Vec3& p, const Transform* 
     return dot(n, n) > 0 ? normalize(n) : face;
 }
 
-Vec3 TriangleMesh::normal(const Vec3& p, int group, const Transform* toWorld) const {
+int64_t TriangleMesh::nearestTriangle(const Vec3& p, int group) const {
     // The triangle nearest to p among those whose padded box holds it.
     // Distance: to the plane, plus how far p's projection lies outside the
     // triangle (in barycentric terms scaled by the edge), so that on a
@@ -309,8 +309,38 @@ Vec3 TriangleMesh::normal(const Vec3& p, int group, const Transform* toWorld) co
             }
         }
     }
-    if (!found) return toWorld ? normalize(toWorld->normal(Vec3(0, 1, 0))) : Vec3(0, 1, 0);
-    return triangleNormal(bestTri, p, toWorld);
+    return found ? static_cast<int64_t>(bestTri) : -1;
+}
+
+Vec3 TriangleMesh::normal(const Vec3& p, int group, const Transform* toWorld) const {
+    const int64_t tri = nearestTriangle(p, group);
+    if (tri < 0) return toWorld ? normalize(toWorld->normal(Vec3(0, 1, 0))) : Vec3(0, 1, 0);
+    return triangleNormal(static_cast<uint32_t>(tri), p, toWorld);
+}
+
+void TriangleMesh::uvAt(const Vec3& p, int group, double& u, double& v) const {
+    u = v = 0;
+    const int64_t tri = nearestTriangle(p, group);
+    if (tri < 0) return;
+    const MeshTriangle& m = triangles_[static_cast<size_t>(tri)];
+    for (const int32_t i : m.uv)
+        if (i < 0 || static_cast<size_t>(i) >= uvs_.size()) return;
+    // Barycentric weights of p's projection onto the triangle's plane.
+    const Vec3 &a = vertices_[m.vertex[0]], &b = vertices_[m.vertex[1]],
+               &c = vertices_[m.vertex[2]];
+    const Vec3 e1 = b - a, e2 = c - a, d = p - a;
+    const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+    const double dp1 = dot(d, e1), dp2 = dot(d, e2);
+    const double den = d11 * d22 - d12 * d12;
+    if (den == 0) return;
+    const double wb = (d22 * dp1 - d12 * dp2) / den;
+    const double wc = (d11 * dp2 - d12 * dp1) / den;
+    const double wa = 1 - wb - wc;
+    const auto& ua = uvs_[static_cast<size_t>(m.uv[0])];
+    const auto& ub = uvs_[static_cast<size_t>(m.uv[1])];
+    const auto& uc = uvs_[static_cast<size_t>(m.uv[2])];
+    u = ua[0] * wa + ub[0] * wb + uc[0] * wc;
+    v = ua[1] * wa + ub[1] * wb + uc[1] * wc;
 }
 
 Bounds TriangleMesh::bounds(int group) const {

@@ -25,6 +25,8 @@ struct MeshTriangle {
     // The triangle's own texture (index into the mesh's texture list), or
     // -1 for the mesh object's texture.
     int32_t texture = -1;
+    // Indices into the mesh's uv list for uv_mapping; -1: none given.
+    std::array<int32_t, 3> uv{-1, -1, -1};
 };
 
 class TriangleMesh {
@@ -35,6 +37,13 @@ class TriangleMesh {
     // height field blends its normals as they are).
     TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals,
                  std::vector<MeshTriangle> triangles, bool keepNormalLengths = false);
+
+    // The uv coordinates the triangles' uv indices refer to (uv_vectors);
+    // call before the mesh is shared.
+    void setUvs(std::vector<std::array<double, 2>> uvs) { uvs_ = std::move(uvs); }
+    // uv_mapping: the uv of a point on the surface, interpolated over the
+    // triangle it lies on; (0, 0) on triangles without uv (measured).
+    void uvAt(const Vec3& p, int group, double& u, double& v) const;
 
     // Hits below this object-space height are ignored (height_field's
     // water_level); call before the mesh is shared.
@@ -82,10 +91,13 @@ class TriangleMesh {
     void traverse(const Group& g, const Ray& ray, double tMin, Limit tMax, Visit visit) const;
     bool hitTriangle(uint32_t tri, const Ray& ray, double tMin, double tMax, double& t) const;
     Vec3 triangleNormal(uint32_t tri, const Vec3& p, const Transform* toWorld) const;
+    // The triangle p lies on (the nearest one); -1 when there is none.
+    int64_t nearestTriangle(const Vec3& p, int group) const;
 
     std::vector<Vec3> vertices_;
     std::vector<Vec3> normals_;
     std::vector<MeshTriangle> triangles_;  // sorted by group, then in BVH order
+    std::vector<std::array<double, 2>> uvs_;
     std::vector<Group> groups_;
     double minY_ = -kInfinity;
 };
@@ -117,6 +129,10 @@ class MeshShape final : public Shape {
         return solid_ ? mesh_->bounds(TriangleMesh::kAllGroups) : Bounds{};
     }
     const char* name() const override { return "mesh"; }
+    bool uv(const Vec3& p, double& u, double& v) const override {
+        mesh_->uvAt(p, group_, u, v);
+        return true;
+    }
 
     const std::shared_ptr<const TriangleMesh>& mesh() const { return mesh_; }
 

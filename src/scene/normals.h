@@ -33,6 +33,10 @@ struct Normal {
     // Size of the sampling tetrahedron for patterns that are not normal
     // patterns of their own (accuracy).
     double accuracy = 0.02;
+    // uv_mapping in the normal: the pattern is evaluated at the surface's
+    // (u, v, 0) through the normal's own transformations, and its
+    // perturbation is not turned by the texture's or object's (measured).
+    bool uvMapping = false;
     // bump_map: the image whose heights tilt the normal (the pattern's
     // chain still places it).
     std::shared_ptr<const ImageMap> bumpMap;

@@ -114,6 +114,14 @@ struct Object {
     bool insideInverted(const Vec3& p) const;
     // Unit normal of a primitive's surface at a world point on it.
     Vec3 normalAt(const Vec3& p) const;
+    // uv_mapping's point (u, v, 0) for a world point on a primitive's
+    // surface: the shape's own uv, else the point's world x and y (povray
+    // 3.7, measured).
+    Vec3 surfaceUv(const Vec3& p) const {
+        double u = 0, v = 0;
+        if (shape && shape->uv(transform.inversePoint(p), u, v)) return Vec3(u, v, 0);
+        return Vec3(p.x, p.y, 0);
+    }
     // The textures colouring world point p and their weights (summing to
     // 1): `own` (the object's resolved texture) alone, except for a blob
     // with componentTextures.

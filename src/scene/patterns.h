@@ -31,6 +31,8 @@ class Pigment;
 struct SurfaceInfo {
     Vec3 normal;
     Vec3 direction;
+    // The surface's (u, v, 0) for uv_mapping (Object::surfaceUv).
+    Vec3 uv;
 };
 
 enum class PatternKind {

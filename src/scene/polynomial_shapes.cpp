@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "scene/shape_math.h"
 #include "util/roots.h"
@@ -76,6 +77,20 @@ Vec3 Torus::normal(const Vec3& p) const {
     if (rho == 0) return normalize(Vec3(0, p.y, 0) + Vec3(0, 1e-300, 0));
     const Vec3 centre(p.x / rho * major_, 0, p.z / rho * major_);
     return normalize(p - centre);
+}
+
+// povray 3.7's torus uv (measured): u the turns around y from -x towards
+// +z (the opposite sense of the sphere's), v the turns around the tube as
+// image map_type 5.
+bool Torus::uv(const Vec3& p, double& u, double& v) const {
+    double angle = std::atan2(p.z, -p.x) / (2 * std::numbers::pi);
+    if (angle < 0) angle += 1;
+    u = angle;
+    const double radial = std::hypot(p.x, p.z) - major_;
+    double turn = 0.5 + std::atan2(p.y, radial) / (2 * std::numbers::pi);
+    if (turn >= 1) turn -= 1;
+    v = turn;
+    return true;
 }
 
 bool Torus::inside(const Vec3& p) const {

@@ -47,6 +47,7 @@ class Torus final : public Shape {
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override;
     const char* name() const override { return "torus"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
     double majorRadius() const { return major_; }
     double minorRadius() const { return minor_; }

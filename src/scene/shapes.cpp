@@ -1,6 +1,8 @@
 #include "scene/shapes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "scene/scratch.h"
 #include "scene/shape_math.h"
@@ -47,6 +49,18 @@ bool Sphere::firstHit(const Ray& ray, double tMin, double tMax, double& t) const
         return true;
     }
     return false;
+}
+
+// povray 3.7's sphere uv (measured): u the turns around y from +x towards
+// +z, v the latitude from the south pole (0) to the north pole (1).
+bool Sphere::uv(const Vec3& p, double& u, double& v) const {
+    const Vec3 d = p - center_;
+    const double len = length(d);
+    double angle = std::atan2(d.z, d.x) / (2 * std::numbers::pi);
+    if (angle < 0) angle += 1;
+    u = angle;
+    v = len > 0 ? 0.5 + std::asin(std::clamp(d.y / len, -1.0, 1.0)) / std::numbers::pi : 0.5;
+    return true;
 }
 
 bool Sphere::inside(const Vec3& p) const {
@@ -161,6 +175,39 @@ Vec3 Box::normal(const Vec3& p) const {
     Vec3 n;
     n[bestAxis] = sign;
     return n;
+}
+
+// povray 3.7's box uv (measured): the six faces unfolded into a cross on
+// a 4 x 3 grid, each face a quarter of the width and a third of the
+// height: -x, +z, +x, -z along the middle row (v 1/3..2/3), -y below and
+// +y above the +z face.
+bool Box::uv(const Vec3& p, double& u, double& v) const {
+    const Vec3 size = hi_ - lo_;
+    auto frac = [&](int axis) {
+        return size[axis] > 0 ? std::clamp((p[axis] - lo_[axis]) / size[axis], 0.0, 1.0) : 0.0;
+    };
+    const double X = frac(0), Y = frac(1), Z = frac(2);
+    const Vec3 n = normal(p);
+    if (n.x < 0) {
+        u = Z / 4;
+        v = (1 + Y) / 3;
+    } else if (n.x > 0) {
+        u = 0.75 - Z / 4;
+        v = (1 + Y) / 3;
+    } else if (n.z > 0) {
+        u = 0.25 + X / 4;
+        v = (1 + Y) / 3;
+    } else if (n.z < 0) {
+        u = 1 - X / 4;
+        v = (1 + Y) / 3;
+    } else if (n.y < 0) {
+        u = 0.25 + X / 4;
+        v = Z / 3;
+    } else {
+        u = 0.25 + X / 4;
+        v = 1 - Z / 3;
+    }
+    return true;
 }
 
 bool Box::inside(const Vec3& p) const {

@@ -55,6 +55,10 @@ class Shape {
     // operands' bounding boxes, which only shows with such shapes.
     virtual bool insideReachesPastBounds() const { return false; }
     virtual const char* name() const = 0;
+    // uv_mapping (povray 3.7, measured): the surface coordinates (u, v) of
+    // object-space point p on the surface. False for shapes without their
+    // own, which povray maps by the world x and y of the point instead.
+    virtual bool uv(const Vec3& /*p*/, double& /*u*/, double& /*v*/) const { return false; }
     // A shape whose geometry depends on where it is placed (a bicubic
     // patch with flatness subdivides by world-space distances) returns
     // its rebuilt self for the object-to-world transform `toWorld`; the
@@ -73,6 +77,7 @@ class Sphere final : public Shape {
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override;
     const char* name() const override { return "sphere"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
   private:
     Vec3 center_;
@@ -112,6 +117,7 @@ class Box final : public Shape {
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return {lo_, hi_}; }
     const char* name() const override { return "box"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
   private:
     // Where the ray enters and leaves the slabs; false when it misses.

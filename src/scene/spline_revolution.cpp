@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <span>
 
 #include "scene/shape_math.h"
@@ -196,6 +197,37 @@ Vec3 Lathe::normal(const Vec3& p) const {
     return len > 0 ? n / len : Vec3(0, 1, 0);
 }
 
+namespace {
+
+// The turns around y from +x towards +z (lathe and sor uv, as the sphere's).
+double turnsAroundY(const Vec3& p) {
+    double angle = std::atan2(p.z, p.x) / (2 * std::numbers::pi);
+    return angle < 0 ? angle + 1 : angle;
+}
+
+}  // namespace
+
+// povray 3.7's lathe uv (measured): u around the axis as a sphere's, v
+// through the profile's pieces, each an equal share whatever its height,
+// by the piece's own parameter.
+bool Lathe::uv(const Vec3& p, double& u, double& v) const {
+    const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+    double best = kInfinity, bestS = 0;
+    std::size_t bestIndex = 0;
+    for (std::size_t i = 0; i < segments_.size(); ++i) {
+        double s;
+        const double d = closestOnSegment(segments_[i], rho, p.y, s);
+        if (d < best) {
+            best = d;
+            bestS = s;
+            bestIndex = i;
+        }
+    }
+    u = turnsAroundY(p);
+    v = segments_.empty() ? 0 : (static_cast<double>(bestIndex) + bestS) / segments_.size();
+    return true;
+}
+
 bool Lathe::inside(const Vec3& p) const {
     // Crossings of the profile by the line from (rho, y) outwards.
     const double rho = std::sqrt(p.x * p.x + p.z * p.z);
@@ -305,6 +337,30 @@ void Sor::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>&
         }
     }
     detail::appendDistinctHits(found, tMin, tMax, ts);
+}
+
+// povray 3.7's sor uv (measured): u around the axis as a sphere's; on the
+// side v as the lathe's, each piece an equal share by its height
+// fraction; on the caps v is the distance from the axis over the cap's
+// radius (the top cap's counted from 1 down).
+bool Sor::uv(const Vec3& p, double& u, double& v) const {
+    const Vec3 n = normal(p);
+    if (!open_ && n.x == 0 && n.z == 0 && (n.y == 1 || n.y == -1)) {
+        const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+        u = turnsAroundY(p);
+        if (n.y < 0)
+            v = bottomR2_ > 0 ? rho / std::sqrt(bottomR2_) : 0;
+        else
+            v = topR2_ > 0 ? 1 - rho / std::sqrt(topR2_) : 0;
+        return true;
+    }
+    u = turnsAroundY(p);
+    v = 0;
+    const Piece* piece = pieceAt(p.y);
+    if (!piece) return true;
+    const double s = std::clamp((p.y - piece->h0) / (piece->h1 - piece->h0), 0.0, 1.0);
+    v = (static_cast<double>(piece - pieces_.data()) + s) / static_cast<double>(pieces_.size());
+    return true;
 }
 
 Vec3 Sor::normal(const Vec3& p) const {

@@ -21,6 +21,7 @@ class Lathe final : public Shape {
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return bounds_; }
     const char* name() const override { return "lathe"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
   private:
     std::vector<ProfileSegment> segments_;
@@ -37,6 +38,7 @@ class Sor final : public Shape {
     bool inside(const Vec3& p) const override;
     Bounds bounds() const override { return bounds_; }
     const char* name() const override { return "sor"; }
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
   private:
     // r^2 over one height range: c[0] + c[1] s + c[2] s^2 + c[3] s^3 with

@@ -70,8 +70,9 @@ void Pigment::setPigmentMap(std::vector<MapEntry> map) {
     kind_ = Kind::PigmentMapped;
 }
 
-Color Pigment::at(const Vec3& point, const SurfaceInfo* surface) const {
+Color Pigment::at(const Vec3& given, const SurfaceInfo* surface) const {
     if (kind_ == Kind::Solid) return color_;
+    const Vec3 point = uvMapping_ && surface ? surface->uv : given;
     const SurfaceInfo* sub = surface;  // world-space: the same for sub-pigments
     // Sub-pigments are evaluated in this pigment's space, at the point its
     // warps displaced (povray: the entries of a turbulent map are
@@ -125,20 +126,24 @@ Color Pigment::at(const Vec3& point, const SurfaceInfo* surface) const {
     return color_;
 }
 
-RGB Texture::throughAt(const Vec3& p) const {
+RGB Texture::throughAt(const Vec3& p, const Vec3* uv) const {
+    SurfaceInfo surface{};
+    if (uv) surface.uv = *uv;
+    const SurfaceInfo* info = uv ? &surface : nullptr;
     if (map) {
         // Blended like the shaded colours (povray 3.7, measured).
         RGB through(0.0);
-        const Vec3 q = transform.inversePoint(p);
+        const Vec3 q = transform.inversePoint(uvMapping && uv ? *uv : p);
         const Vec3 entry = map->entryPoint(q);
-        map->visit(q, [&](const Texture& t, double w) { through += t.throughAt(entry) * w; });
+        map->visit(q, [&](const Texture& t, double w) { through += t.throughAt(entry, uv) * w; });
         return through;
     }
     RGB passed(1.0);
     const std::size_t layerCount = 1 + layersBelow.size();
     for (std::size_t i = 0; i < layerCount; ++i) {
         const Texture& layer = i == 0 ? *this : *layersBelow[i - 1];
-        const Color c = layer.pigment->at(layer.transform.inversePoint(p));
+        const Vec3 at = layer.uvMapping && uv ? *uv : p;
+        const Color c = layer.pigment->at(layer.transform.inversePoint(at), info);
         if (c.filter == 0 && c.transmit == 0) return RGB(0.0);
         passed *= c.rgb * c.filter + RGB(c.transmit);
     }
@@ -162,7 +167,60 @@ void TextureMap::transformBy(const Transform& t) {
     }
 }
 
+bool Pigment::usesUv() const {
+    if (uvMapping_) return true;
+    for (const auto& p : list_)
+        if (p && p->usesUv()) return true;
+    for (const MapEntry& e : pigmentMap_)
+        if (e.pigment && e.pigment->usesUv()) return true;
+    return false;
+}
+
+bool Texture::usesUv() const {
+    if (uvMapping || (pigment && pigment->usesUv()) || (normal && normal->uvMapping)) return true;
+    for (const auto& layer : layersBelow)
+        if (layer->usesUv()) return true;
+    if (map)
+        for (const TextureMap::Entry& e : map->entries)
+            if (e.texture->usesUv()) return true;
+    return false;
+}
+
+void Texture::turnNormalsBy(const Transform& t) {
+    uvObjectTransform = uvObjectTransform.then(t);
+    for (auto& layer : layersBelow) {
+        auto turned = std::make_shared<Texture>(*layer);
+        turned->turnNormalsBy(t);
+        layer = std::move(turned);
+    }
+    turnMapNormalsBy(t);
+}
+
+void Texture::turnMapNormalsBy(const Transform& t) {
+    if (!map) return;
+    auto turned = std::make_shared<TextureMap>(*map);
+    for (auto& e : turned->entries) {
+        auto entry = std::make_shared<Texture>(*e.texture);
+        entry->turnNormalsBy(t);
+        e.texture = std::move(entry);
+    }
+    map = std::move(turned);
+}
+
 void Texture::transformBy(const Transform& t) {
+    if (uvMapping) {
+        // Fixed to the surface's uv: only the layers below may move, and
+        // the normal's perturbation turns with the object.
+        uvObjectTransform = uvObjectTransform.then(t);
+        // The entries stay on the uv too; their normals turn.
+        turnMapNormalsBy(t);
+        for (auto& layer : layersBelow) {
+            auto moved = std::make_shared<Texture>(*layer);
+            moved->transformBy(t);
+            layer = std::move(moved);
+        }
+        return;
+    }
     if (map) {
         auto moved = std::make_shared<TextureMap>(*map);
         moved->transformBy(t);

@@ -4,11 +4,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "scene/color_map.h"
+#include "scene/image_map.h"
 #include "scene/normals.h"
 #include "scene/patterns.h"
 #include "util/color.h"
@@ -57,6 +59,13 @@ class Pigment {
         kind_ = Kind::ImageMapped;
     }
     const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
+    // uv_mapping: the pigment is evaluated at the surface's (u, v, 0)
+    // (SurfaceInfo::uv) through its own transformations only (povray 3.7,
+    // measured: the texture's and object's transformations do not move it).
+    void setUvMapping() { uvMapping_ = true; }
+    bool uvMapping() const { return uvMapping_; }
+    // Whether this pigment or one it holds is uv-mapped.
+    bool usesUv() const;
     // quick_color: what +Q0/+Q1 show instead of the pigment.
     void setQuickColor(const Color& c) { quickColor_ = c; }
     const std::optional<Color>& quickColor() const { return quickColor_; }
@@ -83,6 +92,7 @@ class Pigment {
     std::vector<MapEntry> pigmentMap_;
     std::shared_ptr<const ImageMap> imageMap_;
     bool average_ = false;
+    bool uvMapping_ = false;
     bool hasTransform_ = false;
     Transform transform_;
 };
@@ -153,10 +163,11 @@ struct Texture;
 
 // A patterned texture: `texture_map { [v texture body] .. }`, a list
 // pattern's textures (`checker texture {..} texture {..}`, `tiles`), or
-// `average` over a texture_map. The pattern lives in a holder pigment (its
-// pattern with its chain of transformations and warps).
+// `average` over a texture_map, or a `material_map` (an image whose pixels
+// pick the textures). The pattern lives in a holder pigment (its pattern
+// with its chain of transformations and warps).
 struct TextureMap {
-    enum class Mode { Values, List, Average };
+    enum class Mode { Values, List, Average, Material };
     struct Entry {
         double value;  // map value; the weight under `average`
         std::shared_ptr<const Texture> texture;
@@ -164,6 +175,16 @@ struct TextureMap {
     Pigment holder;
     Mode mode = Mode::Values;
     std::vector<Entry> entries;
+    // material_map: the image whose scalar texels are texture indices.
+    std::shared_ptr<const ImageMap> material;
+
+    // The entry a material_map index picks (povray 3.7, measured with 1 to
+    // 8 textures: an index past the end wraps modulo the count, except
+    // that the index equal to the count takes the last texture).
+    static std::size_t materialEntry(double index, std::size_t count) {
+        const auto i = static_cast<std::size_t>(std::max(0.0, index));
+        return i > count ? i % count : std::min(i, count - 1);
+    }
 
     // Calls visit(texture, weight) for each texture that colours texture
     // point q: one or two for a map (povray 3.7 shades both and blends the
@@ -185,6 +206,24 @@ struct Texture {
     // it with the object (seed 003 B.3).
     Transform transform;
 
+    // uv_mapping: the texture (pigment, normal and patterned entries) is
+    // evaluated at the surface's (u, v, 0) moved by `transform`, which
+    // then holds only the texture's own transformations (those applied to
+    // the object are ignored: povray 3.7, measured).
+    bool uvMapping = false;
+    // The transformations applied to a uv-mapped texture's object: they
+    // leave the uv point alone but still turn the normal's perturbation
+    // (measured: a bumps normal on a rotated sphere), also for the
+    // textures of a uv-mapped texture's map.
+    Transform uvObjectTransform;
+    // Adds t to uvObjectTransform of this texture, its layers and entries.
+    void turnNormalsBy(const Transform& t);
+    // The same for each entry of the map (copies; no-op without a map).
+    void turnMapNormalsBy(const Transform& t);
+    // Whether anything in the texture needs the surface's uv (the renderer
+    // skips finding it otherwise: a mesh's uv costs a triangle search).
+    bool usesUv() const;
+
     // Layered texture (seed 003 5.4.5): the layers under this one, the
     // nearest first. Each is a complete texture of its own; see
     // render::Tracer::shade for how povray composites them.
@@ -193,7 +232,8 @@ struct Texture {
     // What the texture lets through at world point p (shadow rays): the
     // product of every layer's filter and transmit, black as soon as one
     // layer is opaque.
-    RGB throughAt(const Vec3& p) const;
+    // `uv`: the surface's (u, v, 0) for uv-mapped layers (p when unknown).
+    RGB throughAt(const Vec3& p, const Vec3* uv = nullptr) const;
 
     // Puts this texture (with its own layers) under `upper`'s layers.
     void stackOn(Texture& upper) const;
@@ -212,10 +252,18 @@ struct Texture {
     std::shared_ptr<const Normal> normal;
     // The shading normal at world point p after the texture's normal, for a
     // unit normal n facing the viewer (slope and aoi read `surface`).
-    Vec3 perturbNormal(const Vec3& p, const Vec3& n, const SurfaceInfo* surface = nullptr) const {
+    // For a uv-mapped texture p is the surface's (u, v, 0), as uv is.
+    Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv,
+                      const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
-        const Vec3 tn = normalize(transform.inverse().normal(n));
-        return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
+        if (normal->uvMapping) return normalize(normal->perturb(uv, n, surface));
+        if (uvObjectTransform.isIdentity()) {
+            const Vec3 tn = normalize(transform.inverse().normal(n));
+            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
+        }
+        const Transform frame = transform.then(uvObjectTransform);
+        const Vec3 tn = normalize(frame.inverse().normal(n));
+        return normalize(frame.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
     }
 };
 
@@ -234,6 +282,16 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
             if (total == 0) return;
             for (const Entry& e : entries)
                 if (e.value != 0) visit(*e.texture, e.value / total);
+            return;
+        }
+        case Mode::Material: {
+            // Where the image does not reach (`once`) the first texture
+            // shows (measured); interpolated indices are truncated.
+            double u = 0, w = 0;
+            double index = 0;
+            if (material && material->imageCoordinates(holder.pattern().patternPoint(q), u, w))
+                index = std::floor(material->valueAtImagePoint(u, w));
+            visit(*entries[materialEntry(index, entries.size())].texture, 1.0);
             return;
         }
         case Mode::Values:

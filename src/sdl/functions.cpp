@@ -458,6 +458,7 @@ std::shared_ptr<const VectorFunction> Interpreter::parseVectorFunctionBody() {
     fn->kind = std::string(first.text);
     if (first.is(Keyword::kw_pigment)) {
         const PigmentPtr pigment = parsePigment();
+        if (pigment->uvMapping()) unsupported(first, "a uv_mapping pigment in a function");
         fn->size = 5;
         fn->isColor = true;
         fn->eval = [pigment](const double* a) {

@@ -442,9 +442,15 @@ class Interpreter {
     // bump_map into `normal`, or image_pattern into the pattern holder of
     // a normal being parsed; false when the next token is neither.
     bool parseImageNormalItem(scene::Normal& normal, scene::Pigment& holder);
-    // The block after image_map, image_pattern or bump_map (`keyword`);
-    // bump_size is stored through `bumpSize` when given.
-    std::shared_ptr<const scene::ImageMap> parseImageBlock(const Token& keyword, double* bumpSize);
+    // The block after image_map, image_pattern, bump_map or material_map
+    // (`keyword`); bump_size is stored through `bumpSize` when given, a
+    // material_map's textures are appended to `materials`.
+    std::shared_ptr<const scene::ImageMap> parseImageBlock(
+        const Token& keyword, double* bumpSize,
+        std::vector<std::shared_ptr<const scene::Texture>>* materials = nullptr);
+    // `function W, H { f(x, y, z) }` in an image block: the samples as an
+    // image.
+    image::SourceImage functionSourceImage(const Token& at);
     // An image file found like an include file, read once per frame.
     const image::SourceImage& loadSourceImage(const std::string& name, const Token& at);
 

@@ -164,6 +164,7 @@ scene::SkySphere Interpreter::parseSkySphere() {
         }
         if (t.is(Keyword::kw_pigment)) {
             sky.pigments.push_back(parsePigment());
+            if (sky.pigments.back()->uvMapping()) unsupported(t, "uv_mapping in sky_sphere");
             continue;
         }
         next();

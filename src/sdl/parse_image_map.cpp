@@ -1,5 +1,6 @@
 // Image maps: `image_map { }` in a pigment, `image_pattern { }` as a
-// pattern and `bump_map { }` in a normal (seed 003 §5.4.1.4, §5.4.2.6).
+// pattern, `bump_map { }` in a normal and `material_map { }` in a texture
+// (seed 003 §5.4.1.4, §5.4.2.6, §5.4.4.2).
 // The file is read once per frame (the interpreter caches it by path) and
 // turned into texels here, following POV-Ray 3.7 as measured:
 //   - colours are decoded with the file's gamma - the `gamma` given, else
@@ -15,12 +16,18 @@
 //   - the scalar of image_pattern and bump_map is the grey value
 //     0.297 r + 0.589 g + 0.114 b of the file values (no gamma), or with
 //     use_alpha 1 - alpha; bump_map's use_index takes the palette index
-//     itself (0, 1, 2 ..., not scaled to [0,1]).
+//     itself (0, 1, 2 ..., not scaled to [0,1]);
+//   - material_map's scalar is the index of the texture: the palette index
+//     of palette images (GIF and palette PNG), the 8-bit red value of
+//     colour images and, for grey images, the grey value taken through
+//     povray's single-precision 0.297/0.589/0.114 weighting times 255,
+//     truncated (so 111 gives 110: measured over all 256 grey levels).
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "image/image_io.h"
 #include "scene/image_map.h"
@@ -32,7 +39,7 @@ namespace {
 
 // What the image block is for: it decides which texels are prepared and
 // which items are allowed.
-enum class ImageUse { Pigment, Pattern, Bump };
+enum class ImageUse { Pigment, Pattern, Bump, Material };
 
 bool isImageType(Keyword k) {
     switch (k) {
@@ -105,6 +112,19 @@ struct ImageSettings {
     bool bumpSizeGiven = false;
 };
 
+// The texture a material_map pixel picks before the list length is
+// applied (see the header comment for the rules measured).
+double materialIndex(const image::SourceImage& src, std::size_t p) {
+    if (src.isPalette()) return src.indices[p];
+    const image::EncodedImage& px = src.pixels;
+    const auto ch = static_cast<std::size_t>(px.channels);
+    const double byte = std::floor(static_cast<double>(px.values[p * ch]) * 255.0 + 0.5);
+    if (px.channels >= 3) return byte;
+    const float g = static_cast<float>(byte) / 255.0f;
+    const float grey = 0.297f * g + 0.589f * g + 0.114f * g;
+    return std::floor(static_cast<double>(grey) * 255.0);
+}
+
 }  // namespace
 
 const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, const Token& at) {
@@ -125,14 +145,55 @@ const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, 
     return *images_.emplace(key, std::move(img)).first->second;
 }
 
-std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token& keyword,
-                                                                    double* bumpSize) {
+image::SourceImage Interpreter::functionSourceImage(const Token& at) {
+    const Token sizeAt = peek();
+    const double w = parseFloat();
+    accept(Sym::Comma);
+    const double h = parseFloat();
+    if (!(w >= 2 && h >= 2)) fail(sizeAt, "a function image needs a resolution of at least 2 x 2");
+    if (w * h > double(frame_.limits.arrayElements))
+        fail(sizeAt, fmt::format("function image resolution {} x {} has more than {} samples", w, h,
+                                 frame_.limits.arrayElements));
+    const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(at);
+    image::SourceImage src;
+    image::EncodedImage& img = src.pixels;
+    img.width = static_cast<int>(w);
+    img.height = static_cast<int>(h);
+    img.channels = 1;
+    img.bitDepth = 16;
+    img.values.resize(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
+    // As a height_field function (measured with pigment functions): pixel
+    // (i, j), j = 0 the top row, holds f(i / (W - 1), j / (H - 1), 0) as
+    // 16 bits, truncated and wrapped (1.1 reads back as 0.1).
+    for (int j = 0; j < img.height; ++j)
+        for (int i = 0; i < img.width; ++i) {
+            double args[3] = {static_cast<double>(i) / (img.width - 1),
+                              static_cast<double>(j) / (img.height - 1), 0.0};
+            double value;
+            try {
+                value = fn->eval(args);
+            } catch (const std::runtime_error& e) {
+                fail(at, e.what());
+            }
+            const auto level = static_cast<long long>(value * 65535.0);
+            const auto wrapped = static_cast<unsigned long long>(level) & 0xFFFFu;
+            img.values[static_cast<size_t>(j) * static_cast<size_t>(img.width) +
+                       static_cast<size_t>(i)] = static_cast<float>(wrapped) / 65535.0f;
+        }
+    return src;
+}
+
+std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
+    const Token& keyword, double* bumpSize,
+    std::vector<std::shared_ptr<const scene::Texture>>* materials) {
     const ImageUse use = keyword.is(Keyword::kw_image_map)       ? ImageUse::Pigment
                          : keyword.is(Keyword::kw_image_pattern) ? ImageUse::Pattern
+                         : keyword.is(Keyword::kw_material_map)  ? ImageUse::Material
                                                                  : ImageUse::Bump;
     expectAfter(Sym::LBrace, "{", keyword.text);
     ImageSettings s;
     bool haveFile = false;
+    std::optional<image::SourceImage> functionImage;  // `function W, H { }`
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token item = peek();
@@ -147,10 +208,16 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
             haveFile = true;
             continue;
         }
+        if (!haveFile && item.is(Keyword::kw_function)) {
+            next();
+            functionImage = functionSourceImage(item);
+            haveFile = true;
+            continue;
+        }
         switch (item.kw) {
-            case Keyword::kw_function:
             case Keyword::kw_pattern:
-                unsupported(item, fmt::format("'{}' images in {}", item.text, keyword.text));
+                // povray 3.7 has no pattern images (measured).
+                fail(item, "Expected 'map file spec', pattern found");
             case Keyword::kw_gamma: {
                 next();
                 if (accept(Keyword::kw_srgb)) {
@@ -170,12 +237,15 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
                 next();
                 const Token at = peek();
                 const int m = static_cast<int>(parseFloat());
+                // povray 3.7 (measured): image_map takes only 0, 1, 2 and 5;
+                // image_pattern, bump_map and material_map map every other
+                // value (3, 4, 6, 7 ...) as 0.
                 if (m == 0 || m == 1 || m == 2 || m == 5)
                     s.mapping = static_cast<scene::ImageMapping>(m);
-                else if (m == 3 || m == 4)
-                    unsupported(at, fmt::format("map_type {}", m));
+                else if (use == ImageUse::Pigment)
+                    fail(at, "Invalid map_type value.");
                 else
-                    fail(at, fmt::format("map_type must be 0, 1, 2 or 5, found {}", m));
+                    s.mapping = scene::ImageMapping::Planar;
                 break;
             }
             case Keyword::kw_once:
@@ -191,15 +261,20 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
                 else if (i == 4)
                     s.interpolation = scene::ImageInterpolation::NormalizedDistance;
                 else if (i == 3)
-                    unsupported(at, "interpolate 3");
+                    s.interpolation = scene::ImageInterpolation::Bicubic;
                 else
                     fail(at, "Invalid interpolate value.");
                 break;
             }
+            case Keyword::kw_texture:
+                if (use != ImageUse::Material || !materials)
+                    fail(item, fmt::format("'texture' is not allowed in {}", keyword.text));
+                materials->push_back(parseTexture(nullptr));
+                break;
             case Keyword::kw_filter:
             case Keyword::kw_transmit: {
                 next();
-                if (use == ImageUse::Bump)
+                if (use == ImageUse::Bump || use == ImageUse::Material)
                     fail(item, fmt::format("'{}' is not allowed in bump_map", item.text));
                 ImageSettings::Amount a{item.is(Keyword::kw_filter), -1, 0, item};
                 if (!accept(Keyword::kw_all)) {
@@ -238,10 +313,13 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
         }
     }
     if (!haveFile) fail(keyword, fmt::format("{} needs an image file", keyword.text));
+    if (use == ImageUse::Material && materials->empty())
+        fail(keyword, "material_map needs at least one texture");
     if (s.mapping == scene::ImageMapping::Spherical || s.mapping == scene::ImageMapping::Torus)
         s.once = false;  // the image covers these exactly once anyway
 
-    const image::SourceImage& src = loadSourceImage(s.name, s.nameAt);
+    const image::SourceImage& src =
+        functionImage ? *functionImage : loadSourceImage(s.name, s.nameAt);
     const image::EncodedImage& px = src.pixels;
     for (const auto& a : s.amounts)
         if (a.index >= 0 && !src.isPalette())
@@ -274,7 +352,9 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
                                  : src.declaredGamma > 0 ? src.declaredGamma
                                                          : defaultFileGamma(s.type, s.name);
         auto decode = [&](double v) {
-            if (legacy) return v;
+            // A function image's values are working-space values whatever
+            // the assumed_gamma (measured).
+            if (legacy || functionImage) return v;
             double linear = fileGamma == 0   ? srgbDecode(v)
                             : fileGamma == 1 ? v
                                              : std::pow(v, fileGamma);
@@ -310,6 +390,8 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(const Token&
             double v;
             if (use == ImageUse::Bump && s.useIndex && src.isPalette())
                 v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
+            else if (use == ImageUse::Material)
+                v = materialIndex(src, p);
             else if (s.useAlpha)
                 v = 1.0 - alphaOf(p);
             else

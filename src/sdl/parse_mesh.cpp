@@ -32,14 +32,17 @@ struct MeshParts {
     std::vector<Vec3> vertices;
     std::vector<Vec3> normals;
     std::vector<scene::MeshTriangle> triangles;
+    std::vector<std::array<double, 2>> uvs;  // uv_vectors, for uv_mapping
     std::vector<std::shared_ptr<const scene::Texture>> textures;
     bool hasInsideVector = false;
     Vec3 insideVector;
 };
 
 void Interpreter::buildMeshObject(scene::Object& obj, MeshParts& parts) {
-    auto mesh = std::make_shared<const scene::TriangleMesh>(
+    auto built = std::make_shared<scene::TriangleMesh>(
         std::move(parts.vertices), std::move(parts.normals), std::move(parts.triangles));
+    built->setUvs(std::move(parts.uvs));
+    const std::shared_ptr<const scene::TriangleMesh> mesh = std::move(built);
     if (mesh->groupCount() <= 1) {
         const int32_t tex = mesh->groupCount() == 1 ? mesh->groupTexture(0) : -1;
         obj.shape = std::make_shared<scene::MeshShape>(mesh, scene::TriangleMesh::kAllGroups,
@@ -113,11 +116,14 @@ void Interpreter::parseMeshTriangleItems(MeshParts& parts, scene::MeshTriangle& 
             parts.textures.push_back(*tp);
             tri.texture = static_cast<int32_t>(parts.textures.size() - 1);
         } else if (t.is(Keyword::kw_uv_vectors)) {
-            // Only uv_mapping textures use them, which are not built.
+            // The corners' uv for uv_mapping textures.
             next();
             for (int i = 0; i < 3; ++i) {
                 if (i) accept(Sym::Comma);
-                parseVector();
+                const Token at = peek();
+                const VectorValue uv = toVector(parseExpression(), at, 2);
+                tri.uv[static_cast<size_t>(i)] = static_cast<int32_t>(parts.uvs.size());
+                parts.uvs.push_back({uv.v[0], uv.v[1]});
             }
         } else if (t.is(Keyword::kw_texture_list)) {
             unsupported(t, "texture_list in a mesh triangle (interpolated textures)");
@@ -183,6 +189,8 @@ void Interpreter::parseMesh2(scene::Object& obj) {
     std::vector<int64_t> faceTextures;
     std::vector<Token> faceAt;
     bool haveNormalIndices = false;
+    std::vector<std::array<int64_t, 3>> uvFaces;
+    bool haveUvIndices = false;
     for (;;) {
         const Token t = peek();
         switch (t.kw) {
@@ -193,10 +201,18 @@ void Interpreter::parseMesh2(scene::Object& obj) {
                 parseMesh2List(t, [&](size_t) { parts.normals.push_back(parseVec3()); });
                 continue;
             case Keyword::kw_uv_vectors:
-                parseMesh2List(t, [&](size_t) { parseVector(); });
+                parseMesh2List(t, [&](size_t) {
+                    const Token at = peek();
+                    const VectorValue uv = toVector(parseExpression(), at, 2);
+                    parts.uvs.push_back({uv.v[0], uv.v[1]});
+                });
                 continue;
             case Keyword::kw_uv_indices:
-                parseMesh2List(t, [&](size_t) { parseVec3(); });
+                haveUvIndices = true;
+                parseMesh2List(t, [&](size_t) {
+                    const Vec3 f = parseVec3();
+                    uvFaces.push_back({std::llround(f.x), std::llround(f.y), std::llround(f.z)});
+                });
                 continue;
             case Keyword::kw_texture_list:
                 parseMesh2List(t, [&](size_t) {
@@ -256,6 +272,8 @@ void Interpreter::parseMesh2(scene::Object& obj) {
              "Number of normals does not match the number of vertices (normal_indices needed).");
     if (haveNormalIndices && normalFaces.size() != faces.size())
         fail(faceAt.front(), "Number of normal indices does not match the number of faces.");
+    if (haveUvIndices && uvFaces.size() != faces.size())
+        fail(faceAt.front(), "Number of uv indices does not match the number of faces.");
     for (size_t i = 0; i < faces.size(); ++i) {
         scene::MeshTriangle tri;
         for (size_t k = 0; k < 3; ++k) {
@@ -269,6 +287,11 @@ void Interpreter::parseMesh2(scene::Object& obj) {
                     fail(faceAt[i], "Mesh normal index out of range.");
                 tri.normal[k] = static_cast<int32_t>(normalFaces[i][k]);
             }
+            // uv per face, else per vertex (an index past the list leaves
+            // the triangle without uv).
+            const int64_t uvIndex = haveUvIndices ? uvFaces[i][k] : faces[i][k];
+            if (uvIndex >= 0 && uvIndex < static_cast<int64_t>(parts.uvs.size()))
+                tri.uv[k] = static_cast<int32_t>(uvIndex);
         }
         if (faceTextures[i] >= static_cast<int64_t>(parts.textures.size()))
             fail(faceAt[i], "Texture index out of range in mesh2.");

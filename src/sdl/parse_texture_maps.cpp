@@ -61,7 +61,9 @@ scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, boo
     while (layerFollows()) {
         const Token layer = peek();
         scene::Texture upper = *parseTexture(nullptr);
-        if (upper.map || tex.map) unsupported(layer, "a patterned texture as a layer");
+        // povray 3.7 refuses both (measured), checking the lower first.
+        if (tex.map) fail(layer, "Cannot layer over a patterned texture.");
+        if (upper.map) fail(layer, "Cannot layer a patterned texture over another.");
         tex.stackOn(upper);
         tex = std::move(upper);
     }
@@ -71,20 +73,37 @@ scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, boo
 void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
     const Token t = peek();
     const NestingGuard nesting(*this, t);
+    // Transformations after a uv-mapped texture identifier do nothing
+    // (povray 3.7, measured); in the block that says uv_mapping they move
+    // the uv pattern.
+    bool uvFrozen = false;
     if (t.isIdentifier()) {
         next();
         const Value v = identifierValue(t);
         const auto* tp = std::get_if<TexturePtr>(&v);
         if (!tp) fail(t, fmt::format("'{}' is a {}, not a texture", t.text, valueKindName(v)));
         tex = **tp;
+        uvFrozen = tex.uvMapping;
     }
     // The map of a patterned texture, edited in place while parsing.
     std::shared_ptr<scene::TextureMap> draft;
     if (tex.map) draft = std::make_shared<scene::TextureMap>(*tex.map);
+    bool surfaceSeen = false;  // povray takes uv_mapping only before these
     while (!peek().is(closing)) {
         const Token item = peek();
+        if (item.is(Keyword::kw_uv_mapping)) {
+            if (surfaceSeen) fail(item, "Cannot parse input.");
+            if (t.isIdentifier()) unsupported(item, "uv_mapping after a texture identifier");
+            next();
+            tex.uvMapping = true;
+            continue;
+        }
         Transform step;
         if (parseTransformation(step)) {
+            if (uvFrozen) {
+                tex.transformBy(step);  // turns the normal's perturbation only
+                continue;
+            }
             // A transformation moves the pattern and the textures the map
             // holds so far (povray transforms them at this point).
             if (draft)
@@ -95,6 +114,7 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
         }
         const bool surfaceItem = item.is(Keyword::kw_pigment) || item.is(Keyword::kw_normal) ||
                                  item.is(Keyword::kw_finish);
+        surfaceSeen = surfaceSeen || surfaceItem;
         if (surfaceItem && draft)
             fail(item, fmt::format("'{}' is not allowed in a patterned texture: give it to each "
                                    "texture of the map",
@@ -166,8 +186,19 @@ bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
             expect(Sym::RBrace, "'}' closing 'tiles'");
             return true;
         }
-        case Keyword::kw_material_map:
-            unsupported(item, "material_map");
+        case Keyword::kw_material_map: {
+            next();
+            scene::TextureMap& map = patterned();
+            if (map.mode == scene::TextureMap::Mode::List)
+                fail(item, "a list pattern takes textures, not a material_map");
+            std::vector<std::shared_ptr<const scene::Texture>> textures;
+            map.material = parseImageBlock(item, nullptr, &textures);
+            map.mode = scene::TextureMap::Mode::Material;
+            map.entries.clear();
+            for (auto& t : textures)
+                map.entries.push_back({static_cast<double>(map.entries.size()), std::move(t)});
+            return true;
+        }
         case Keyword::kw_color_map:
         case Keyword::kw_colour_map:
         case Keyword::kw_pigment_map:
@@ -290,6 +321,7 @@ std::vector<scene::Normal::MapEntry> Interpreter::parseNormalMap() {
         std::shared_ptr<const scene::Normal> normal = parseNormalBody(nullptr, Sym::RBracket);
         // povray: "No normal type given."
         if (!normal) fail(body, "a normal_map entry needs a normal pattern");
+        if (normal->uvMapping) unsupported(body, "uv_mapping in a normal_map entry");
         expect(Sym::RBracket, "']' after a normal_map entry");
         entries.push_back({v, std::move(normal)});
     }

@@ -154,18 +154,32 @@ PigmentPtr Interpreter::parsePigment() {
 void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
     const Token t = peek();
     const NestingGuard nesting(*this, t);
-    if (t.isIdentifier()) {
-        const Value* v = lookup(std::string(t.text));
-        if (v && std::holds_alternative<PigmentPtr>(*v)) {
-            next();
-            result = *std::get<PigmentPtr>(*v);
-        }
+    // uv_mapping (povray 3.7, measured): first in the block, maybe followed
+    // by an identifier; the block's transformations then move the uv
+    // pattern, while those after a uv-mapped identifier do nothing.
+    bool uvFrozen = false;
+    auto copyIdentifier = [&] {
+        const Token id = peek();
+        if (!id.isIdentifier()) return false;
+        const Value* v = lookup(std::string(id.text));
+        if (!v || !std::holds_alternative<PigmentPtr>(*v)) return false;
+        next();
+        result = *std::get<PigmentPtr>(*v);
+        return true;
+    };
+    if (copyIdentifier()) {
+        uvFrozen = result.uvMapping();
+        if (peek().is(Keyword::kw_uv_mapping))
+            unsupported(peek(), "uv_mapping after a pigment identifier");
+    } else if (accept(Keyword::kw_uv_mapping)) {
+        copyIdentifier();
+        result.setUvMapping();
     }
     while (!peek().is(closing)) {
         const Token item = peek();
         Transform step;
         if (parseTransformation(step)) {
-            result.transform(step);
+            if (!uvFrozen) result.transform(step);
             continue;
         }
         if (item.is(Keyword::kw_quick_color) || item.is(Keyword::kw_quick_colour)) {
@@ -173,6 +187,8 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
             result.setQuickColor(parseColor());
             continue;
         }
+        if (item.is(Keyword::kw_uv_mapping))
+            unsupported(item, "uv_mapping after other pigment items");
         if (parsePigmentPatternItem(result)) continue;
         if (startsColor(item)) {
             result.setSolid(parseColor());
@@ -629,6 +645,10 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             havePattern = declared != nullptr;
         }
     }
+    // As in a pigment: transformations after a uv-mapped identifier do
+    // nothing (measured).
+    const bool uvFrozen = normal.uvMapping && havePattern;
+    if (accept(Keyword::kw_uv_mapping)) normal.uvMapping = true;
     // The pattern and its modifiers are parsed like a pigment's; the
     // pigment is a scratch holder for the pattern and its chain.
     scene::Pigment holder;
@@ -643,6 +663,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
         const Token item = peek();
         Transform step;
         if (parseTransformation(step)) {
+            if (uvFrozen) continue;
             holder.transform(step);
             // The normals of a map move with it (as a texture map's do).
             for (auto& e : normal.map) {
@@ -673,7 +694,11 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                 for (int i = 0; i < count; ++i) {
                     if (i > 0) accept(Sym::Comma);
                     if (!peek().is(Keyword::kw_normal)) break;
-                    normal.map.push_back({static_cast<double>(i), parseNormal(nullptr)});
+                    const Token entryAt = peek();
+                    auto entry = parseNormal(nullptr);
+                    if (entry && entry->uvMapping)
+                        unsupported(entryAt, "uv_mapping in a normal of a list pattern");
+                    normal.map.push_back({static_cast<double>(i), std::move(entry)});
                 }
                 while (static_cast<int>(normal.map.size()) < count)
                     normal.map.push_back({static_cast<double>(normal.map.size()), nullptr});

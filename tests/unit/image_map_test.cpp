@@ -284,7 +284,7 @@ TEST_F(ImageMapParse, Errors) {
                   .find("Invalid interpolate value"),
               std::string::npos);
     EXPECT_NE(parseErrorOf(scene("image_map { ppm \"" + ppm + "\" map_type 3 }"))
-                  .find("not supported yet: map_type 3"),
+                  .find("Invalid map_type value"),
               std::string::npos);
     EXPECT_NE(
         parseErrorOf(scene("image_map { ppm \"no_such_image.ppm\" }")).find("Cannot open file"),

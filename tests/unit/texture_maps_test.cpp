@@ -148,8 +148,17 @@ TEST(TextureMaps, Errors) {
                            "plane { y, 0 pigment { gradient x pigment_map { CM } } }")
                   .find("not a pigment_map"),
               std::string::npos);
-    EXPECT_NE(parseErrorOf("plane { y, 0 texture { material_map { png \"m.png\" } } }")
-                  .find("not supported yet: material_map"),
+    // povray 3.7 refuses patterned textures in layers, the lower one first.
+    EXPECT_NE(parseErrorOf("plane { y, 0 texture { pigment { rgb 1 } } "
+                           "texture { checker texture { } texture { } } }")
+                  .find("Cannot layer a patterned texture over another."),
+              std::string::npos);
+    EXPECT_NE(parseErrorOf("plane { y, 0 texture { checker texture { } texture { } } "
+                           "texture { gradient x texture_map { [0 pigment { rgb 1 }] } } }")
+                  .find("Cannot layer over a patterned texture."),
+              std::string::npos);
+    EXPECT_NE(parseErrorOf("plane { y, 0 texture { material_map { png \"no_such.png\" } } }")
+                  .find("material_map needs at least one texture"),
               std::string::npos);
 }
 

@@ -22,6 +22,16 @@ def write_png(path, w, h, values, channels):
     open(path, 'wb').write(data)
 
 
+def write_png_palette(path, w, h, indices, palette):
+    """8-bit colour type 3 (palette) PNG."""
+    raw = b''.join(b'\0' + bytes(indices[y * w:(y + 1) * w]) for y in range(h))
+    data = b'\x89PNG\r\n\x1a\n'
+    data += chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 3, 0, 0, 0))
+    data += chunk(b'PLTE', bytes(v for p in palette for v in p))
+    data += chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b'')
+    open(path, 'wb').write(data)
+
+
 def write_ppm(path, w, h, values):
     open(path, 'wb').write(b'P6\n%d %d\n255\n' % (w, h) + bytes(values))
 
@@ -119,3 +129,17 @@ for k in range(n):
             v = max(0.0, 1 - 2 * r) * 0.7 + 0.3 * (0.5 + 0.5 * math.sin(12 * x + 7 * y - 5 * z))
             density.append(int(round(min(1, v) * 255)))
 open('density_blob.df3', 'wb').write(struct.pack('>HHH', n, n, n) + bytes(density))
+
+# 16 x 16 palette PNG for tex_material_map.pov: indices 0..6 (rings
+# around an off-centre point, a diagonal band of index 6); the palette's
+# colours are unrelated to the textures the indices pick.
+mat_palette = [(0, 0, 0), (255, 255, 255), (128, 0, 0), (0, 128, 0), (0, 0, 128),
+               (128, 128, 0), (0, 128, 128)]
+mat_idx = []
+for y in range(16):
+    for x in range(16):
+        if abs(x - y) <= 1:
+            mat_idx.append(6)
+        else:
+            mat_idx.append(int(math.hypot(x - 5.5, y - 9.5) / 2.5) % 6)
+write_png_palette('material_palette.png', 16, 16, mat_idx, mat_palette)
