@@ -100,14 +100,30 @@ double groundFogDensity(double start, double end) {
     return 1.0 / (start * start + 1.0);
 }
 
+// The factor a fog's turbulence puts on its optical depth, measured from
+// povray 3.7 renders (constant and ground fog alike): the scalar turbulence
+// T at the ray's midpoint scaled by the turbulence amount, s = min(1,
+// turb_depth * T), and the factor 1 - exp(-depth / distance) * s (checked for
+// depth / distance from 0.4 to 2, turb_depth -0.5 to 1).
+double fogTurbulenceFactor(const scene::Fog& fog, const Vec3& origin, const Vec3& direction,
+                           double depth) {
+    if (!fog.turbulence) return 1.0;
+    const Vec3 mid = origin + direction * (0.5 * depth);
+    const double t = scene::turbulence(mul(mid, fog.turbulence->amount), *fog.turbulence,
+                                       scene::NoiseGenerator::RangeCorrected);
+    const double s = std::min(1.0, fog.turbulenceDepth * t);
+    return 1.0 - std::exp(-depth / fog.distance) * s;
+}
+
 // Transmittance of one fog over `depth` along the ray.
 double fogTransmittance(const scene::Fog& fog, const Vec3& origin, const Vec3& direction,
                         double depth) {
-    if (fog.kind == scene::Fog::Kind::Constant) return std::exp(-depth / fog.distance);
+    const double turb = fogTurbulenceFactor(fog, origin, direction, depth);
+    if (fog.kind == scene::Fog::Kind::Constant) return std::exp(-depth * turb / fog.distance);
     const Vec3 end = origin + direction * depth;
     const double start = (dot(origin, fog.up) - fog.offset) / fog.altitude;
     const double stop = (dot(end, fog.up) - fog.offset) / fog.altitude;
-    return std::exp(-depth * groundFogDensity(start, stop) / fog.distance);
+    return std::exp(-depth * turb * groundFogDensity(start, stop) / fog.distance);
 }
 
 }  // namespace

@@ -399,7 +399,8 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const scene::Finish& fin = tex.finish;
         // A uv-mapped layer is evaluated at the surface's uv.
         const Vec3& layerP = tex.uvMapping ? uv : texP;
-        n = tex.perturbNormal(layerP, geometric, uv);
+        const scene::SurfaceInfo unperturbed{geometric, viewDir, uv};
+        n = tex.perturbNormal(layerP, geometric, uv, &unperturbed);
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
         const scene::SurfaceInfo info{n, viewDir, uv};

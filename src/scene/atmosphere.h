@@ -31,7 +31,11 @@ struct Fog {
     double offset = 0;    // ground fog: the height where it starts thinning
     double altitude = 0;  // ground fog: the height scale of the thinning
     Vec3 up{0, 1, 0};     // normalised; rotated/scaled by the fog's transformations
-    double turbulenceDepth = 0.5;  // only used with turbulence (not supported yet)
+    // turbulence, octaves, omega, lambda (any of them makes one, amount 0
+    // by default) and turb_depth: the fog thins or thickens by the
+    // turbulence halfway along the ray (render/atmosphere.cpp).
+    std::optional<Turbulence> turbulence;
+    double turbulenceDepth = 0.5;
 };
 
 struct SkySphere {

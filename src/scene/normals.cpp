@@ -83,6 +83,17 @@ Vec3 normalPatternVector(const Normal& nm, const Vec3& q, const Vec3& m) {
     }
 }
 
+// The pattern's value at pattern-space point q for the sampling
+// tetrahedron: a list pattern (checker, object, ...) gives its index, through
+// the wave only when frequency, phase or the wave type are set (as in
+// pattern functions), so the normal tilts only along the cells' edges.
+double sampleValue(const Pattern& pat, const Vec3& q, const SurfaceInfo* surface) {
+    if (!pat.isList()) return pat.wave(pat.raw(q, surface));
+    const double index = pat.indexAt(q);
+    const bool plain = pat.frequency == 1 && pat.phase == 0 && pat.waveType == WaveType::Ramp;
+    return plain ? index : pat.wave(index);
+}
+
 }  // namespace
 
 Vec3 mapEntryPoint(const Pattern& pattern, const Vec3& p) {
@@ -126,13 +137,13 @@ double Normal::slopeHeight(double v) const {
            (-2 * t3 + 3 * t2) * b.height + (t3 - t2) * b.slope;
 }
 
-Vec3 Normal::perturb(const Vec3& p, const Vec3& n) const {
-    const Vec3 m = perturbUnnormalized(p, n);
+Vec3 Normal::perturb(const Vec3& p, const Vec3& n, const SurfaceInfo* surface) const {
+    const Vec3 m = perturbUnnormalized(p, n, surface);
     const double len = length(m);
     return len > 0 ? m * (1.0 / len) : n;
 }
 
-Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n) const {
+Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n, const SurfaceInfo* surface) const {
     if (mapMode != MapMode::None && !map.empty()) {
         // The picked normals perturb the surface on their own, at the point
         // the map's warps displaced; their unit normals are blended by
@@ -140,7 +151,7 @@ Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n) const {
         const Vec3 entry = mapEntryPoint(pattern, p);
         Vec3 sum;
         auto add = [&](const MapEntry& e, double w) {
-            sum += (e.normal ? e.normal->perturb(entry, n) : n) * w;
+            sum += (e.normal ? e.normal->perturb(entry, n, surface) : n) * w;
         };
         switch (mapMode) {
             case MapMode::List: {
@@ -156,7 +167,7 @@ Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n) const {
                 break;
             }
             default: {
-                const double v = pattern.value(p);
+                const double v = pattern.value(p, surface);
                 std::size_t hi = 0;
                 while (hi < map.size() && map[hi].value <= v) ++hi;
                 if (hi == 0) {
@@ -188,7 +199,7 @@ Vec3 Normal::perturbUnnormalized(const Vec3& p, const Vec3& n) const {
         const double weight = -5.0 * amount * (0.02 / accuracy);
         const Vec3 q = pattern.patternPoint(p);
         for (const Vec3& dir : kTetrahedron)
-            m += dir * (slopeHeight(pattern.wave(pattern.raw(q + dir * accuracy))) * weight);
+            m += dir * (slopeHeight(sampleValue(pattern, q + dir * accuracy, surface)) * weight);
     }
     return normalFromPattern(pattern, m);
 }

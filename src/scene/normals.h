@@ -60,11 +60,13 @@ struct Normal {
     std::vector<SlopeEntry> slopeMap;
 
     // The perturbed unit normal at texture-space point p, where n is the
-    // texture-space unit normal.
-    Vec3 perturb(const Vec3& p, const Vec3& n) const;
+    // texture-space unit normal; `surface` (world-space normal and ray) is
+    // what slope and aoi read.
+    Vec3 perturb(const Vec3& p, const Vec3& n, const SurfaceInfo* surface = nullptr) const;
 
     // perturb() before the final normalisation.
-    Vec3 perturbUnnormalized(const Vec3& p, const Vec3& n) const;
+    Vec3 perturbUnnormalized(const Vec3& p, const Vec3& n,
+                             const SurfaceInfo* surface = nullptr) const;
 
     // Moves the pattern and the normals of its map by t.
     void transformBy(const Transform& t);

@@ -302,7 +302,10 @@ int Pattern::listSize(PatternKind kind) {
 }
 
 int Pattern::index(const Vec3& point) const {
-    const Vec3 p = patternPoint(point);
+    return indexAt(patternPoint(point));
+}
+
+int Pattern::indexAt(const Vec3& p) const {
     switch (kind) {
         case PatternKind::Checker:
             return checkerIndex(p);
@@ -441,6 +444,10 @@ double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
             return scene::crackle(p, crackle, noiseGenerator);
         case PatternKind::Fractal:
             return fractalValue(p.x, p.y, fractal);
+        case PatternKind::Tiling:
+            return tilingValue(tiling, p);
+        case PatternKind::Pavement:
+            return pavementValue(pavement, p);
         default:
             return 0;
     }

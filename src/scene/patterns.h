@@ -15,6 +15,7 @@
 #include "scene/fractals.h"
 #include "scene/image_map.h"
 #include "scene/noise.h"
+#include "scene/tiling.h"
 #include "scene/warps.h"
 #include "util/function_vm.h"
 #include "util/vec3.h"
@@ -87,6 +88,9 @@ enum class PatternKind {
     Crackle,
     // mandel and julia (fractals.h)
     Fractal,
+    // tiling N and pavement (tiling.h)
+    Tiling,
+    Pavement,
 };
 
 // The sources of ripples and waves (shared with their normals).
@@ -107,6 +111,8 @@ struct Pattern {
     double mortar = 0.5;
     double control0 = 1, control1 = 1;  // quilted
     int arms = 0;                       // spiral1 / spiral2
+    int tiling = 1;                     // tiling N
+    PavementSettings pavement;          // pavement
     WaveType waveType = WaveType::Ramp;
     double exponent = 1;  // poly_wave
     // povray keeps frequency and phase in single precision (visible in its
@@ -149,6 +155,8 @@ struct Pattern {
 
     // Colour-list patterns: the index of the colour at texture point p.
     int index(const Vec3& p) const;
+    // The same at pattern-space point q (after patternPoint).
+    int indexAt(const Vec3& q) const;
     // Colour-mapped patterns: the pattern function at pattern-space point q
     // (after patternPoint), before the wave.
     double raw(const Vec3& q, const SurfaceInfo* surface = nullptr) const;

@@ -251,18 +251,19 @@ struct Texture {
     // Normal perturbation (normals.h); none when null.
     std::shared_ptr<const Normal> normal;
     // The shading normal at world point p after the texture's normal, for a
-    // unit normal n facing the viewer.
+    // unit normal n facing the viewer (slope and aoi read `surface`).
     // For a uv-mapped texture p is the surface's (u, v, 0), as uv is.
-    Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv) const {
+    Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv,
+                      const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
-        if (normal->uvMapping) return normalize(normal->perturb(uv, n));
+        if (normal->uvMapping) return normalize(normal->perturb(uv, n, surface));
         if (uvObjectTransform.isIdentity()) {
             const Vec3 tn = normalize(transform.inverse().normal(n));
-            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn)));
+            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
         }
         const Transform frame = transform.then(uvObjectTransform);
         const Vec3 tn = normalize(frame.inverse().normal(n));
-        return normalize(frame.normal(normal->perturb(transform.inversePoint(p), tn)));
+        return normalize(frame.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
     }
 };
 

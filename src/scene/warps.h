@@ -12,7 +12,18 @@
 namespace frameray::scene {
 
 struct Warp {
-    enum class Kind { Transform, Turbulence, Repeat, BlackHole };
+    enum class Kind {
+        Transform,
+        Turbulence,
+        Repeat,
+        BlackHole,
+        // The mapping warps: space wrapped onto a cylinder, sphere, torus or
+        // plane (see warps.cpp for the coordinates each one yields).
+        Cylindrical,
+        Spherical,
+        Toroidal,
+        Planar
+    };
     Kind kind = Kind::Transform;
 
     // Transform: the pattern's transformation; points go through its inverse.
@@ -31,6 +42,11 @@ struct Warp {
     Vec3 center{0, 0, 0};
     double radius = 1, strength = 1, falloff = 2;
     bool inverse = false;
+    // Mapping warps: the unit orientation (default z), dist_exp (0: the
+    // angles are not scaled by the distance), toroidal's major_radius and
+    // planar's distance.
+    Vec3 orientation{0, 0, 1};
+    double distExp = 0, majorRadius = 1, planeDistance = 0;
 
     static Warp makeTransform(const Transform& t) {
         Warp w;

@@ -541,10 +541,11 @@ Value Interpreter::parsePatternFunctionBody() {
             holder.transform(step);
             continue;
         }
-        // povray 3.7 refuses square, triangular, slope and aoi here (but
-        // not cubic).
+        // povray 3.7 refuses square, triangular, slope, aoi, tiling and pavement here
+        // (but not cubic).
         if (item.is(Keyword::kw_square) || item.is(Keyword::kw_triangular) ||
-            item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi))
+            item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi) || item.is(Keyword::kw_tiling) ||
+            item.is(Keyword::kw_pavement))
             fail(item, fmt::format("'{}' cannot be used in a pattern function", item.text));
         if (isPatternKeyword(item)) havePattern = true;
         if (parsePigmentPatternItem(holder)) continue;

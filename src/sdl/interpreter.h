@@ -368,7 +368,9 @@ class Interpreter {
     // The object pattern's list entries sit inside its braces: callers
     // call this after reading a list pattern's entries.
     void closeListPattern(const scene::Pattern& pattern);
-    void parseSlopeArguments(scene::Pattern& pattern);  // after 'slope'
+    void parseSlopeArguments(scene::Pattern& pattern);   // after 'slope'
+    void parsePavementItem(scene::PavementSettings& s);  // pavement modifiers
+    void checkPavement(const scene::Pattern& pattern, const Token& at);
     std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
     // --- texture bodies and maps (parse_texture_maps.cpp) ---
     void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`

@@ -29,7 +29,7 @@ bool isColorKeyword(Keyword k) {
     return false;
 }
 
-// Fog items that need POV-Ray's noise (turbulence of the fog density).
+// Fog items that set its turbulence (the fog density's noise).
 constexpr Keyword kFogTurbulenceKeywords[] = {
     Keyword::kw_turbulence,
     Keyword::kw_octaves,
@@ -88,7 +88,13 @@ scene::Fog Interpreter::parseFog() {
             fog.distance = parseFloat();
             continue;
         }
-        if (isFogTurbulenceKeyword(t.kw)) unsupported(t, "fog turbulence");
+        if (isFogTurbulenceKeyword(t.kw)) {
+            // Any of them gives the fog a turbulence (amount 0 until set:
+            // measured, `octaves 3` alone changes the fog).
+            if (!fog.turbulence) fog.turbulence.emplace();
+            parseTurbulenceItem(*fog.turbulence);
+            continue;
+        }
         // The fog's transformations turn its up vector; a translation
         // cannot move a direction (povray warns and ignores it).
         if (t.is(Keyword::kw_translate)) {

@@ -107,6 +107,10 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
             return PatternKind::Slope;
         case Keyword::kw_aoi:
             return PatternKind::Aoi;
+        case Keyword::kw_tiling:
+            return PatternKind::Tiling;
+        case Keyword::kw_pavement:
+            return PatternKind::Pavement;
         default:
             return std::nullopt;
     }
@@ -194,6 +198,7 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
             unsupported(item, fmt::format("'{}' in pigment", item.text));
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
+    checkPavement(result.pattern(), peek());
 }
 
 PigmentPtr Interpreter::parsePigmentListEntry() {
@@ -236,6 +241,14 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         pattern.function = parseXyzFunction(item);
     } else if (kind == scene::PatternKind::Slope) {
         parseSlopeArguments(pattern);
+    } else if (kind == scene::PatternKind::Tiling) {
+        // tiling N: truncated like povray's other counts (measured: 1.9 is 1).
+        const Token at = peek();
+        const double n = parseFloat();
+        const int number = static_cast<int>(n);
+        if (number < 1 || number > 27) fail(at, "Tiling number must be between 1 and 27.");
+        if (!scene::tilingSupported(number)) unsupported(at, fmt::format("tiling {}", number));
+        pattern.tiling = number;
     } else if (kind == scene::PatternKind::DensityFile) {
         // density_file df3 "NAME" [interpolate N]
         const Token type = next();
@@ -287,6 +300,87 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         pattern.waveType = scene::WaveType::Triangle;  // their default wave
     }
     pigment.setPattern(pattern);
+}
+
+// pavement's number_of_sides, number_of_tiles, pattern, exterior, interior
+// and form (after the keyword's token is peeked). Values are truncated and
+// checked like povray's; only single-cell tiles are implemented.
+void Interpreter::parsePavementItem(scene::PavementSettings& s) {
+    const Token item = next();
+    const Token at = peek();
+    const int v = static_cast<int>(parseFloat());
+    switch (item.kw) {
+        case Keyword::kw_number_of_sides:
+            if (v != 3 && v != 4 && v != 6)
+                fail(at, "number_of_sides of pavement must be 3, 4 or 6.");
+            s.sides = v;
+            break;
+        case Keyword::kw_number_of_tiles:
+            if (v < 1 || v > (s.sides == 6 ? 5 : 6))
+                fail(at, fmt::format("number_of_tiles of pavement must be between 1 and {}.",
+                                     s.sides == 6 ? 5 : 6));
+            // Single cells, and square dominoes (the sides may follow;
+            // checkPavement looks again at the end of the pattern).
+            if (v > 3) unsupported(at, fmt::format("pavement number_of_tiles {}", v));
+            s.tiles = v;
+            break;
+        case Keyword::kw_pattern:
+            if (v < 1) fail(at, "pattern value for pavement is out of range.");
+            s.pattern = v;  // checked against the tile count in checkPavement
+            break;
+        case Keyword::kw_exterior:
+            // Measured: values other than 1 and 2 act as 0.
+            s.exterior = (v == 1 || v == 2) ? v : 0;
+            break;
+        case Keyword::kw_interior:
+            s.interior = v;
+            break;
+        default:  // form
+            // Measured: for squares and triangles, and values other than 1
+            // and 2, form changes nothing in single cells and dominoes.
+            s.form = v;
+            break;
+    }
+}
+
+// Settings checked once the whole pavement is known (they may come in any
+// order): dominoes for squares only, corner shapes not built for the others.
+void Interpreter::checkPavement(const scene::Pattern& pattern, const Token& at) {
+    if (pattern.kind != scene::PatternKind::Pavement) return;
+    const scene::PavementSettings& s = pattern.pavement;
+    // povray's pattern counts per number_of_tiles (from its messages).
+    static constexpr int kPatterns3[] = {1, 1, 1, 3, 4, 12};
+    static constexpr int kPatterns4[] = {1, 1, 2, 5, 12, 35};
+    static constexpr int kPatterns6[] = {1, 1, 3, 7, 22};
+    const int* counts = s.sides == 3 ? kPatterns3 : s.sides == 4 ? kPatterns4 : kPatterns6;
+    const int tileCount = s.sides == 6 ? 5 : 6;
+    if (s.tiles >= 1 && s.tiles <= tileCount && s.pattern > counts[s.tiles - 1]) {
+        std::string list;
+        for (int i = 0; i < tileCount; ++i) {
+            if (i > 0) list.push_back(',');
+            list.append(std::to_string(counts[i]));
+        }
+        fail(at,
+             fmt::format("pattern value for pavement is out of range. max per tile:({})", list));
+    }
+    // interior 1 and 2 reshape the hexagon pairs' inner corners (measured;
+    // not built).
+    // Three cells: only the straight squares tromino (pattern 1) with sharp
+    // corners.
+    if (s.tiles == 3 && (s.sides != 4 || s.pattern != 1 || s.exterior != 0))
+        unsupported(at,
+                    fmt::format("pavement number_of_tiles 3 with {} sides, pattern {}, exterior {}",
+                                s.sides, s.pattern, s.exterior));
+    if (s.tiles == 2 && s.sides == 6 && (s.interior == 1 || s.interior == 2))
+        unsupported(at, fmt::format("pavement interior {} with 6 sides and 2 tiles", s.interior));
+    // form 1 and 2 reshape the lozenges' corners (measured; not built).
+    if (s.tiles == 2 && s.sides == 3 && (s.form == 1 || s.form == 2))
+        unsupported(at, fmt::format("pavement form {} with 3 sides and 2 tiles", s.form));
+    if (s.exterior != 0 && s.sides != 4)
+        unsupported(at, fmt::format("pavement exterior {} with {} sides", s.exterior, s.sides));
+    // form 1 and 2 reshape the hexagons' corners (measured; not built).
+    if (s.sides == 6 && (s.form == 1 || s.form == 2))
+        unsupported(at, fmt::format("pavement form {} with 6 sides", s.form));
 }
 
 // slope <S> | slope { <S> [, LO, HI] [altitude <A> [, LO, HI]] }
@@ -437,9 +531,20 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             });
             return true;
         }
+        case Keyword::kw_number_of_sides:
+        case Keyword::kw_number_of_tiles:
+        case Keyword::kw_pattern:
+            if (pigment.pattern().kind != scene::PatternKind::Pavement) return false;
+            parsePavementItem(pigment.pattern().pavement);
+            return true;
         case Keyword::kw_exponent:
         case Keyword::kw_interior:
         case Keyword::kw_exterior: {
+            if (pigment.pattern().kind == scene::PatternKind::Pavement &&
+                !item.is(Keyword::kw_exponent)) {
+                parsePavementItem(pigment.pattern().pavement);
+                return true;
+            }
             if (pigment.pattern().kind != scene::PatternKind::Fractal) return false;
             next();
             scene::FractalSettings f = pigment.pattern().fractal;
@@ -448,6 +553,10 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             return true;
         }
         case Keyword::kw_form: {
+            if (pigment.pattern().kind == scene::PatternKind::Pavement) {
+                parsePavementItem(pigment.pattern().pavement);
+                return true;
+            }
             next();
             const Vec3 f = parseVec3();
             editPattern([&](scene::Pattern& p) { p.crackle.form = f; });
@@ -566,14 +675,19 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             continue;
         }
         if (patternKeyword(item.kw)) {
-            if (item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi))
-                unsupported(item, fmt::format("'{}' as a normal", item.text));
             parsePatternKeyword(holder, true);
             havePattern = true;
+            if (holder.pattern().isList() && !peek().is(Keyword::kw_normal)) {
+                // A list pattern without normals is a bumpy pattern of its
+                // own: its index is sampled, so only the cells' edges tilt.
+                closeListPattern(holder.pattern());
+                if (normal.mapMode == scene::Normal::MapMode::List)
+                    normal.mapMode = scene::Normal::MapMode::None;
+                if (bumpSizeFollows()) normal.amount = parseFloat();
+                continue;
+            }
             if (holder.pattern().isList()) {
                 // A list pattern takes one normal per index.
-                if (!peek().is(Keyword::kw_normal))
-                    unsupported(item, fmt::format("'{}' as a normal", item.text));
                 normal.mapMode = scene::Normal::MapMode::List;
                 normal.map.clear();
                 const int count = scene::Pattern::listSize(holder.pattern().kind);
@@ -644,6 +758,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                                closing == Sym::RBrace ? "}" : "]", describeToken(item)));
     }
     normal.pattern = holder.pattern();
+    checkPavement(normal.pattern, peek());
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
 }
@@ -803,6 +918,42 @@ scene::Warp Interpreter::parseWarp() {
             } else {
                 break;
             }
+        }
+    } else if (kind.is(Keyword::kw_cylindrical) || kind.is(Keyword::kw_spherical) ||
+               kind.is(Keyword::kw_toroidal)) {
+        // cylindrical | spherical | toroidal [orientation V] [dist_exp E]
+        // [major_radius R] (toroidal only; povray rejects it elsewhere).
+        w.kind = kind.is(Keyword::kw_cylindrical) ? scene::Warp::Kind::Cylindrical
+                 : kind.is(Keyword::kw_spherical) ? scene::Warp::Kind::Spherical
+                                                  : scene::Warp::Kind::Toroidal;
+        for (;;) {
+            const Token t = peek();
+            if (t.is(Keyword::kw_orientation)) {
+                next();
+                const Vec3 o = parseVec3();
+                // povray normalises it (a zero vector gives NaN there).
+                if (length(o) == 0) fail(t, "warp orientation vector is zero");
+                w.orientation = normalize(o);
+            } else if (t.is(Keyword::kw_dist_exp)) {
+                next();
+                w.distExp = parseFloat();
+            } else if (t.is(Keyword::kw_major_radius) && w.kind == scene::Warp::Kind::Toroidal) {
+                next();
+                w.majorRadius = parseFloat();
+            } else {
+                break;
+            }
+        }
+    } else if (kind.is(Keyword::kw_planar)) {
+        // planar [NORMAL, DISTANCE]: the distance is required after a normal.
+        w.kind = scene::Warp::Kind::Planar;
+        if (!peek().is(Sym::RBrace)) {
+            const Token at = peek();
+            const Vec3 o = parseVec3();
+            if (length(o) == 0) fail(at, "warp planar normal is zero");
+            w.orientation = normalize(o);
+            accept(Sym::Comma);
+            w.planeDistance = parseFloat();
         }
     } else if (kind.kind == TokenKind::Word && kind.kw != Keyword::None) {
         unsupported(kind, fmt::format("warp {{ {} }}", kind.text));

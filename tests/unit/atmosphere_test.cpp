@@ -62,14 +62,25 @@ TEST(AtmosphereParse, FogWarningsAsPovray) {
     EXPECT_NE(p.sink.warnings.find("A fog's up vector can't be translated."), std::string::npos);
 }
 
-TEST(AtmosphereParse, FogTurbulenceIsNotSupportedYet) {
-    for (const char* item : {"turbulence 0.5", "octaves 3", "omega 0.4", "lambda 3"}) {
-        const std::string err = parseError(std::string("fog { distance 3 rgb 1 ") + item + " }");
-        EXPECT_NE(err.find("not supported yet: fog turbulence"), std::string::npos)
-            << item << ": " << err;
-    }
-    // turb_depth alone changes nothing in povray and is accepted.
-    EXPECT_EQ(parseError("fog { distance 3 rgb 1 turb_depth 0.3 }"), "");
+TEST(AtmosphereParse, FogTurbulence) {
+    Parsed p(
+        "fog { distance 3 rgb 1 turbulence <0.5, 1, 2> octaves 3 omega 0.4 lambda 3 "
+        "turb_depth 0.3 }\n"
+        "fog { distance 3 rgb 1 octaves 4 }\n"
+        "fog { distance 3 rgb 1 turb_depth 0.3 }");
+    ASSERT_EQ(p.scene.atmosphere.fogs.size(), 3u);
+    const auto& f = p.scene.atmosphere.fogs[0];
+    ASSERT_TRUE(f.turbulence);
+    EXPECT_EQ(f.turbulence->amount.z, 2.0);
+    EXPECT_EQ(f.turbulence->octaves, 3);
+    EXPECT_FLOAT_EQ(f.turbulence->omega, 0.4f);
+    EXPECT_FLOAT_EQ(f.turbulence->lambda, 3.0f);
+    EXPECT_EQ(f.turbulenceDepth, 0.3);
+    // Any turbulence item makes one (amount 0: measured, it still changes
+    // the fog); turb_depth alone does not.
+    ASSERT_TRUE(p.scene.atmosphere.fogs[1].turbulence);
+    EXPECT_EQ(p.scene.atmosphere.fogs[1].turbulence->amount.x, 0.0);
+    EXPECT_FALSE(p.scene.atmosphere.fogs[2].turbulence);
 }
 
 TEST(AtmosphereParse, SkySphere) {

@@ -1,0 +1,2 @@
+#version 3.7;
+plane { y, 0 pigment { tiling 28 } }
