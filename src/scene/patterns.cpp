@@ -37,18 +37,28 @@ int checkerIndex(const Vec3& p) {
 // Hexagons of unit side in the xz plane with corners on the x axis; cell
 // (i, j) is centred at i*(1.5, sqrt3/2) + j*(0, sqrt3) and coloured
 // (2i + j) mod 3, colour 0 at the origin.
-int hexagonIndex(const Vec3& p) {
+}  // namespace
+
+void nearestHexagon(double x, double z, double& rq, double& rr) {
     constexpr double kSqrt3 = 1.7320508075688772;
-    const double q = p.x * (2.0 / 3.0);
-    const double r = p.z / kSqrt3 - p.x / 3.0;
+    const double q = x * (2.0 / 3.0);
+    const double r = z / kSqrt3 - x / 3.0;
     const double s = -q - r;
-    double rq = std::round(q), rr = std::round(r);
+    rq = std::round(q);
+    rr = std::round(r);
     const double rs = std::round(s);
     const double dq = std::abs(rq - q), dr = std::abs(rr - r), ds = std::abs(rs - s);
     if (dq > dr && dq > ds)
         rq = -rr - rs;
     else if (dr > ds)
         rr = -rq - rs;
+}
+
+namespace {
+
+int hexagonIndex(const Vec3& p) {
+    double rq, rr;
+    nearestHexagon(p.x, p.z, rq, rr);
     const long long m = (2 * static_cast<long long>(rq) + static_cast<long long>(rr)) % 3;
     return static_cast<int>(m < 0 ? m + 3 : m);
 }

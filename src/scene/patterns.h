@@ -180,4 +180,9 @@ class PatternFunction final : public NativeFunction {
     Pattern pattern_;
 };
 
+// The hexagon lattice of the hexagon pattern (unit sides, a centre at the
+// origin, corners along x) in the x-z plane: the axial coordinates (q, r)
+// of the centre nearest to (x, z). Shared with the tiling patterns.
+void nearestHexagon(double x, double z, double& rq, double& rr);
+
 }  // namespace frameray::scene

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <span>
 
+#include "scene/patterns.h"
+
 namespace frameray::scene {
 
 namespace {
@@ -24,17 +26,8 @@ double squares(const Vec3& p) {
 // units of its apothem (1 on the edges).
 double hexagonalDistance(const Vec3& p, double x0) {
     const double x = p.x - x0, z = p.z;
-    // Axial coordinates of the lattice, rounded to the nearest centre.
-    const double q = x * (2.0 / 3.0);
-    const double r = z / kSqrt3 - x / 3.0;
-    const double s = -q - r;
-    double rq = std::round(q), rr = std::round(r);
-    const double rs = std::round(s);
-    const double dq = std::abs(rq - q), dr = std::abs(rr - r), ds = std::abs(rs - s);
-    if (dq > dr && dq > ds)
-        rq = -rr - rs;
-    else if (dr > ds)
-        rr = -rq - rs;
+    double rq, rr;
+    nearestHexagon(x, z, rq, rr);
     const double dx = x - 1.5 * rq;
     const double dz = z - (kSqrt3 / 2.0) * rq - kSqrt3 * rr;
     const double c = kSqrt3 / 2.0;
@@ -361,30 +354,7 @@ constexpr LatticeTiling kTiling22{3.7320508075688772, 0, 1.8660254037844386,
 // (1/2, sqrt3/2); shaded over the squares' inradius 0.5. Tiling 23 has
 // hexagons 0, squares 1, dodecagons 2; tiling 24 tells the squares' three
 // directions apart.
-constexpr double kTtDodecagon[] = {1.866025403784439,
-                                   -0.8660254037844386,
-                                   1.366025403784439,
-                                   0,
-                                   0.5,
-                                   0.50000000000000044,
-                                   -0.50000000000000022,
-                                   0.50000000000000044,
-                                   -1.3660254037844388,
-                                   0,
-                                   -1.8660254037844388,
-                                   -0.86602540378443804,
-                                   -1.866025403784439,
-                                   -1.8660254037844388,
-                                   -1.366025403784439,
-                                   -2.7320508075688776,
-                                   -0.49999999999999983,
-                                   -3.2320508075688776,
-                                   0.49999999999999917,
-                                   -3.2320508075688776,
-                                   1.3660254037844386,
-                                   -2.7320508075688776,
-                                   1.866025403784439,
-                                   -1.8660254037844386};
+// The same dodecagon as tiling 22's (kDodecagon).
 constexpr double kTtHexagon1[] = {1.0000000000000002,   1.3660254037844386,   0.50000000000000033,
                                   2.2320508075688772,   -0.49999999999999961, 2.2320508075688772,
                                   -0.99999999999999978, 1.3660254037844388,   -0.50000000000000022,
@@ -410,11 +380,11 @@ constexpr double kTtSquare3[] = {
     -1.8660254037844379,  0.86602540378443893, -1.3660254037844379,  0,
     -0.49999999999999933, 0.50000000000000011, -0.99999999999999944, 1.3660254037844388};
 constexpr Tile kTruncTrihex3[] = {{0, kTtHexagon1}, {0, kTtHexagon2}, {1, kTtSquare1},
-                                  {1, kTtSquare2},  {1, kTtSquare3},  {2, kTtDodecagon}};
+                                  {1, kTtSquare2},  {1, kTtSquare3},  {2, kDodecagon}};
 constexpr LatticeTiling kTiling23{
     4.7320508075688767, 0, 2.3660254037844384, 4.0980762113533151, 3, 0.5, kTruncTrihex3};
 constexpr Tile kTruncTrihex5[] = {{0, kTtHexagon1}, {0, kTtHexagon2}, {1, kTtSquare1},
-                                  {2, kTtSquare2},  {3, kTtSquare3},  {4, kTtDodecagon}};
+                                  {2, kTtSquare2},  {3, kTtSquare3},  {4, kDodecagon}};
 constexpr LatticeTiling kTiling24{
     4.7320508075688767, 0, 2.3660254037844384, 4.0980762113533151, 5, 0.5, kTruncTrihex5};
 
