@@ -87,6 +87,7 @@ Tracer::Tracer(const World& world, int quality)
       lighting_(LightingQuality::forQuality(quality)),
       secondaryRays_(quality >= 8),
       quickColours_(quality < 2),
+      quickColorPigments_(quality < 6),
       opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
@@ -404,7 +405,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
         const scene::SurfaceInfo info{n, viewDir, uv};
-        const Color surface = tex.pigment->at(tex.transform.inversePoint(layerP), &info);
+        // Below +Q6 povray computes no pattern that has a quick_color: the
+        // surface takes that colour, shaded as usual (measured; patterns
+        // without one are still computed).
+        const std::optional<Color>& quick = tex.pigment->quickColor();
+        const Color surface = quickColorPigments_ && quick
+                                  ? *quick
+                                  : tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         pigment = surface.rgb;
         const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts);
         color += i == 0 ? local : through * local;

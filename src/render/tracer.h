@@ -119,6 +119,7 @@ class Tracer {
     LightingQuality lighting_;
     bool secondaryRays_;
     bool quickColours_;           // +Q0, +Q1
+    bool quickColorPigments_;     // up to +Q5: a pigment's quick_color replaces its pattern
     bool opaqueSky_;              // alpha output sees the sky's own transmit (3.7 scenes)
     InteriorStack cameraInside_;  // regions containing the camera
 };
