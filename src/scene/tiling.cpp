@@ -546,14 +546,8 @@ constexpr LatticeTiling kPavementLozenges{1, 0, 0.5, kH, 1, kSqrt3 / 6.0, kLozen
 // sqrt3/6 from the point's own hexagon's other five edges.
 double hexagonPairs(const Vec3& p) {
     const double x = p.x - 1.0, z = p.z;
-    const double q = x * (2.0 / 3.0), r = z / kSqrt3 - x / 3.0, t = -q - r;
-    double rq = std::round(q), rr = std::round(r);
-    const double rt = std::round(t);
-    const double dq = std::abs(rq - q), dr = std::abs(rr - r), dt = std::abs(rt - t);
-    if (dq > dr && dq > dt)
-        rq = -rr - rt;
-    else if (dr > dt)
-        rr = -rq - rt;
+    double rq, rr;
+    nearestHexagon(x, z, rq, rr);
     const bool first = std::fmod(std::abs(rq), 2.0) == 0.0;
     const double pq = first ? rq + 1 : rq - 1, pr = first ? rr - 1 : rr + 1;
     auto centre = [](double i, double j) {
