@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/render_options.h"
 
 namespace frameray::anim {
 
 struct FrameSpec {
-    int number = 0;            // frame_number
+    int number = 0;  // frame_number
     double clock = 0;
     double clockDelta = 0;
     bool animated = false;
@@ -21,10 +22,7 @@ struct FrameSpec {
 };
 
 // The render window in 0-based pixel coordinates, end exclusive.
-struct RenderWindow {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    bool full(int width, int height) const { return x0 == 0 && y0 == 0 && x1 == width && y1 == height; }
-};
+using RenderWindow = image::RenderWindow;
 
 struct Sequence {
     std::vector<FrameSpec> frames;
@@ -54,8 +52,8 @@ Sequence planSequence(const options::RenderOptions& options);
 // POV-Ray's output name of frame `number`: the name without its extension
 // when that is the type's, the frame number padded to `digits` (the base
 // name is shortened when the number has more digits), the extension.
-std::filesystem::path outputName(const options::RenderOptions& options, image::FileType type, bool animated,
-                                 int number, int digits);
+std::filesystem::path outputName(const options::RenderOptions& options, image::FileType type,
+                                 bool animated, int number, int digits);
 
 image::FileType fileTypeFor(char letter);
 
