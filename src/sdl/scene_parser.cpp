@@ -115,6 +115,8 @@ bool Interpreter::parseStatement() {
             parseRainbow();
             return true;
         case Keyword::kw_media:
+            scene_.atmosphere.media.push_back(parseMedia());
+            return true;
         case Keyword::kw_photons:
         case Keyword::kw_radiosity:
             unsupported(t, std::string(t.text));
