@@ -326,9 +326,10 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
                         const scene::Light* light) const {
     RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light);
     // media_attenuation: the scene's media dim the light on its way (povray
-    // leaves it out by default).
-    if (light && light->mediaAttenuation && !scene_.atmosphere.media.empty() && !passed.isBlack() &&
-        std::isfinite(tMax)) {
+    // leaves it out by default, and for a light without media_interaction;
+    // measured).
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.media.empty() && !passed.isBlack() && std::isfinite(tMax)) {
         MediaSet set;
         set.add(scene_.atmosphere.media);
         const double speed = length(ray.direction);

@@ -159,6 +159,14 @@ ObjectPtr Interpreter::parseObject() {
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
             const Value v = identifierValue(id);
             const auto* src = std::get_if<ObjectPtr>(&v);
+            if (const auto* light = std::get_if<LightPtr>(&v)) {
+                // object { LIGHT ... }: a light that moves as an object, an
+                // empty union holding it (povray 3.7 allows it anywhere an
+                // object goes).
+                obj->op = scene::CsgOp::Union;
+                obj->lights.push_back(**light);
+                break;
+            }
             if (!src)
                 fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
             *obj = **src;
@@ -554,7 +562,8 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             obj.hollow = true;
             if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) ||
                 peek().is(Keyword::kw_off) || peek().is(Keyword::kw_true) ||
-                peek().is(Keyword::kw_false))
+                peek().is(Keyword::kw_false) || peek().is(Keyword::kw_yes) ||
+                peek().is(Keyword::kw_no))
                 obj.hollow = parseFloat() != 0;
             return true;
         default:
