@@ -168,14 +168,17 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
 
 RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const State& state,
                          const RGB& color, RayCounts& counts) const {
-    if (!media_) return color;
+    // Inside an object that is not hollow no media is sampled at all, not
+    // even that of the hollow containers around it (measured: a solid glass
+    // sphere inside a sphere of emitting media hides the media behind it).
+    if (!media_ || !state.inside.allHollow()) return color;
     MediaSet set;
     // Innermost first: the first media's sampling settings are used.
     for (int i = state.inside.size() - 1; i >= 0; --i) {
         const InteriorStack::Region& r = state.inside[i];
-        if (r.hollow && r.interior) set.add(r.interior->media);
+        if (r.interior) set.add(r.interior->media);
     }
-    if (state.inside.allHollow()) set.add(scene_.atmosphere.media);
+    set.add(scene_.atmosphere.media);
     if (set.empty()) return color;
     const double speed = length(ray.direction);
     const scene::Ray unit{ray.origin, ray.direction * (1.0 / speed)};

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "render/atmosphere.h"
 #include "render/media.h"
 #include "render/optics.h"
 
@@ -325,6 +326,12 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
 RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
                         const scene::Light* light) const {
     RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light);
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.fogs.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        const double speed = length(ray.direction);
+        passed *= fogLightTransmittance(scene_, ray.at(tMin), ray.direction * (1.0 / speed),
+                                        (tMax - tMin) * speed);
+    }
     // media_attenuation: the scene's media dim the light on its way (povray
     // leaves it out by default, and for a light without media_interaction;
     // measured).
