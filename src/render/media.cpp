@@ -260,11 +260,12 @@ void Sampler::pieces(double depth, std::vector<Piece>& out) const {
         }
         from = to;
     }
-    const int share = std::max(lit, total - unlit);
+    // One interval per lit piece, and what is left shared by length.
+    const int extra = std::max(0, total - unlit - lit);
     for (Piece& p : out) {
         if (p.intervals > 0) continue;
-        p.intervals = std::max(1, static_cast<int>(std::lround(share * (p.to - p.from) /
-                                                               std::max(litLength, 1e-300))));
+        p.intervals = 1 + static_cast<int>(
+                              std::lround(extra * (p.to - p.from) / std::max(litLength, 1e-300)));
     }
 }
 
