@@ -58,6 +58,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
         const char* operator()(const MaterialPtr&) const { return "material"; }
+        const char* operator()(const MediaPtr&) const { return "media"; }
+        const char* operator()(const DensityPtr&) const { return "density"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -607,6 +609,10 @@ Value Interpreter::parseRValue() {
             return std::make_shared<const scene::Light>(parseLightSource());
         case Keyword::kw_fog:
             return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_media:
+            return parseMedia();
+        case Keyword::kw_density:
+            return parseDensity();
         case Keyword::kw_sky_sphere:
             return std::make_shared<const scene::SkySphere>(parseSkySphere());
         default:

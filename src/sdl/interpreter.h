@@ -391,6 +391,11 @@ class Interpreter {
     void parseReflectionBlock(scene::Finish& finish);
     void parseIridescence(scene::Finish& finish);
     InteriorPtr parseInterior(const scene::Interior* base);
+    // media { } and density { } (parse_media.cpp).
+    MediaPtr parseMedia();
+    DensityPtr parseDensity();
+    DensityPtr parseDensityBody(Sym closing);
+    std::vector<scene::Pigment::MapEntry> parseDensityMap();
     // --- material (parse_material.cpp) ---
     MaterialPtr parseMaterial();
     // Whether the next token can start a float expression (for items whose

@@ -116,6 +116,8 @@ bool Interpreter::parseStatement() {
             parseRainbow();
             return true;
         case Keyword::kw_media:
+            scene_.atmosphere.media.push_back(parseMedia());
+            return true;
         case Keyword::kw_photons:
         case Keyword::kw_radiosity:
             unsupported(t, std::string(t.text));
@@ -161,6 +163,16 @@ ObjectValue Interpreter::parseObject() {
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
             const Value v = identifierValue(id);
             const auto* src = std::get_if<ObjectPtr>(&v);
+            if (const auto* light = std::get_if<LightPtr>(&v)) {
+                // object { LIGHT ... }: a light that moves as an object, an
+                // empty union holding it (povray 3.7 allows it anywhere an
+                // object goes).
+                obj->op = scene::CsgOp::Union;
+                auto lights = std::make_shared<ObjectLights>();
+                lights->lights.push_back(**light);
+                result.lights = std::move(lights);
+                break;
+            }
             if (!src)
                 fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
             *obj = *(*src)->object;
