@@ -47,7 +47,10 @@ std::vector<T> quantize(const std::vector<float>& values, int bits, double conta
     const double levels = std::ldexp(1.0, bits) - 1.0;
     std::vector<T> out(values.size());
     for (size_t i = 0; i < values.size(); ++i) {
-        const double v = std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
+        // NaN (a scene's NaN light, say) is written black, as povray does;
+        // converting it to an integer would be undefined.
+        const double v =
+            std::isnan(values[i]) ? 0.0 : std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
         const double q = std::floor(v * levels + 0.5);
         out[i] = static_cast<T>(std::floor(q * containerMax / levels + 0.5));
     }
