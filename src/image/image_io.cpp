@@ -72,13 +72,17 @@ fs::path temporaryPathFor(const fs::path& path) {
            fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
 }
 
-bool isTemporaryFor(const std::string& name, const std::string& target, long& pid) {
-    const std::string prefix = "." + target + ".";
-    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
-        name.compare(name.size() - 4, 4, ".tmp") != 0)
+bool parseTemporaryName(const std::string& name, std::string& target, long& pid) {
+    // ".TARGET.PID.tmp"
+    if (name.size() < 8 || name[0] != '.' || name.compare(name.size() - 4, 4, ".tmp") != 0)
         return false;
-    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    const std::string rest = name.substr(1, name.size() - 5);  // "TARGET.PID"
+    const auto dot = rest.rfind('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == rest.size()) return false;
+    const std::string digits = rest.substr(dot + 1);
+    if (digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    target = rest.substr(0, dot);
     pid = std::stol(digits);
     return true;
 }
