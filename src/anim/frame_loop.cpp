@@ -51,7 +51,7 @@ using options::TextStream;
 
 namespace {
 
-const fs::path kDefaultLibrary = "/usr/share/povray-3.7/include";
+const fs::path kDefaultLibrary = options::kStandardIncludeFolder;
 
 sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& seq,
                              const FrameSpec& f) {
@@ -263,11 +263,12 @@ class Run {
     int execute() {
         if (o_.outputToFile && !seq_.frames.empty()) {
             std::error_code ec;
-            // Every frame is in the same folder.
-            if (const fs::path folder = seq_.frames.front().output.parent_path(); !folder.empty())
+            // Every frame and the journal are in the same folder, created
+            // only when Output_File_Name names it as a folder ("dir/");
+            // main refuses a missing folder otherwise (checkOutputFolder).
+            if (const fs::path folder = seq_.frames.front().output.parent_path();
+                !folder.empty() && !o_.outputFile.empty() && o_.outputFile.back() == '/')
                 fs::create_directories(folder, ec);
-            if (!seq_.journal.parent_path().empty())
-                fs::create_directories(seq_.journal.parent_path(), ec);
             removeStaleTemporaries(seq_);
             journal_ =
                 std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);

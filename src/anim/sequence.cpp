@@ -149,6 +149,20 @@ int windowEnd(double v, int size) {
 
 }  // namespace
 
+void checkOutputFolder(const options::RenderOptions& o, const Sequence& seq) {
+    if (!o.outputToFile || seq.frames.empty() ||
+        (!o.outputFile.empty() && o.outputFile.back() == '/'))
+        return;
+    const fs::path folder = seq.frames.front().output.parent_path();
+    std::error_code ec;
+    if (folder.empty() || fs::is_directory(folder, ec)) return;
+    throw options::OptionError(
+        fmt::format("cannot write '{}': the folder '{}' does not exist (Output_File_Name '{}'; a "
+                    "name ending in "
+                    "'/' is a folder, which frameray creates)",
+                    seq.frames.front().output.string(), folder.string(), o.outputFile));
+}
+
 Sequence planSequence(const options::RenderOptions& o) {
     Sequence seq;
     seq.fileType = fileTypeFor(o.outputType);

@@ -103,6 +103,11 @@ struct Sequence {
 // window outside the image).
 Sequence planSequence(const options::RenderOptions& options);
 
+// Throws options::OptionError when the images' folder does not exist and
+// Output_File_Name does not name it as a folder (ending in '/'): povray
+// refuses such a name, and creating a mistyped path would be worse.
+void checkOutputFolder(const options::RenderOptions& options, const Sequence& sequence);
+
 // POV-Ray's output name of frame `number`: the name without its extension
 // when that is the type's, the frame number padded to `digits` (the base
 // name is shortened when the number has more digits), the extension.
