@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 #include <signal.h>
 #include <sys/resource.h>
-#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_group.h>
 #include <unistd.h>
@@ -33,9 +31,9 @@
 #include "anim/progress.h"
 #include "anim/statistics.h"
 #include "image/codecs.h"
+#include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
-#include "render/gamma.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -99,46 +97,6 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
 void refuseAlphaWith(const scene::Scene& scene) {
     if (!scene.atmosphere.rainbows.empty())
         throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
-}
-
-image::EncodedImage encode(const render::FrameImage& img, const render::GammaEncoding& gamma,
-                           int bitDepth, const RenderWindow& window) {
-    image::EncodedImage out;
-    out.width = img.width;
-    out.height = img.height;
-    const bool alpha = !img.alpha.empty();
-    out.channels = alpha ? 4 : 3;
-    out.bitDepth = bitDepth;
-    out.values.resize(static_cast<size_t>(img.width) * img.height * out.channels);
-    // Rows in parallel: three pow() per pixel are tens of milliseconds a
-    // frame, which a still image would otherwise spend on one core.
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, img.height, 16), [&](const tbb::blocked_range<int>& rows) {
-            for (int y = rows.begin(); y < rows.end(); ++y)
-                for (int x = 0; x < img.width; ++x) {
-                    // povray writes the pixels outside the render window
-                    // black (and transparent).
-                    const bool inside =
-                        x >= window.x0 && x < window.x1 && y >= window.y0 && y < window.y1;
-                    const size_t pixel = static_cast<size_t>(y) * img.width + x;
-                    float* dst = &out.values[pixel * out.channels];
-                    const float a = alpha ? img.alpha[pixel] : 1.0f;
-                    for (int c = 0; c < 3; ++c) {
-                        const double v = img.rgb[pixel * 3 + c];
-                        // With alpha the colour sums what the visible
-                        // surfaces add; PNG and TGA hold it un-premultiplied
-                        // (measured: povray writes encode(colour / alpha)).
-                        dst[c] =
-                            !inside ? 0.0f
-                            : alpha
-                                ? (a > 0 ? static_cast<float>(gamma.encode(std::min(1.0, v / a)))
-                                         : 0.0f)
-                                : static_cast<float>(gamma.encode(v));
-                    }
-                    if (alpha) dst[3] = inside ? a : 0.0f;
-                }
-        });
-    return out;
 }
 
 // What makes two runs' images comparable: a journal written with other
@@ -503,7 +461,7 @@ class Run {
         return nullptr;
     }
 
-    render::FrameSettings frameSettings(const render::GammaEncoding& gamma) const {
+    render::FrameSettings frameSettings(const image::GammaEncoding& gamma) const {
         render::FrameSettings f;
         f.width = o_.width;
         f.height = o_.height;
@@ -536,7 +494,9 @@ class Run {
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
             start = Clock::now();
-            const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
+            const auto gamma = image::GammaEncoding::forScene(
+                job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
+                job.scene->languageVersion, o_.fileGamma);
             const render::FrameSettings settings = frameSettings(gamma);
             if (settings.alpha) refuseAlphaWith(*job.scene);
             const render::FrameImage image = render::renderFrame(world, settings, job.stats);
@@ -546,9 +506,10 @@ class Run {
             // parallel; stage 3 only renames and journals.
             if (o_.outputToFile && !decided_) {
                 start = Clock::now();
-                const fs::path temporary =
-                    image::writeTemporary(job.frame->output, seq_.fileType,
-                                          encode(image, gamma, o_.bitDepth, seq_.window));
+                const fs::path temporary = image::writeTemporary(
+                    job.frame->output, seq_.fileType,
+                    image::encodeFrame(image.width, image.height, image.rgb, image.alpha, gamma,
+                                       o_.bitDepth, seq_.window));
                 job.temporary = temporary;
                 const auto hash = hashFile(temporary, &job.fileSize);
                 if (!hash)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/render_options.h"
 
@@ -25,12 +26,7 @@ struct FrameSpec {
 };
 
 // The render window in 0-based pixel coordinates, end exclusive.
-struct RenderWindow {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    bool full(int width, int height) const {
-        return x0 == 0 && y0 == 0 && x1 == width && y1 == height;
-    }
-};
+using RenderWindow = image::RenderWindow;
 
 // The frames of a run (one shard's), each computed when asked for: a
 // sequence of 2 000 000 000 frames is planned in constant time and memory,

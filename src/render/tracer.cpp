@@ -388,7 +388,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     RGB color(0.0);
     RGB through(1.0);  // what the layers evaluated so far let through
     // The same as one number, for alpha output: povray counts filter by
-    // the pigment's grey (0.297 R + 0.589 G + 0.114 B), measured.
+    // the pigment's grey (util/color.h), measured.
     double throughGrey = 1.0;
     bool transmits = false;
     RGB reflectivity(0.0);
@@ -443,9 +443,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         transmits = surface.filter + surface.transmit > 0;
         if (!transmits) break;
         through = through * (pigment * surface.filter + RGB(surface.transmit));
-        throughGrey *=
-            surface.filter * (0.297 * pigment.r + 0.589 * pigment.g + 0.114 * pigment.b) +
-            surface.transmit;
+        throughGrey *= surface.filter * grey(pigment) + surface.transmit;
         if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
         if (through.isBlack() && i + 1 < layerCount) {
             transmits = false;

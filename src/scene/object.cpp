@@ -47,7 +47,6 @@ void Object::transformBy(const Transform& t) {
         if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
     }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
-    for (Light& light : lights) light.transformBy(t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
     if (texture) {

@@ -120,7 +120,7 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
                                                ": warning: declarations precede the first #version "
                                                "directive, which POV-Ray 3.7 expects first");
     // povray 3.7 warns about a missing assumed_gamma because the result
-    // depends on the scene's version (render/gamma.cpp applies the rule).
+    // depends on the scene's version (image/gamma.cpp applies the rule).
     if (!scene_.globals.assumedGammaSet) {
         const char* text =
             version_ >= 3.7 - 1e-9
@@ -572,7 +572,7 @@ void Interpreter::acceptSemicolonBeforeDirective() {
 Value Interpreter::parseRValue() {
     const Token start = peek();
     const NestingGuard nesting(*this, start);
-    if (isObjectStart(start)) return parseObject();
+    if (isObjectStart(start)) return std::make_shared<const ObjectValue>(parseObject());
     switch (start.kw) {
         case Keyword::kw_pigment:
             return parsePigment();

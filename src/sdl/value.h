@@ -12,6 +12,7 @@
 #include "scene/lights.h"
 #include "scene/object.h"
 #include "scene/texture.h"
+#include "sdl/object_value.h"
 #include "sdl/token.h"
 
 namespace frameray::sdl {
@@ -41,7 +42,7 @@ struct Macro {
     SourceLoc loc;
 };
 
-using ObjectPtr = std::shared_ptr<scene::Object>;
+using ObjectPtr = std::shared_ptr<const ObjectValue>;  // object_value.h
 using PigmentPtr = std::shared_ptr<const scene::Pigment>;
 using FinishPtr = std::shared_ptr<const scene::Finish>;
 using TexturePtr = std::shared_ptr<const scene::Texture>;

@@ -13,7 +13,7 @@
 #include <exception>
 #include <string>
 
-#include "render/gamma.h"
+#include "image/frame_encoding.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/interpreter.h"
@@ -48,11 +48,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         settings.width = frame.imageWidth;
         settings.height = frame.imageHeight;
         render::FrameStats stats;
-        const render::FrameImage image = render::renderFrame(world, settings, stats);
-        const auto gamma = render::GammaEncoding::forScene(scene, 0);
-        double sum = 0;
-        for (const float v : image.rgb) sum += gamma.encode(v);
-        (void)sum;
+        const render::FrameImage frameImage = render::renderFrame(world, settings, stats);
+        const auto gamma = image::GammaEncoding::forScene(
+            scene.globals.assumedGammaSet, scene.globals.assumedGamma, scene.languageVersion, 0);
+        const image::EncodedImage encoded =
+            image::encodeFrame(frameImage.width, frameImage.height, frameImage.rgb, frameImage.alpha,
+                               gamma, 8, {0, 0, frameImage.width, frameImage.height});
+        (void)encoded;
     } catch (const std::exception& e) {
         (void)e.what();
     }

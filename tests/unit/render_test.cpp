@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/gamma.h"
+#include "image/gamma.h"
 #include "render/renderer.h"
 #include "render/world.h"
 
@@ -12,13 +12,18 @@ TEST(Gamma, Povray37Rules) {
     scene::Scene s;
     s.globals.assumedGamma = 1.0;
     s.globals.assumedGammaSet = true;
-    const auto srgb = render::GammaEncoding::forScene(s, 0);
+    const auto srgb = image::GammaEncoding::forScene(s.globals.assumedGammaSet,
+                                                     s.globals.assumedGamma, s.languageVersion, 0);
     // Values read off povray 3.7's output: linear 0.2 -> 124/255, 0.01 -> 25/255.
     EXPECT_EQ(static_cast<int>(srgb.encode(0.2) * 255 + 0.5), 124);
     EXPECT_EQ(static_cast<int>(srgb.encode(0.01) * 255 + 0.5), 25);
     scene::Scene old;
     old.languageVersion = 3.6;
-    EXPECT_DOUBLE_EQ(render::GammaEncoding::forScene(old, 0).encode(0.5), 0.5);
+    EXPECT_DOUBLE_EQ(
+        image::GammaEncoding::forScene(old.globals.assumedGammaSet, old.globals.assumedGamma,
+                                       old.languageVersion, 0)
+            .encode(0.5),
+        0.5);
 }
 
 TEST(World, ClosestHitAndShadowsAcrossBvhAndPlanes) {
