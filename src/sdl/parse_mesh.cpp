@@ -91,7 +91,7 @@ bool Interpreter::parseOptionalBool() {
     const Token n = peek();
     if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Keyword::kw_on) ||
         n.is(Keyword::kw_off) || n.is(Keyword::kw_true) || n.is(Keyword::kw_false) ||
-        n.isIdentifier())
+        n.is(Keyword::kw_yes) || n.is(Keyword::kw_no) || n.isIdentifier())
         return parseFloat() != 0;
     return true;
 }
@@ -344,7 +344,7 @@ void Interpreter::parseHeightField(scene::Object& obj) {
                              h, frame_.limits.arrayElements));
         width = static_cast<int>(w);
         height = static_cast<int>(h);
-        const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(source);
+        const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(source, true);
         heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
         // Sample (i, j) sees x = i / (W - 1), y = j / (H - 1) (j = 0 is the
         // row at z = 1, as an image's top row); the value is kept as povray
@@ -381,6 +381,10 @@ void Interpreter::parseHeightField(scene::Object& obj) {
             case Keyword::kw_iff:
                 unsupported(source, "iff height fields");
             default:
+                // povray 3.7 takes a bare file name too, its type read from
+                // the file (the example advanced/crater/crater.pov); a
+                // literal only, not a string identifier (measured).
+                if (source.kind == TokenKind::String) break;
                 fail(source,
                      fmt::format("expected an image type or 'function' in height_field, found {}",
                                  describeToken(source)));

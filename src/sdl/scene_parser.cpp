@@ -55,7 +55,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},
     {Keyword::kw_julia_fractal, false},
-    {Keyword::kw_polygon, false},
+    {Keyword::kw_polygon, true},
     {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, true},
 };
@@ -114,6 +114,10 @@ bool Interpreter::parseStatement() {
         case Keyword::kw_rainbow:
             parseRainbow();
             return true;
+        case Keyword::kw_default:  // povray 3.7 takes `default { }` without '#', silently
+            next();
+            directiveDefault();
+            return true;
         case Keyword::kw_media:
         case Keyword::kw_photons:
         case Keyword::kw_radiosity:
@@ -156,6 +160,15 @@ ObjectPtr Interpreter::parseObject() {
             if (!id.isIdentifier())
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
             const Value v = identifierValue(id);
+            if (const auto* light = std::get_if<LightPtr>(&v)) {
+                // A declared light_source is an object in povray: object {
+                // LIGHT } places it, moved by the object's transformations
+                // (the example advanced/desk/desk.pov). It is carried as a
+                // CSG node's light, which placing hands to the scene.
+                obj->op = scene::CsgOp::Union;
+                obj->lights.push_back(**light);
+                break;
+            }
             const auto* src = std::get_if<ObjectPtr>(&v);
             if (!src)
                 fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
@@ -390,6 +403,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             if (tri->isDegenerate()) warn(kind, "Degenerate triangle. Please remove.");
             return tri;
         }
+        case Keyword::kw_polygon:
+            return parsePolygon(kind);
         case Keyword::kw_smooth_triangle: {
             Vec3 v[3], n[3];
             for (int i = 0; i < 3; ++i) {
@@ -552,7 +567,8 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             obj.hollow = true;
             if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) ||
                 peek().is(Keyword::kw_off) || peek().is(Keyword::kw_true) ||
-                peek().is(Keyword::kw_false))
+                peek().is(Keyword::kw_false) || peek().is(Keyword::kw_yes) ||
+                peek().is(Keyword::kw_no))
                 obj.hollow = parseFloat() != 0;
             return true;
         default:

@@ -212,15 +212,23 @@ def folder_digest(folder):
 # ---------------------------------------------------------------- running
 
 
+def file_states(folder):
+    return {p.name: (p.stat().st_mtime_ns, p.stat().st_size) for p in folder.iterdir()
+            if p.is_file()}
+
+
 def image_files(folder, before):
-    """Images in folder that were not there before the run."""
+    """Images in folder that the run wrote: new ones, and rewritten ones (the
+    example advanced/crater/crater_dat.pov renders the crater_dat.png its
+    folder ships)."""
     return {p.name: p for p in folder.iterdir()
-            if p.is_file() and p.suffix.lower() in IMAGE_SUFFIXES and p.name not in before}
+            if p.is_file() and p.suffix.lower() in IMAGE_SUFFIXES
+            and before.get(p.name) != (p.stat().st_mtime_ns, p.stat().st_size)}
 
 
 def run_renderer(command, cwd, env, timeout):
     """Runs one renderer in cwd; measures wall and CPU time of that child."""
-    before = {p.name for p in cwd.iterdir()}
+    before = file_states(cwd)
     log_path = cwd.parent / f"{cwd.name}-log.txt"
     run = Run()
     with open(log_path, "wb") as log:
@@ -380,7 +388,7 @@ def judge(entry, pov, pov_dir, fr, fr_dir, args):
     pov_reason = ""
     if not pov.frames or pov.exit_code != 0:
         pov_reason = POVRAY_FAILURE_NOTES.get(entry.name) or povray_error(pov.log) or \
-            f"exit {pov.exit_code}"
+            (f"did not finish in {pov.wall:.0f} s" if pov.timed_out else f"exit {pov.exit_code}")
     return Row(entry.kind, entry.name, status, group, len(pov.frames),
                len(fr.frames) if fr else 0,
                sum(matches) / len(matches) if matches else None,
