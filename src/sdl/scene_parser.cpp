@@ -518,6 +518,9 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
             return true;
+        case Keyword::kw_interior_texture:  // a texture body, from the default texture
+            obj.interiorTexture = parseTexture(nullptr);
+            return true;
         case Keyword::kw_material: {
             // Its texture replaces the object's; its interior too.
             const MaterialPtr m = parseMaterial();

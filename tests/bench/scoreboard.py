@@ -341,8 +341,16 @@ def povray_error(log):
 
 
 def normalise(error):
-    """Folds what varies between occurrences of one error: numbers, quoted names."""
-    text = re.sub(r"'[^']*'", "'…'", error)
+    """Folds what varies between occurrences of one error: numbers, strings and
+    the scene's own names (quoted text after `identifier`, or with a capital
+    letter or digit in it); keywords and symbols stay (`'function' in an
+    expression`, `expected ')'`)."""
+    def fold(match):
+        quoted = match.group(2)
+        if match.group(1) or re.search(r"[A-Z0-9]", quoted):
+            return f"{match.group(1) or ''}'…'"
+        return match.group(0)
+    text = re.sub(r"(identifier )?'([^']*)'", fold, error)
     text = re.sub(r'"[^"]*"', '"…"', text)
     return re.sub(r"\b\d+(\.\d+)?\b", "N", text)
 
