@@ -308,9 +308,13 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // The hit primitive (for CSG, the child whose surface was crossed)
     // carries its complete transform and inherited texture.
     Vec3 geometric = obj.normalAt(p);
-    // Shade the side facing the viewer.
-    if (dot(geometric, viewDir) > 0) geometric = -geometric;
-    const scene::Texture& own = obj.texture ? *obj.texture : defaultTexture();
+    // Shade the side facing the viewer; the inner side takes the
+    // interior_texture when there is one.
+    const bool innerSide = dot(geometric, viewDir) > 0;
+    if (innerSide) geometric = -geometric;
+    const scene::Texture& own = innerSide && obj.interiorTexture ? *obj.interiorTexture
+                                : obj.texture                    ? *obj.texture
+                                                                 : defaultTexture();
     // uv_mapping's point, found only when a texture asks for it.
     const Vec3 uv =
         !obj.componentTextures.empty() || own.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);

@@ -59,6 +59,10 @@ struct Object {
     // Null: the nearest ancestor's texture, finally the default texture
     // (resolved once the object is placed in the scene, see csg.h).
     std::shared_ptr<const Texture> texture;
+    // interior_texture: the texture of the surface's inner side (seen where
+    // the outward normal faces away from the viewer). Null: the nearest
+    // ancestor's, finally `texture` (povray 3.7, measured).
+    std::shared_ptr<const Texture> interiorTexture;
     // A blob whose components carry textures: one per component (null: the
     // object's own texture), blended at each point by how much each
     // component adds to the field there (povray 3.7: weights |field_i| /

@@ -266,7 +266,10 @@ class Interpreter {
     Value parseFunctionBody(std::vector<std::string> params);
     Value parseInternalFunctionBody();
     Value parsePatternFunctionBody();
-    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at);
+    // `colourAsGray`: a pigment function gives its colour's gray, as a
+    // height_field function does in povray (measured).
+    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at,
+                                                             bool colourAsGray = false);
     void skipToClosingBrace(const Token& from, int depth);
     Value callSpline(const SplineValue& spline, const Token& at);
     Value callFunction(const FunctionValue& function, const Token& at);
@@ -322,6 +325,7 @@ class Interpreter {
     // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
+    std::shared_ptr<const scene::Shape> parsePolygon(const Token& kind);  // parse_polygon.cpp
     std::vector<double> parseCoefficientVector(int count, const Token& kind);
     void applySturm(scene::Object& obj, const Token& at);  // after `sturm`
     // clipped_by { objects } / bounded_by { objects }, or the other list
@@ -381,7 +385,9 @@ class Interpreter {
     std::vector<scene::Normal::MapEntry> parseNormalMap();
     std::vector<scene::Normal::SlopeEntry> parseSlopeMap();
     Value parseBlendMapValue();  // a declared map
-    double parseMapValue();      // an entry's value, ending before a '<'
+    // An entry's value, ending before a '<'; 1 when an average map's entry
+    // leaves its weight out (`weightMayBeOmitted`: pigment, normal, texture maps).
+    double parseMapValue(bool weightMayBeOmitted = false);
 
     // After a map's '{': a declared map of that kind (consumed), or null.
     const BlendMapValue* blendMapIdentifier(BlendMapValue::Kind kind);

@@ -55,7 +55,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},
     {Keyword::kw_julia_fractal, false},
-    {Keyword::kw_polygon, false},
+    {Keyword::kw_polygon, true},
     {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, true},
 };
@@ -114,6 +114,10 @@ bool Interpreter::parseStatement() {
         }
         case Keyword::kw_rainbow:
             parseRainbow();
+            return true;
+        case Keyword::kw_default:  // povray 3.7 takes `default { }` without '#', silently
+            next();
+            directiveDefault();
             return true;
         case Keyword::kw_media:
             scene_.atmosphere.media.push_back(parseMedia());
@@ -411,6 +415,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             if (tri->isDegenerate()) warn(kind, "Degenerate triangle. Please remove.");
             return tri;
         }
+        case Keyword::kw_polygon:
+            return parsePolygon(kind);
         case Keyword::kw_smooth_triangle: {
             Vec3 v[3], n[3];
             for (int i = 0; i < 3; ++i) {
@@ -524,6 +530,9 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
         }
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
+            return true;
+        case Keyword::kw_interior_texture:  // a texture body, from the default texture
+            obj.interiorTexture = parseTexture(nullptr);
             return true;
         case Keyword::kw_material: {
             // Its texture replaces the object's; its interior too.
