@@ -46,7 +46,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parsePolynomialShape(const Toke
     switch (kind.kw) {
         case Keyword::kw_torus: {
             const double major = parseFloat();
-            expect(Sym::Comma, "',' between the major and minor radius");
+            accept(Sym::Comma);  // optional (povray reads `torus { 130 2 }`)
             const double minor = parseFloat();
             return std::make_shared<scene::Torus>(major, minor, false);
         }

@@ -538,6 +538,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             next();
             obj.noReflection = true;
             return true;
+        case Keyword::kw_no_radiosity:
+            next();
+            obj.noRadiosity = true;
+            return true;
+        case Keyword::kw_radiosity:
+            parseObjectRadiosity(obj);
+            return true;
         case Keyword::kw_hierarchy:
             next();
             parseOptionalBool();
@@ -690,6 +697,9 @@ void Interpreter::parseGlobalSettings() {
                 textCharset_ = found->second;
                 break;
             }
+            case Keyword::kw_radiosity:
+                parseRadiositySettings(t);
+                break;
             case Keyword::kw_hf_gray_16:
                 if (peek().kind == TokenKind::Number) parseFloat();
                 break;
