@@ -31,6 +31,7 @@ enum class RayKind {
     Camera,      // skips no_image surfaces (also rays refracted from camera rays)
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
+    Radiosity,   // skips no_radiosity surfaces
     Any,         // sees everything (bounding tests)
 };
 
@@ -80,6 +81,10 @@ struct Object {
     bool noShadow = false;
     bool noImage = false;
     bool noReflection = false;
+    bool noRadiosity = false;  // radiosity rays pass through it
+    // radiosity { importance }: the share of `count` a sample on it shoots;
+    // 0: not given (1).
+    double radiosityImportance = 0;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
     bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
 

@@ -409,6 +409,9 @@ class Interpreter {
     bool floatFollows();
     double parseOptionalFloat(double absent);
     void parseGlobalSettings();
+    // --- radiosity (parse_radiosity.cpp), each at 'radiosity' ---
+    void parseRadiositySettings(const Token& start);  // in global_settings, after the keyword
+    void parseObjectRadiosity(scene::Object& obj);    // radiosity { importance } in an object
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
     scene::Fog parseFog();              // fog { }, also as a declared value

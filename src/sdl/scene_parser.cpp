@@ -569,6 +569,13 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
             next();
             obj.noReflection = true;
             return true;
+        case Keyword::kw_no_radiosity:
+            next();
+            obj.noRadiosity = true;
+            return true;
+        case Keyword::kw_radiosity:
+            parseObjectRadiosity(obj);
+            return true;
         case Keyword::kw_hierarchy:
             next();
             parseOptionalBool();
@@ -717,6 +724,9 @@ void Interpreter::parseGlobalSettings() {
                 textCharset_ = found->second;
                 break;
             }
+            case Keyword::kw_radiosity:
+                parseRadiositySettings(t);
+                break;
             case Keyword::kw_hf_gray_16:
                 parseOptionalBool();
                 break;
