@@ -159,7 +159,9 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
         (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
         (flags.noReflection && !obj->noReflection) ||
         (flags.doubleIlluminate && !obj->doubleIlluminate) || (flags.hollow && !obj->hollow);
-    if (!obj->isCsg() && !needsTexture && !needsInterior && !needsFlags) return obj;
+    const bool needsPhotons = flags.photons.given && !obj->photons.given;
+    if (!obj->isCsg() && !needsTexture && !needsInterior && !needsFlags && !needsPhotons)
+        return obj;
     auto copy = std::make_shared<Object>(*obj);
     if (needsTexture) copy->texture = texture;
     if (needsInterior) copy->interior = flags.interior;
@@ -168,6 +170,7 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
     copy->noReflection |= flags.noReflection;
     copy->doubleIlluminate |= flags.doubleIlluminate;
     copy->hollow |= flags.hollow;
+    if (needsPhotons) copy->photons = flags.photons;
     for (ObjectRef& child : copy->children) child = inherit(child, copy->texture, *copy);
     return copy;
 }

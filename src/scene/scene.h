@@ -2,12 +2,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "scene/atmosphere.h"
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/object.h"
+#include "scene/photon_settings.h"
 
 namespace frameray::scene {
 
@@ -23,6 +25,8 @@ struct GlobalSettings {
     // (povray 3.7's effective default, measured: <0.70, 0.52, 0.48>, not
     // the <0.25, 0.18, 0.14> older documents give).
     RGB iridWavelength{0.70, 0.52, 0.48};
+    // Photon mapping, when the scene turns it on (render/photons.h).
+    std::optional<PhotonSettings> photons;
 };
 
 struct Scene {

@@ -400,6 +400,10 @@ class Interpreter {
     bool floatFollows();
     double parseOptionalFloat(double absent);
     void parseGlobalSettings();
+    // --- photons blocks (parse_photons.cpp), each after 'photons' ---
+    void parseGlobalPhotons(scene::PhotonSettings& settings);
+    void parseObjectPhotons(scene::ObjectPhotons& photons, const Token& keyword);
+    void parseLightPhotons(scene::LightPhotons& photons);
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
     scene::Fog parseFog();              // fog { }, also as a declared value
