@@ -584,6 +584,16 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
             next();
             applySturm(obj, tok);
             return true;
+        case Keyword::kw_photons:
+            next();
+            parseObjectPhotons(obj.photons, tok);
+            return true;
+        case Keyword::kw_split_union:
+            next();
+            if (!obj.isCsg() || obj.op != scene::CsgOp::Union)
+                fail(tok, "split_union found in non-union object.");
+            obj.photons.splitUnion = parseOptionalBool();
+            return true;
         case Keyword::kw_hollow:
             // Lets fog reach rays inside the object (see render::Tracer).
             next();
@@ -729,6 +739,11 @@ void Interpreter::parseGlobalSettings() {
                 break;
             case Keyword::kw_hf_gray_16:
                 parseOptionalBool();
+                break;
+            case Keyword::kw_photons:
+                // A second block replaces the first's values item by item.
+                if (!g.photons) g.photons.emplace();
+                parseGlobalPhotons(*g.photons);
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
