@@ -54,7 +54,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_height_field, true},
     {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},
-    {Keyword::kw_julia_fractal, false},
+    {Keyword::kw_julia_fractal, true},
     {Keyword::kw_polygon, true},
     {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, true},
@@ -405,6 +405,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
         }
         case Keyword::kw_polygon:
             return parsePolygon(kind);
+        case Keyword::kw_julia_fractal:
+            return parseJuliaFractal(kind);
         case Keyword::kw_smooth_triangle: {
             Vec3 v[3], n[3];
             for (int i = 0; i < 3; ++i) {
