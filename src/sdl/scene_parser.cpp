@@ -520,6 +520,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
             return true;
+        case Keyword::kw_uv_mapping:
+            // An object's uv_mapping maps the texture that follows it
+            // (povray 3.7, measured: as `texture { uv_mapping ... }`).
+            next();
+            if (texture) fail(tok, "uv_mapping must be specified before texture.");
+            editTexture().uvMapping = true;
+            return true;
         case Keyword::kw_interior_texture:  // a texture body, from the default texture
             obj.interiorTexture = parseTexture(nullptr);
             return true;
