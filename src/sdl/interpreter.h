@@ -326,6 +326,8 @@ class Interpreter {
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
     std::shared_ptr<const scene::Shape> parsePolygon(const Token& kind);  // parse_polygon.cpp
+    // parse_julia_fractal.cpp
+    std::shared_ptr<const scene::Shape> parseJuliaFractal(const Token& kind);
     std::vector<double> parseCoefficientVector(int count, const Token& kind);
     void applySturm(scene::Object& obj, const Token& at);  // after `sturm`
     // clipped_by { objects } / bounded_by { objects }, or the other list

@@ -452,6 +452,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
     };
     int type = -1, uSteps = 0, vSteps = 0;
     double flatness = 0;
+    scene::BicubicPatch::UvCorners uvCorners = scene::BicubicPatch::kUnitUvCorners;
     const Token start = peek();
     for (;;) {
         const Token t = peek();
@@ -468,6 +469,13 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
         } else if (t.is(Keyword::kw_v_steps)) {
             next();
             vSteps = static_cast<int>(setting());
+        } else if (t.is(Keyword::kw_uv_vectors)) {
+            next();
+            for (auto& corner : uvCorners) {
+                accept(Sym::Comma);
+                const VectorValue uv = parseVector();
+                corner = {uv.v[0], uv.v[1]};
+            }
         } else {
             break;
         }
@@ -482,7 +490,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
         accept(Sym::Comma);  // commas are optional, also before the first point (povray)
         points[i] = parseVec3();
     }
-    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness);
+    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness, Transform(),
+                                                 uvCorners);
 }
 
 }  // namespace frameray::sdl

@@ -162,9 +162,16 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
         const Token id = peek();
         if (!id.isIdentifier()) return false;
         const Value* v = lookup(std::string(id.text));
-        if (!v || !std::holds_alternative<PigmentPtr>(*v)) return false;
+        // A pigment identifier, or an element of an array of pigments
+        // (`pigment { Pigments[I] }`, the example portfolio).
+        if (!v || !(std::holds_alternative<PigmentPtr>(*v) || arrayHolds<PigmentPtr>(*v)))
+            return false;
         next();
-        result = *std::get<PigmentPtr>(*v);
+        const Value declared = identifierValue(id, v);
+        const auto* pigment = std::get_if<PigmentPtr>(&declared);
+        if (!pigment)
+            fail(id, fmt::format("expected a pigment, found a {}", valueKindName(declared)));
+        result = **pigment;
         return true;
     };
     if (copyIdentifier()) {
@@ -266,13 +273,7 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         } catch (const std::runtime_error& e) {
             fail(at, e.what());
         }
-        if (accept(Keyword::kw_interpolate)) {
-            const Token n = peek();
-            const double mode = parseFloat();
-            if (mode < 0 || mode > 2)
-                fail(n, fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
-            pattern.densityInterpolation = static_cast<int>(mode);
-        }
+        // Its `interpolate` is a modifier (parsePigmentPatternItem).
     } else if (kind == scene::PatternKind::PigmentPattern) {
         expect(Sym::LBrace, "'{' after 'pigment_pattern'");
         auto inner = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
@@ -469,6 +470,19 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             next();
             pigment.setAverage();
             return true;
+        case Keyword::kw_interpolate: {
+            // density_file's, anywhere among the modifiers (the example
+            // textures/patterns/densfile.pov writes it after a bump size).
+            if (pigment.pattern().kind != scene::PatternKind::DensityFile) return false;
+            next();
+            const Token n = peek();
+            const double mode = parseFloat();
+            if (mode < 0 || mode > 2)
+                fail(n, fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
+            editPattern(
+                [&](scene::Pattern& p) { p.densityInterpolation = static_cast<int>(mode); });
+            return true;
+        }
         case Keyword::kw_brick_size: {
             next();
             const Vec3 v = parseVec3();
@@ -636,11 +650,15 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     // A declared normal to start from.
     if (const Token first = peek(); first.isIdentifier()) {
         const Value* v = lookup(std::string(first.text));
-        if (v && std::holds_alternative<NormalPtr>(*v)) {
+        // A normal identifier, or an element of an array of normals.
+        if (v && (std::holds_alternative<NormalPtr>(*v) || arrayHolds<NormalPtr>(*v))) {
             next();
-            const NormalPtr& declared = std::get<NormalPtr>(*v);
-            normal = declared ? *declared : scene::Normal{};
-            havePattern = declared != nullptr;
+            const Value value = identifierValue(first, v);
+            const auto* declared = std::get_if<NormalPtr>(&value);
+            if (!declared)
+                fail(first, fmt::format("expected a normal, found a {}", valueKindName(value)));
+            normal = *declared ? **declared : scene::Normal{};
+            havePattern = *declared != nullptr;
         }
     }
     // As in a pigment: transformations after a uv-mapped identifier do

@@ -54,7 +54,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_height_field, true},
     {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},
-    {Keyword::kw_julia_fractal, false},
+    {Keyword::kw_julia_fractal, true},
     {Keyword::kw_polygon, true},
     {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, true},
@@ -417,6 +417,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
         }
         case Keyword::kw_polygon:
             return parsePolygon(kind);
+        case Keyword::kw_julia_fractal:
+            return parseJuliaFractal(kind);
         case Keyword::kw_smooth_triangle: {
             Vec3 v[3], n[3];
             for (int i = 0; i < 3; ++i) {
@@ -530,6 +532,13 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
         }
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
+            return true;
+        case Keyword::kw_uv_mapping:
+            // An object's uv_mapping maps the texture that follows it
+            // (povray 3.7, measured: as `texture { uv_mapping ... }`).
+            next();
+            if (texture) fail(tok, "uv_mapping must be specified before texture.");
+            editTexture().uvMapping = true;
             return true;
         case Keyword::kw_interior_texture:  // a texture body, from the default texture
             obj.interiorTexture = parseTexture(nullptr);
