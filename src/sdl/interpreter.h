@@ -302,6 +302,7 @@ class Interpreter {
     Value parseVectorLiteral();
     Value parseColorKeywords(const Token& first);
     Value parseBuiltinFunction(const Token& name);
+    double checkedArgument(const Token& fn, double a);  // povray's domain checks
     // `known` is what the identifier names when the caller already has it
     // (see PeekCache); looked up otherwise.
     Value identifierValue(const Token& name, const Value* known = nullptr);
