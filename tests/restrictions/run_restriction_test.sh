@@ -133,6 +133,21 @@ fi
 run_plain created_folder "+O$work/made/here/" || { echo "restrictions: created_folder failed" >&2; failures=$((failures + 1)); }
 check_file yes "$work/made/here/created_folder.png" created_folder
 
+# Shell commands: %o and %s are quoted for /bin/sh, so an output name
+# holding $(...) is a name, not a command.
+mkdir -p "$work/quoting"
+printf '#version 3.7;\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$work/quoting/q.pov"
+(cd "$work/quoting" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+    "$frameray" q.pov +W8 +H8 -D -GR -GS 'Output_File_Name=y$(touch injected).png' \
+    Allow_Shell_Commands=on 'Post_Frame_Command=ls -l %o > listed.txt' > "$work/stdout" 2> "$work/stderr")
+if [ -e "$work/quoting/injected" ] || ! grep -q 'y\$(touch injected).png' "$work/quoting/listed.txt"; then
+    echo "restrictions: quoting: the output name ran as a command" >&2
+    cat "$work/stderr" >&2
+    failures=$((failures + 1))
+else
+    echo "restrictions: quoting: %o is quoted"
+fi
+
 if [ $failures -ne 0 ]; then
     echo "restrictions: $failures check(s) failed" >&2
     exit 1
