@@ -115,13 +115,14 @@ std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq)
 }
 
 // Temporary files left by a run that was killed mid-write: of the frames,
-// of sequence.json and of the journal (rewritten when a run resumes).
+// their logs, sequence.json and the journal (rewritten when a run resumes).
 void removeStaleTemporaries(const Sequence& seq) {
     // Every frame of a sequence is in one folder; the journal beside them.
     std::set<fs::path> folders;
     const fs::path frameFolder = seq.frames.front().output.parent_path();
     folders.insert(frameFolder.empty() ? fs::path(".") : frameFolder);
     std::set<std::string> names{seq.statisticsName};
+    const fs::path imageExtension = seq.frames.front().output.extension();
     if (!seq.journal.empty()) {
         folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
                                                          : seq.journal.parent_path());
@@ -134,7 +135,11 @@ void removeStaleTemporaries(const Sequence& seq) {
             long pid = 0;
             std::string target;
             if (!image::parseTemporaryName(name, target, pid)) continue;
-            if (!names.count(target) && !seq.frames.holdsImageNamed(target)) continue;
+            // A frame's log (NAME.log beside NAME.png) is replaced too.
+            const bool log = target.ends_with(".log") &&
+                             seq.frames.holdsImageNamed(
+                                 fs::path(target).replace_extension(imageExtension).string());
+            if (!names.count(target) && !seq.frames.holdsImageNamed(target) && !log) continue;
             if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
                 continue;  // alive
             fs::remove(entry.path(), ec);

@@ -103,8 +103,10 @@ Journal::Journal(fs::path path, std::uint64_t settingsHash, bool resume) : path_
         util::replaceFileDurably(path_, text);
         file_ = std::make_unique<util::DurableAppendFile>(path_, false);
     } else {
-        file_ = std::make_unique<util::DurableAppendFile>(path_, true);
-        file_->append(header(settingsHash) + "\n");
+        // Replaced rather than truncated: a symbolic link planted under the
+        // journal's name is replaced, not followed.
+        util::replaceFileDurably(path_, header(settingsHash) + "\n");
+        file_ = std::make_unique<util::DurableAppendFile>(path_, false);
     }
 }
 

@@ -3,7 +3,6 @@
 #include <tbb/global_control.h>
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "anim/sequence.h"
 #include "options/option_table.h"
 #include "options/options.h"
+#include "util/durable_file.h"
 
 int main(int argc, char** argv) {
     using namespace frameray;
@@ -48,11 +48,12 @@ int main(int argc, char** argv) {
         if (opts.inputFile.empty())
             throw options::OptionError("no scene file given (Input_File_Name or +I)");
         if (!opts.createIni.empty()) {
-            std::ofstream ini(opts.createIni, std::ios::trunc);
-            ini << options::createIniText(opts);
-            if (!ini)
-                throw options::OptionError("cannot write the Create_Ini file '" + opts.createIni +
-                                           "'");
+            // Replaced, never written through a link planted under its name.
+            try {
+                util::replaceFileDurably(opts.createIni, options::createIniText(opts));
+            } catch (const std::exception& e) {
+                throw options::OptionError(std::string("Create_Ini: ") + e.what());
+            }
         }
         if (listFrames) {
             const anim::Sequence planned = anim::planSequence(opts);

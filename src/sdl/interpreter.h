@@ -213,6 +213,9 @@ class Interpreter {
     void invokeMacro(const Token& nameToken, const Macro& macro);
     Value bareIdentifierArgument();  // monostate when the argument is not one
     std::filesystem::path findIncludeFile(const std::string& name) const;
+    // Why findIncludeFile found nothing: a folder of that name, or where
+    // it looked (file_io.cpp).
+    std::string whyNotFound(const std::string& name) const;
     // Fails at `at` when the frame's FileAccessPolicy refuses the file, or
     // when it is no regular file (file_io.cpp); `name` is how the scene
     // named it.
@@ -485,8 +488,10 @@ class Interpreter {
         bool warned = false;
     };
     std::unordered_map<std::string, Deprecation, NameHash, NameEqual> deprecated_;
-    std::vector<FilePtr> openFiles_;  // closed at the end of the parse
-    std::string inputFileName_;       // the scene file as named to the interpreter
+    // Files #fopen opened: closed at the end of the parse, or as soon as
+    // no identifier holds them.
+    std::vector<std::weak_ptr<FileHandle>> openFiles_;
+    std::string inputFileName_;  // the scene file as named to the interpreter
     // Text objects: the global_settings charset in force, and the fonts
     // read so far, by the name the scene gave (this frame's only).
     scene::TextCharset textCharset_ = scene::TextCharset::Ascii;
