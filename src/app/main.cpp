@@ -2,6 +2,7 @@
 // switches. Wiring only: options -> sequence -> frame loop.
 #include <tbb/global_control.h>
 
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -18,6 +19,10 @@ int main(int argc, char** argv) {
     using namespace frameray;
     // First, before any thread exists: Ctrl-C is handled by a watcher.
     anim::installInterruptWatcher();
+    // A write past `ulimit -f` would kill the process with SIGXFSZ and no
+    // word; ignored, the write fails with EFBIG ("File too large") and the
+    // frame ends with that message, as a full disk does.
+    std::signal(SIGXFSZ, SIG_IGN);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     // --list-frames: print the frames the options ask for (number, clock,
