@@ -189,6 +189,7 @@ void writeBinary(FileWriter& out, const BinaryFormat& f, double value) {
 void Interpreter::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty())
         fail(at, refusal);
+    filesRead_.push_back(path);
     // Scene files, data, images and fonts are read whole: a device or pipe
     // (/dev/zero, a FIFO) could block or never end.
     std::error_code ec;
@@ -244,6 +245,7 @@ void Interpreter::directiveFopen(const Token& at) {
                          : fmt::format("cannot open '{}' for reading ({}); if an earlier frame "
                                        "writes it, {}",
                                        name, whyNotFound(name), frame_.refuseFileWrites));
+            filesRead_.push_back(path);
             const OpenedFile file = frame_.fileAccess.openForReading(path, name);
             if (!file.ok()) fail(at, file.error());
             int error = 0;
@@ -262,6 +264,7 @@ void Interpreter::directiveFopen(const Token& at) {
                                      mode.kw == Keyword::kw_append ? "append" : "write",
                                      frame_.refuseFileWrites));
             handle->writing = true;
+            filesWritten_.push_back(name);
             OpenedFile file =
                 frame_.fileAccess.openForWriting(name, mode.kw == Keyword::kw_append, name);
             if (!file.ok()) fail(at, file.error());

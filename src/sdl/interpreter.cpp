@@ -70,6 +70,7 @@ Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSi
 
 scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
     inputFileName_ = sceneFile.filename().string();  // povray gives the bare name
+    filesRead_.push_back(sceneFile);
     auto file = cache_.get(sceneFile);
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
     return run(std::move(file));

@@ -50,6 +50,11 @@ class Interpreter {
 
     // Parses a scene file into a Scene. Throws SdlError on the first error.
     scene::Scene parseFile(const std::filesystem::path& sceneFile);
+    // The files the parse read (the scene, includes, images, fonts, data
+    // read with #fopen) and wrote (#fopen write/append), in order, as
+    // found: what the frame was made from, for the resume journal.
+    const std::vector<std::filesystem::path>& filesRead() const { return filesRead_; }
+    const std::vector<std::filesystem::path>& filesWritten() const { return filesWritten_; }
     // Parses scene text (tests, one-liners); `name` is used in messages.
     scene::Scene parseText(const std::string& name, const std::string& text);
 
@@ -492,6 +497,7 @@ class Interpreter {
     // no identifier holds them.
     std::vector<std::weak_ptr<FileHandle>> openFiles_;
     std::string inputFileName_;  // the scene file as named to the interpreter
+    std::vector<std::filesystem::path> filesRead_, filesWritten_;
     // Text objects: the global_settings charset in force, and the fonts
     // read so far, by the name the scene gave (this frame's only).
     scene::TextCharset textCharset_ = scene::TextCharset::Ascii;

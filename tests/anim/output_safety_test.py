@@ -101,9 +101,11 @@ def main():
         journal = {}
         jpath = os.path.join(outdir, ".ball.frameray-journal")
         if os.path.exists(jpath):
+            # frame <number> <clock> <size> <hash> <inputs> <file name>
             for line in open(jpath).read().splitlines()[1:]:
                 parts = line.split()
-                journal[parts[5]] = int(parts[3])
+                if parts and parts[0] == "frame":
+                    journal[parts[6]] = int(parts[3])
         for n in os.listdir(outdir):
             if n.endswith(".tmp"):
                 fail("%s: temporary file %s left behind" % (name, n))
