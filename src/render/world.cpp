@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "render/atmosphere.h"
+#include "render/media.h"
 #include "render/optics.h"
 
 namespace frameray::render {
@@ -241,7 +243,8 @@ World::World(const scene::Scene& scene)
 }
 
 void World::add(const scene::Object* obj) {
-    if (obj->noImage && obj->noShadow && obj->noReflection) return;  // invisible to every ray kind
+    if (obj->noImage && obj->noShadow && obj->noReflection && obj->noRadiosity)
+        return;  // invisible to every ray kind
     // A plain union's first hit is its nearest child's: its children join
     // the BVH one by one (povray splits unions the same way), instead of
     // a union of thousands being searched child by child.
@@ -340,6 +343,29 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
 
 RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
                         const scene::Light* light) const {
+    RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light);
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.fogs.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        const double speed = length(ray.direction);
+        passed *= fogLightTransmittance(scene_, ray.at(tMin), ray.direction * (1.0 / speed),
+                                        (tMax - tMin) * speed);
+    }
+    // media_attenuation: the scene's media dim the light on its way (povray
+    // leaves it out by default, and for a light without media_interaction;
+    // measured).
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.media.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        MediaSet set;
+        set.add(scene_.atmosphere.media);
+        const double speed = length(ray.direction);
+        const scene::Ray unit{ray.at(tMin), ray.direction * (1.0 / speed)};
+        passed *= mediaTransmittance(unit, (tMax - tMin) * speed, set);
+    }
+    return passed;
+}
+
+RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                         const scene::Light* light) const {
     ThreadState& state = tests_.local();
     // povray's shadow cache: the object that last blocked this light is
     // tried first, since neighbouring points are usually shadowed by the
@@ -391,9 +417,37 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         if (dot(obj.normalAt(p), ray.direction) < 0 && insideCount < inside.size())
             inside[insideCount++] = {in, t};
     };
+    // Hollow objects with media: the light is dimmed by the media between
+    // where the ray enters and leaves, or from its start when it starts
+    // inside (a media sample point), or to its end when the light is inside
+    // (measured: povray's shadow under a box of absorbing media).
+    std::array<Inside, 8> inMedia{};
+    size_t inMediaCount = 0;
+    auto mediaBetween = [&](const scene::Interior& in, double t0, double t1) {
+        MediaSet set;
+        set.add(in.media);
+        const scene::Ray unit{ray.at(t0), ray.direction * (1.0 / speed)};
+        passed *= mediaTransmittance(unit, (t1 - t0) * speed, set);
+    };
+    auto crossMedia = [&](const scene::Object& obj, const Vec3& p, double t) {
+        const scene::Interior* in = obj.interior.get();
+        if (!in || in->media.empty() || !obj.hollow) return;
+        for (size_t i = 0; i < inMediaCount; ++i) {
+            if (inMedia[i].interior != in) continue;
+            mediaBetween(*in, inMedia[i].from, t);
+            inMedia[i] = inMedia[--inMediaCount];
+            return;
+        }
+        if (dot(obj.normalAt(p), ray.direction) < 0) {
+            if (inMediaCount < inMedia.size()) inMedia[inMediaCount++] = {in, t};
+        } else {
+            mediaBetween(*in, tMin, t);
+        }
+    };
     while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
         const Vec3 p = ray.at(hit.t);
         crossFading(*hit.object, p, hit.t);
+        crossMedia(*hit.object, p, hit.t);
         const RGB through = lightPassing(*hit.object, p);
         if (through.isBlack()) return RGB(0.0);
         passed *= through * fakeCaustics(*hit.object, p, ray.direction);
@@ -401,6 +455,9 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);
     }
+    if (std::isfinite(tMax))
+        for (size_t i = 0; i < inMediaCount; ++i)
+            mediaBetween(*inMedia[i].interior, inMedia[i].from, tMax);
     return passed;
 }
 

@@ -77,6 +77,9 @@ class World {
     };
 
   private:
+    // shadowFilter without the scene's media.
+    RGB surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                      const scene::Light* light) const;
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);

@@ -58,6 +58,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
         const char* operator()(const MaterialPtr&) const { return "material"; }
+        const char* operator()(const MediaPtr&) const { return "media"; }
+        const char* operator()(const DensityPtr&) const { return "density"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -170,10 +172,16 @@ void Interpreter::declare(const std::string& name, Value value, bool local, size
     const size_t visible = std::min(scopeCount, scopes_.size());
     if (local) {
         Scope& scope = scopes_[visible - 1];
-        if (auto found = scope.find(key); found != scope.end())
-            found->second = std::move(value);
-        else
+        if (auto found = scope.find(key); found == scope.end()) {
             scope.emplace(name, std::move(value));
+        } else if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
+            // A macro parameter passed by reference: povray's #local on it
+            // assigns the caller's identifier too.
+            const IdentifierAlias target = *alias;
+            scopes_[target.scope][target.name] = std::move(value);
+        } else {
+            found->second = std::move(value);
+        }
         return;
     }
     // #declare assigns the most local existing version, or creates a global;
@@ -355,6 +363,9 @@ void Interpreter::runDirective() {
     const NestingGuard nesting(*this, hash);
     ++cursors_.back().pos;
     const Token word = rawPeek();
+    // povray drops a '#' that a symbol follows, silently (the example
+    // language/image_size.pov has `look_at <0,2,0>#` before the camera's '}').
+    if (word.kind == TokenKind::Symbol) return;
     if (word.kind != TokenKind::Word || word.kw == Keyword::None)
         fail(word, fmt::format("expected a directive after '#', found {}", describeToken(word)));
     ++cursors_.back().pos;
@@ -608,6 +619,10 @@ Value Interpreter::parseRValue() {
             return std::make_shared<const scene::Light>(parseLightSource());
         case Keyword::kw_fog:
             return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_media:
+            return parseMedia();
+        case Keyword::kw_density:
+            return parseDensity();
         case Keyword::kw_sky_sphere:
             return std::make_shared<const scene::SkySphere>(parseSkySphere());
         default:
@@ -917,13 +932,14 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     Scope args;
     expectAfter(Sym::LParen, "'('", macro.name);
     size_t count = 0;
-    if (!peek().is(Sym::RParen)) {
-        do {
-            Value v = bareIdentifierArgument();
-            if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
-            if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
-            ++count;
-        } while (accept(Sym::Comma) && !peek().is(Sym::RParen));  // M(1, 2,) as povray
+    // The commas between arguments are optional in povray (`M(<1,0,0> .5)`),
+    // and a trailing one is ignored (`M(1, 2,)`).
+    while (!peek().is(Sym::RParen)) {
+        Value v = bareIdentifierArgument();
+        if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
+        if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
+        ++count;
+        accept(Sym::Comma);
     }
     expect(Sym::RParen, "')'");
     if (count != macro.params.size())

@@ -274,7 +274,10 @@ class Interpreter {
     Value parseFunctionBody(std::vector<std::string> params);
     Value parseInternalFunctionBody();
     Value parsePatternFunctionBody();
-    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at);
+    // `colourAsGray`: a pigment function gives its colour's gray, as a
+    // height_field function does in povray (measured).
+    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at,
+                                                             bool colourAsGray = false);
     void skipToClosingBrace(const Token& from, int depth);
     Value callSpline(const SplineValue& spline, const Token& at);
     Value callFunction(const FunctionValue& function, const Token& at);
@@ -331,6 +334,7 @@ class Interpreter {
     // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
+    std::shared_ptr<const scene::Shape> parsePolygon(const Token& kind);  // parse_polygon.cpp
     std::vector<double> parseCoefficientVector(int count, const Token& kind);
     void applySturm(scene::Object& obj, const Token& at);  // after `sturm`
     // clipped_by { objects } / bounded_by { objects }, or the other list
@@ -390,7 +394,9 @@ class Interpreter {
     std::vector<scene::Normal::MapEntry> parseNormalMap();
     std::vector<scene::Normal::SlopeEntry> parseSlopeMap();
     Value parseBlendMapValue();  // a declared map
-    double parseMapValue();      // an entry's value, ending before a '<'
+    // An entry's value, ending before a '<'; 1 when an average map's entry
+    // leaves its weight out (`weightMayBeOmitted`: pigment, normal, texture maps).
+    double parseMapValue(bool weightMayBeOmitted = false);
 
     // After a map's '{': a declared map of that kind (consumed), or null.
     const BlendMapValue* blendMapIdentifier(BlendMapValue::Kind kind);
@@ -400,6 +406,11 @@ class Interpreter {
     void parseReflectionBlock(scene::Finish& finish);
     void parseIridescence(scene::Finish& finish);
     InteriorPtr parseInterior(const scene::Interior* base);
+    // media { } and density { } (parse_media.cpp).
+    MediaPtr parseMedia();
+    DensityPtr parseDensity();
+    DensityPtr parseDensityBody(Sym closing);
+    std::vector<scene::Pigment::MapEntry> parseDensityMap();
     // --- material (parse_material.cpp) ---
     MaterialPtr parseMaterial();
     // Whether the next token can start a float expression (for items whose
@@ -407,6 +418,9 @@ class Interpreter {
     bool floatFollows();
     double parseOptionalFloat(double absent);
     void parseGlobalSettings();
+    // --- radiosity (parse_radiosity.cpp), each at 'radiosity' ---
+    void parseRadiositySettings(const Token& start);  // in global_settings, after the keyword
+    void parseObjectRadiosity(scene::Object& obj);    // radiosity { importance } in an object
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
     scene::Fog parseFog();              // fog { }, also as a declared value

@@ -181,6 +181,10 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
     }
     for (;;) {
         if (accept(Sym::RBrace)) break;
+        if (peek().is(Keyword::kw_media)) {
+            in.media.push_back(parseMedia());
+            continue;
+        }
         const Token t = next();
         switch (t.kw) {
             case Keyword::kw_ior:
@@ -204,9 +208,6 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_caustics:
                 in.caustics = parseFloat();
-                break;
-            case Keyword::kw_media:
-                unsupported(t, "media");
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)

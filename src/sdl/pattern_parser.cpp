@@ -428,6 +428,10 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             std::vector<PigmentPtr> list;
             for (const Color& c : defaults)
                 list.push_back(std::make_shared<const scene::Pigment>(c));
+            // The object pattern takes colours, or pigment { } blocks when
+            // its first entry is one (the example advanced/abyss.pov), never
+            // a mix nor a bare pigment identifier (measured).
+            bool objectPigments = false;
             for (std::size_t i = 0; i < defaults.size(); ++i) {
                 if (i > 0) accept(Sym::Comma);
                 const Token n = peek();
@@ -435,13 +439,12 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
                     n.isIdentifier() && lookup(std::string(n.text)) &&
                     std::holds_alternative<PigmentPtr>(*lookup(std::string(n.text)));
                 if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
-                // povray's newer list patterns (object, square, triangular,
-                // cubic) take colours only in a pigment.
-                const bool coloursOnly = *kind != scene::PatternKind::Checker &&
-                                         *kind != scene::PatternKind::Hexagon &&
-                                         *kind != scene::PatternKind::Brick;
-                if (coloursOnly && (n.is(Keyword::kw_pigment) || isPigmentId))
-                    fail(n, fmt::format("the {} pattern takes colours, not pigments", item.text));
+                if (*kind == scene::PatternKind::Object) {
+                    if (i == 0) objectPigments = n.is(Keyword::kw_pigment);
+                    if (isPigmentId || n.is(Keyword::kw_pigment) != objectPigments)
+                        fail(n, fmt::format("No matching }} in 'object', {} found instead",
+                                            describeToken(n)));
+                }
                 list[i] = parsePigmentListEntry();
             }
             pigment.setList(std::move(list));
@@ -1003,7 +1006,7 @@ std::vector<scene::Pigment::MapEntry> Interpreter::parsePigmentMap() {
     for (;;) {
         if (accept(Sym::RBrace)) break;
         expect(Sym::LBracket, "'[' or '}' in pigment_map");
-        const double v = parseMapValue();
+        const double v = parseMapValue(true);
         accept(Sym::Comma);
         // [v PIGMENT_BODY]: a colour, a pigment identifier, a pattern...
         auto entry = std::make_shared<scene::Pigment>();

@@ -55,7 +55,7 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},
     {Keyword::kw_julia_fractal, false},
-    {Keyword::kw_polygon, false},
+    {Keyword::kw_polygon, true},
     {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, true},
 };
@@ -115,7 +115,13 @@ bool Interpreter::parseStatement() {
         case Keyword::kw_rainbow:
             parseRainbow();
             return true;
+        case Keyword::kw_default:  // povray 3.7 takes `default { }` without '#', silently
+            next();
+            directiveDefault();
+            return true;
         case Keyword::kw_media:
+            scene_.atmosphere.media.push_back(parseMedia());
+            return true;
         case Keyword::kw_photons:
         case Keyword::kw_radiosity:
             unsupported(t, std::string(t.text));
@@ -161,6 +167,16 @@ ObjectValue Interpreter::parseObject() {
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
             const Value v = identifierValue(id);
             const auto* src = std::get_if<ObjectPtr>(&v);
+            if (const auto* light = std::get_if<LightPtr>(&v)) {
+                // object { LIGHT ... }: a light that moves as an object, an
+                // empty union holding it (povray 3.7 allows it anywhere an
+                // object goes).
+                obj->op = scene::CsgOp::Union;
+                auto lights = std::make_shared<ObjectLights>();
+                lights->lights.push_back(**light);
+                result.lights = std::move(lights);
+                break;
+            }
             if (!src)
                 fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
             *obj = *(*src)->object;
@@ -399,6 +415,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             if (tri->isDegenerate()) warn(kind, "Degenerate triangle. Please remove.");
             return tri;
         }
+        case Keyword::kw_polygon:
+            return parsePolygon(kind);
         case Keyword::kw_smooth_triangle: {
             Vec3 v[3], n[3];
             for (int i = 0; i < 3; ++i) {
@@ -513,6 +531,9 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
             return true;
+        case Keyword::kw_interior_texture:  // a texture body, from the default texture
+            obj.interiorTexture = parseTexture(nullptr);
+            return true;
         case Keyword::kw_material: {
             // Its texture replaces the object's; its interior too.
             const MaterialPtr m = parseMaterial();
@@ -547,6 +568,13 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
         case Keyword::kw_no_reflection:
             next();
             obj.noReflection = true;
+            return true;
+        case Keyword::kw_no_radiosity:
+            next();
+            obj.noRadiosity = true;
+            return true;
+        case Keyword::kw_radiosity:
+            parseObjectRadiosity(obj);
             return true;
         case Keyword::kw_hierarchy:
             next();
@@ -696,6 +724,9 @@ void Interpreter::parseGlobalSettings() {
                 textCharset_ = found->second;
                 break;
             }
+            case Keyword::kw_radiosity:
+                parseRadiositySettings(t);
+                break;
             case Keyword::kw_hf_gray_16:
                 parseOptionalBool();
                 break;
