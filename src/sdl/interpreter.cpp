@@ -72,6 +72,7 @@ Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSi
 
 scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
     inputFileName_ = sceneFile.filename().string();  // povray gives the bare name
+    filesRead_.push_back(sceneFile);
     auto file = cache_.get(sceneFile);
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
     return run(std::move(file));
@@ -661,7 +662,12 @@ void Interpreter::directiveInclude(const Token& at) {
         fail(at,
              fmt::format("#include nested more than {} levels deep", frame_.limits.includeFiles));
     const fs::path path = findIncludeFile(name);
-    if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
+    if (path.empty()) {
+        const std::string why = whyNotFound(name);
+        fail(at, why.starts_with("no such file")
+                     ? fmt::format("cannot find include file '{}'", name)
+                     : fmt::format("cannot include '{}': {}", name, why));
+    }
     checkReadable(path, name, at);
     const SourceLoc callSite = loc(at);
     std::shared_ptr<const TokenizedFile> file;

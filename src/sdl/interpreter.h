@@ -50,6 +50,11 @@ class Interpreter {
 
     // Parses a scene file into a Scene. Throws SdlError on the first error.
     scene::Scene parseFile(const std::filesystem::path& sceneFile);
+    // The files the parse read (the scene, includes, images, fonts, data
+    // read with #fopen) and wrote (#fopen write/append), in order, as
+    // found: what the frame was made from, for the resume journal.
+    const std::vector<std::filesystem::path>& filesRead() const { return filesRead_; }
+    const std::vector<std::filesystem::path>& filesWritten() const { return filesWritten_; }
     // Parses scene text (tests, one-liners); `name` is used in messages.
     scene::Scene parseText(const std::string& name, const std::string& text);
 
@@ -213,6 +218,9 @@ class Interpreter {
     void invokeMacro(const Token& nameToken, const Macro& macro);
     Value bareIdentifierArgument();  // monostate when the argument is not one
     std::filesystem::path findIncludeFile(const std::string& name) const;
+    // Why findIncludeFile found nothing: a folder of that name, or where
+    // it looked (file_io.cpp).
+    std::string whyNotFound(const std::string& name) const;
     // Fails at `at` when the frame's FileAccessPolicy refuses the file, or
     // when it is no regular file (file_io.cpp); `name` is how the scene
     // named it.
@@ -305,6 +313,7 @@ class Interpreter {
     Value parseVectorLiteral();
     Value parseColorKeywords(const Token& first);
     Value parseBuiltinFunction(const Token& name);
+    double checkedArgument(const Token& fn, double a);  // povray's domain checks
     // `known` is what the identifier names when the caller already has it
     // (see PeekCache); looked up otherwise.
     Value identifierValue(const Token& name, const Value* known = nullptr);
@@ -504,8 +513,11 @@ class Interpreter {
         bool warned = false;
     };
     std::unordered_map<std::string, Deprecation, NameHash, NameEqual> deprecated_;
-    std::vector<FilePtr> openFiles_;  // closed at the end of the parse
-    std::string inputFileName_;       // the scene file as named to the interpreter
+    // Files #fopen opened: closed at the end of the parse, or as soon as
+    // no identifier holds them.
+    std::vector<std::weak_ptr<FileHandle>> openFiles_;
+    std::string inputFileName_;  // the scene file as named to the interpreter
+    std::vector<std::filesystem::path> filesRead_, filesWritten_;
     // Text objects: the global_settings charset in force, and the fonts
     // read so far, by the name the scene gave (this frame's only).
     scene::TextCharset textCharset_ = scene::TextCharset::Ascii;
