@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 #include <signal.h>
 #include <sys/resource.h>
-#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_group.h>
 #include <unistd.h>
@@ -33,9 +31,9 @@
 #include "anim/progress.h"
 #include "anim/statistics.h"
 #include "image/codecs.h"
+#include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
-#include "render/gamma.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -51,7 +49,7 @@ using options::TextStream;
 
 namespace {
 
-const fs::path kDefaultLibrary = "/usr/share/povray-3.7/include";
+const fs::path kDefaultLibrary = options::kStandardIncludeFolder;
 
 sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& seq,
                              const FrameSpec& f) {
@@ -101,46 +99,6 @@ void refuseAlphaWith(const scene::Scene& scene) {
         throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
 }
 
-image::EncodedImage encode(const render::FrameImage& img, const render::GammaEncoding& gamma,
-                           int bitDepth, const RenderWindow& window) {
-    image::EncodedImage out;
-    out.width = img.width;
-    out.height = img.height;
-    const bool alpha = !img.alpha.empty();
-    out.channels = alpha ? 4 : 3;
-    out.bitDepth = bitDepth;
-    out.values.resize(static_cast<size_t>(img.width) * img.height * out.channels);
-    // Rows in parallel: three pow() per pixel are tens of milliseconds a
-    // frame, which a still image would otherwise spend on one core.
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, img.height, 16), [&](const tbb::blocked_range<int>& rows) {
-            for (int y = rows.begin(); y < rows.end(); ++y)
-                for (int x = 0; x < img.width; ++x) {
-                    // povray writes the pixels outside the render window
-                    // black (and transparent).
-                    const bool inside =
-                        x >= window.x0 && x < window.x1 && y >= window.y0 && y < window.y1;
-                    const size_t pixel = static_cast<size_t>(y) * img.width + x;
-                    float* dst = &out.values[pixel * out.channels];
-                    const float a = alpha ? img.alpha[pixel] : 1.0f;
-                    for (int c = 0; c < 3; ++c) {
-                        const double v = img.rgb[pixel * 3 + c];
-                        // With alpha the colour sums what the visible
-                        // surfaces add; PNG and TGA hold it un-premultiplied
-                        // (measured: povray writes encode(colour / alpha)).
-                        dst[c] =
-                            !inside ? 0.0f
-                            : alpha
-                                ? (a > 0 ? static_cast<float>(gamma.encode(std::min(1.0, v / a)))
-                                         : 0.0f)
-                                : static_cast<float>(gamma.encode(v));
-                    }
-                    if (alpha) dst[3] = inside ? a : 0.0f;
-                }
-        });
-    return out;
-}
-
 // What makes two runs' images comparable: a journal written with other
 // values is not trusted.
 std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq) {
@@ -159,12 +117,11 @@ std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq)
 // Temporary files left by a run that was killed mid-write: of the frames,
 // of sequence.json and of the journal (rewritten when a run resumes).
 void removeStaleTemporaries(const Sequence& seq) {
+    // Every frame of a sequence is in one folder; the journal beside them.
     std::set<fs::path> folders;
+    const fs::path frameFolder = seq.frames.front().output.parent_path();
+    folders.insert(frameFolder.empty() ? fs::path(".") : frameFolder);
     std::set<std::string> names{seq.statisticsName};
-    for (const FrameSpec& f : seq.frames) {
-        folders.insert(f.output.parent_path().empty() ? fs::path(".") : f.output.parent_path());
-        names.insert(f.output.filename().string());
-    }
     if (!seq.journal.empty()) {
         folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
                                                          : seq.journal.parent_path());
@@ -174,15 +131,13 @@ void removeStaleTemporaries(const Sequence& seq) {
         std::error_code ec;
         for (const auto& entry : fs::directory_iterator(dir, ec)) {
             const std::string name = entry.path().filename().string();
-            if (name.empty() || name[0] != '.') continue;
-            for (const std::string& target : names) {
-                long pid = 0;
-                if (!image::isTemporaryFor(name, target, pid)) continue;
-                if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
-                    continue;  // alive
-                fs::remove(entry.path(), ec);
-                break;
-            }
+            long pid = 0;
+            std::string target;
+            if (!image::parseTemporaryName(name, target, pid)) continue;
+            if (!names.count(target) && !seq.frames.holdsImageNamed(target)) continue;
+            if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
+                continue;  // alive
+            fs::remove(entry.path(), ec);
         }
     }
 }
@@ -202,7 +157,8 @@ struct Job {
     size_t index = 0;     // position in the pipeline (order of stage 3)
     size_t position = 0;  // position in the sequence
     const FrameSpec* frame = nullptr;
-    Outcome stop;  // Kind::Stop
+    Outcome stop;    // Kind::Stop
+    FrameSpec spec;  // what `frame` points to
     std::unique_ptr<FrameLog> log;
     std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
     std::optional<scene::Scene> scene;
@@ -270,11 +226,12 @@ class Run {
     int execute() {
         if (o_.outputToFile && !seq_.frames.empty()) {
             std::error_code ec;
-            for (const FrameSpec& f : seq_.frames)
-                if (!f.output.parent_path().empty())
-                    fs::create_directories(f.output.parent_path(), ec);
-            if (!seq_.journal.parent_path().empty())
-                fs::create_directories(seq_.journal.parent_path(), ec);
+            // Every frame and the journal are in the same folder, created
+            // only when Output_File_Name names it as a folder ("dir/");
+            // main refuses a missing folder otherwise (checkOutputFolder).
+            if (const fs::path folder = seq_.frames.front().output.parent_path();
+                !folder.empty() && !o_.outputFile.empty() && o_.outputFile.back() == '/')
+                fs::create_directories(folder, ec);
             removeStaleTemporaries(seq_);
             journal_ =
                 std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
@@ -425,7 +382,10 @@ class Run {
         job->kind = kind;
         job->index = jobs_.size();
         job->position = position;
-        if (position < seq_.frames.size()) job->frame = &seq_.frames[position];
+        if (position < seq_.frames.size()) {
+            job->spec = seq_.frames[position];
+            job->frame = &job->spec;
+        }
         // Only the oldest frame in flight prints as it goes; the others
         // hold their messages until it is out.
         job->log = std::make_unique<FrameLog>(streams_, job->index == head_);
@@ -434,10 +394,16 @@ class Run {
         return *jobs_.back();
     }
 
-    Job* stopJob(Outcome outcome) {
+    // A job that ends the run; `frame` (kept in the job) is the one whose
+    // Pre_Frame_Command decided it, if any.
+    Job* stopJob(Outcome outcome, const FrameSpec* frame = nullptr) {
         inputDone_ = true;
         Job& job = newJob(Job::Kind::Stop, seq_.frames.size());
         job.stop = std::move(outcome);
+        if (frame) {
+            job.spec = *frame;
+            job.stop.frame = &job.spec;
+        }
         return &job;
     }
 
@@ -446,7 +412,7 @@ class Run {
         while (!inputDone_ && !decided_ && next_ < seq_.frames.size() && rendersLeft_ > 0) {
             if (stopRequested()) return stopJob({Outcome::Kind::UserAbort, "", nullptr});
             const size_t position = next_++;
-            const FrameSpec& frame = seq_.frames[position];
+            const FrameSpec frame = seq_.frames[position];
             if (o_.continueTrace && journal_) {
                 bool kept = false;
                 {
@@ -467,7 +433,8 @@ class Run {
                 case HookAction::UserAbort:
                     return stopJob({Outcome::Kind::UserAbort, "", nullptr});
                 case HookAction::Fatal:
-                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", &frame});
+                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", nullptr},
+                                   &frame);
             }
             Job& job = newJob(Job::Kind::Render, position);
             --rendersLeft_;
@@ -522,7 +489,7 @@ class Run {
         job.parseSeconds = secondsSince(start);
     }
 
-    render::FrameSettings frameSettings(const render::GammaEncoding& gamma) const {
+    render::FrameSettings frameSettings(const image::GammaEncoding& gamma) const {
         render::FrameSettings f;
         f.width = o_.width;
         f.height = o_.height;
@@ -557,7 +524,9 @@ class Run {
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
             start = Clock::now();
-            const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
+            const auto gamma = image::GammaEncoding::forScene(
+                job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
+                job.scene->languageVersion, o_.fileGamma);
             const render::FrameSettings settings = frameSettings(gamma);
             if (settings.alpha) refuseAlphaWith(*job.scene);
             const render::FrameImage image = render::renderFrame(world, settings, job.stats);
@@ -567,9 +536,10 @@ class Run {
             // parallel; stage 3 only renames and journals.
             if (o_.outputToFile && !decided_) {
                 start = Clock::now();
-                const fs::path temporary =
-                    image::writeTemporary(job.frame->output, seq_.fileType,
-                                          encode(image, gamma, o_.bitDepth, seq_.window));
+                const fs::path temporary = image::writeTemporary(
+                    job.frame->output, seq_.fileType,
+                    image::encodeFrame(image.width, image.height, image.rgb, image.alpha, gamma,
+                                       o_.bitDepth, seq_.window));
                 job.temporary = temporary;
                 const auto hash = hashFile(temporary, &job.fileSize);
                 if (!hash)

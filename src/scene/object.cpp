@@ -47,7 +47,6 @@ void Object::transformBy(const Transform& t) {
         if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
     }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
-    for (Light& light : lights) light.transformBy(t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
     if (interiorTexture) {
@@ -59,6 +58,16 @@ void Object::transformBy(const Transform& t) {
         auto moved = std::make_shared<Texture>(*texture);
         moved->transformBy(t);
         texture = moved;
+    }
+    if (interior && !interior->media.empty()) {
+        // The media's densities move with the object.
+        auto moved = std::make_shared<Interior>(*interior);
+        for (auto& m : moved->media) {
+            auto media = std::make_shared<Media>(*m);
+            media->transformBy(t);
+            m = std::move(media);
+        }
+        interior = std::move(moved);
     }
     for (auto& component : componentTextures) {
         if (!component) continue;

@@ -83,13 +83,8 @@ struct Object {
     bool doubleIlluminate = false;  // lights reach the side facing away from them
     bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
 
-    // Light sources written inside this CSG node or light_group, in world
-    // space and moved with it; the parser hands them to the scene (or to
-    // the group) when the object is placed (sdl::placeObjectLights).
-    std::vector<Light> lights;
-    // Parse-time: this node is a light_group, and its global_lights value.
-    bool isLightGroup = false;
-    bool globalLights = false;
+    // (Light sources written inside a CSG node or light_group are the
+    // parser's until the object is placed: sdl::ObjectLights.)
     // Set on the primitives of a light_group once placed: the lights that
     // shade them. Null: the scene's lights.
     std::shared_ptr<const LightGroup> lightGroup;

@@ -13,7 +13,7 @@ namespace frameray::scene {
 
 struct GlobalSettings {
     // Unset means "not given in the scene": the 3.7 defaulting rules apply
-    // (see render/gamma).
+    // (see image/gamma).
     double assumedGamma = 0;
     bool assumedGammaSet = false;
     RGB ambientLight{1.0};

@@ -39,7 +39,7 @@ class VectorComponent final : public NativeFunction {
     int paramCount() const { return vector_->paramCount; }
     double eval(const double* args) const override {
         const std::array<double, 5> v = vector_->eval(args);
-        return slot_ == kGrayItem ? grayOf(v[0], v[1], v[2]) : v[static_cast<size_t>(slot_)];
+        return slot_ == kGrayItem ? grey(v[0], v[1], v[2]) : v[static_cast<size_t>(slot_)];
     }
 
   private:

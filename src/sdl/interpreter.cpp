@@ -58,6 +58,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
         const char* operator()(const MaterialPtr&) const { return "material"; }
+        const char* operator()(const MediaPtr&) const { return "media"; }
+        const char* operator()(const DensityPtr&) const { return "density"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -120,7 +122,7 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
                                                ": warning: declarations precede the first #version "
                                                "directive, which POV-Ray 3.7 expects first");
     // povray 3.7 warns about a missing assumed_gamma because the result
-    // depends on the scene's version (render/gamma.cpp applies the rule).
+    // depends on the scene's version (image/gamma.cpp applies the rule).
     if (!scene_.globals.assumedGammaSet) {
         const char* text =
             version_ >= 3.7 - 1e-9
@@ -581,7 +583,7 @@ void Interpreter::acceptSemicolonBeforeDirective() {
 Value Interpreter::parseRValue() {
     const Token start = peek();
     const NestingGuard nesting(*this, start);
-    if (isObjectStart(start)) return parseObject();
+    if (isObjectStart(start)) return std::make_shared<const ObjectValue>(parseObject());
     switch (start.kw) {
         case Keyword::kw_pigment:
             return parsePigment();
@@ -616,6 +618,10 @@ Value Interpreter::parseRValue() {
             return std::make_shared<const scene::Light>(parseLightSource());
         case Keyword::kw_fog:
             return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_media:
+            return parseMedia();
+        case Keyword::kw_density:
+            return parseDensity();
         case Keyword::kw_sky_sphere:
             return std::make_shared<const scene::SkySphere>(parseSkySphere());
         default:

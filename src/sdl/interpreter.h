@@ -43,10 +43,6 @@ struct VectorFunction;  // function_value.h
 // luminance of the colour), -1 for anything else (expressions.cpp).
 inline constexpr int kGrayItem = 5;
 int dotItemSlot(Keyword kw);
-// .gray of a colour's first three components.
-inline double grayOf(double r, double g, double b) {
-    return r * 0.297 + g * 0.589 + b * 0.114;
-}
 
 class Interpreter {
   public:
@@ -319,11 +315,13 @@ class Interpreter {
     // --- scene statements (scene_parser.cpp) ---
     bool parseStatement();  // a top-level item; false at end of file
     bool isObjectStart(const Token& t) const;
-    ObjectPtr parseObject();  // sphere { }, box { }, object { }...
-    bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
+    ObjectValue parseObject();  // sphere { }, box { }, object { }...
+    bool parseObjectModifier(ObjectValue& obj, std::optional<scene::Texture>& texture);
     std::shared_ptr<const scene::Shape> parseShape(const Token& kind);  // after '{'
-    void parseCsgChildren(const Token& kind, scene::Object& csg);       // union/merge/... objects
-    void parseLightGroupMembers(scene::Object& group);  // light_group's lights, objects
+    // union/merge/... objects, and the lights among them.
+    std::shared_ptr<const ObjectLights> parseCsgChildren(const Token& kind, scene::Object& csg);
+    // light_group's lights and objects.
+    std::shared_ptr<const ObjectLights> parseLightGroupMembers(scene::Object& group);
     // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
@@ -345,7 +343,7 @@ class Interpreter {
     // Hands the light sources written inside a placed object's CSG nodes
     // to the scene, and a light_group's to the primitives of its group
     // (scene::LightGroup); returns the object with them settled.
-    scene::ObjectRef placeObjectLights(const scene::ObjectRef& obj,
+    scene::ObjectRef placeObjectLights(const scene::ObjectRef& obj, const ObjectLights* lights,
                                        const std::shared_ptr<const scene::LightGroup>& group,
                                        const std::optional<bool>& outermostGlobal);
     TexturePtr parseTexture(const scene::Texture* base);
@@ -401,6 +399,11 @@ class Interpreter {
     void parseReflectionBlock(scene::Finish& finish);
     void parseIridescence(scene::Finish& finish);
     InteriorPtr parseInterior(const scene::Interior* base);
+    // media { } and density { } (parse_media.cpp).
+    MediaPtr parseMedia();
+    DensityPtr parseDensity();
+    DensityPtr parseDensityBody(Sym closing);
+    std::vector<scene::Pigment::MapEntry> parseDensityMap();
     // --- material (parse_material.cpp) ---
     MaterialPtr parseMaterial();
     // Whether the next token can start a float expression (for items whose
@@ -413,7 +416,7 @@ class Interpreter {
     scene::Fog parseFog();              // fog { }, also as a declared value
     scene::SkySphere parseSkySphere();  // sky_sphere { }, also as a declared value
     void parseRainbow();
-    void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;
+    void addTransform(ObjectValue& obj, scene::Texture* texture, const Transform& t) const;
 
     // --- text objects (parse_text.cpp) ---
     void parseTextObject(scene::Object& obj);  // after 'text {'

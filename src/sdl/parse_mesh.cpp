@@ -88,12 +88,7 @@ bool Interpreter::parseMeshSetting(MeshParts& parts) {
 }
 
 bool Interpreter::parseOptionalBool() {
-    const Token n = peek();
-    if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Keyword::kw_on) ||
-        n.is(Keyword::kw_off) || n.is(Keyword::kw_true) || n.is(Keyword::kw_false) ||
-        n.is(Keyword::kw_yes) || n.is(Keyword::kw_no) || n.isIdentifier())
-        return parseFloat() != 0;
-    return true;
+    return parseOptionalFloat(1.0) != 0;
 }
 
 // A triangle's texture inside mesh { }: texture { } (texture_list with

@@ -285,16 +285,16 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         // closing brace comes after the list entries (closeListPattern).
         expect(Sym::LBrace, "'{' after 'object'");
         const Token t = peek();
-        ObjectPtr obj;
+        scene::ObjectRef obj;
         if (t.isIdentifier()) {
             const Value* v = lookup(std::string(t.text));
             if (!v || !std::holds_alternative<ObjectPtr>(*v))
                 fail(t, fmt::format("expected an object in the object pattern, found {}",
                                     describeToken(t)));
             next();
-            obj = std::get<ObjectPtr>(*v);
+            obj = std::get<ObjectPtr>(*v)->object;
         } else {
-            obj = parseObject();
+            obj = parseObject().object;
         }
         pattern.object = std::move(obj);
     } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
@@ -536,12 +536,7 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
         }
         case Keyword::kw_poly_wave: {
             next();
-            double e = 1.0;
-            const Token n = peek();
-            if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
-                (n.isIdentifier() && lookup(std::string(n.text)) &&
-                 std::holds_alternative<double>(*lookup(std::string(n.text)))))
-                e = parseFloat();
+            const double e = parseOptionalFloat(1.0);
             editPattern([&](scene::Pattern& p) {
                 p.waveType = scene::WaveType::Poly;
                 p.exponent = e;
@@ -674,11 +669,11 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     // pigment is a scratch holder for the pattern and its chain.
     scene::Pigment holder;
     holder.setPattern(normal.pattern);
-    auto bumpSizeFollows = [&] {
-        const Token n = peek();
-        return n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
-               (n.isIdentifier() && lookup(std::string(n.text)) &&
-                std::holds_alternative<double>(*lookup(std::string(n.text))));
+    // An optional bump size follows the pattern, after an optional comma
+    // (povray: `gradient x, 5.6`; the fractals write it so).
+    auto parseBumpSize = [&] {
+        accept(Sym::Comma);
+        if (floatFollows()) normal.amount = parseFloat();
     };
     while (!peek().is(closing)) {
         const Token item = peek();
@@ -704,7 +699,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                 closeListPattern(holder.pattern());
                 if (normal.mapMode == scene::Normal::MapMode::List)
                     normal.mapMode = scene::Normal::MapMode::None;
-                if (bumpSizeFollows()) normal.amount = parseFloat();
+                parseBumpSize();
                 continue;
             }
             if (holder.pattern().isList()) {
@@ -728,10 +723,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             }
             if (normal.mapMode == scene::Normal::MapMode::List)
                 normal.mapMode = scene::Normal::MapMode::None;
-            // An optional bump size follows the pattern, after an optional
-            // comma (mandel ITERATIONS, BUMP_SIZE; `gradient x, 5.6` and
-            // `pigment_pattern { }, 0.5` in the examples).
-            if (accept(Sym::Comma) || bumpSizeFollows()) normal.amount = parseFloat();
+            parseBumpSize();
             continue;
         }
         switch (item.kw) {
