@@ -24,7 +24,10 @@ enum class Projection {
     Cylinder3,  // vertical cylinder, viewpoint moving along the axis
     Cylinder4,  // horizontal cylinder, viewpoint moving along the axis
     Spherical,
+    Mesh,  // mesh_camera: rays from mesh faces (scene/mesh_camera.h)
 };
+
+struct MeshCamera;
 
 // focal_blur settings. Blur is on when aperture > 0 and blurSamples > 0.
 struct FocalBlur {
@@ -56,6 +59,8 @@ struct Camera {
     // `normal { }` in the camera: bends every primary ray as a surface
     // normal is bent, with the pattern evaluated on the image plane.
     std::shared_ptr<const Normal> normal;
+    // mesh_camera's meshes and settings (Projection::Mesh only).
+    std::shared_ptr<const MeshCamera> mesh;
 };
 
 // What a camera { } block set, beyond the plain vectors stored directly.

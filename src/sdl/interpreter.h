@@ -28,6 +28,7 @@
 
 namespace frameray::scene {
 struct MeshTriangle;
+struct MeshCamera;
 }
 namespace frameray::image {
 struct SourceImage;
@@ -347,6 +348,8 @@ class Interpreter {
     bool parseTransformation(Transform& transform);
     Transform parseTransformBlock();
     scene::Camera parseCamera();      // parse_camera.cpp
+    // After 'mesh_camera': its block (parse_mesh_camera.cpp).
+    std::shared_ptr<scene::MeshCamera> parseMeshCamera(const Token& at);
     scene::Light parseLightSource();  // parse_light.cpp
     void placeLight(scene::Light light);
     // Hands the light sources written inside a placed object's CSG nodes

@@ -9,6 +9,7 @@
 
 #include "scene/csg.h"
 #include "scene/flat_shapes.h"
+#include "scene/mesh.h"
 #include "scene/quadric.h"
 #include "scene/revolved_shapes.h"
 #include "sdl/interpreter.h"
@@ -64,6 +65,15 @@ const ObjectKeyword* findObjectKeyword(Keyword kw) {
     for (const auto& o : kObjectKeywords)
         if (o.kw == kw) return &o;
     return nullptr;
+}
+
+// A mesh object: its shape, or (triangles with their own textures) a union
+// of its texture groups.
+bool isMeshObject(const scene::Object& obj) {
+    if (obj.shape) return dynamic_cast<const scene::MeshShape*>(obj.shape.get()) != nullptr;
+    return !obj.children.empty() &&
+           std::all_of(obj.children.begin(), obj.children.end(),
+                       [](const scene::ObjectRef& c) { return c && isMeshObject(*c); });
 }
 
 }  // namespace
@@ -198,6 +208,19 @@ ObjectValue Interpreter::parseObject() {
             parseTextObject(*obj);
             break;
         case Keyword::kw_mesh:
+            // mesh { DECLARED_MESH modifiers } copies the declared mesh as
+            // object { } would (povray 3.7; no triangles may follow).
+            if (const Token id = peek(); id.isIdentifier()) {
+                next();
+                const Value v = identifierValue(id);
+                const auto* src = std::get_if<ObjectPtr>(&v);
+                if (!src || !isMeshObject(*(*src)->object))
+                    fail(id, fmt::format("'{}' is not a mesh", id.text));
+                *obj = *(*src)->object;
+                if (obj->texture) texture = *obj->texture;
+                obj->texture.reset();
+                break;
+            }
             parseMesh(*obj);
             break;
         case Keyword::kw_mesh2:
