@@ -254,12 +254,13 @@ struct Texture {
     // unit normal n facing the viewer (slope and aoi read `surface`).
     // For a uv-mapped texture p is the surface's (u, v, 0), as uv is.
     Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv,
-                      const SurfaceInfo* surface = nullptr) const {
+                       const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
         if (normal->uvMapping) return normalize(normal->perturb(uv, n, surface));
         if (uvObjectTransform.isIdentity()) {
             const Vec3 tn = normalize(transform.inverse().normal(n));
-            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
+            return normalize(
+                transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
         }
         const Transform frame = transform.then(uvObjectTransform);
         const Vec3 tn = normalize(frame.inverse().normal(n));

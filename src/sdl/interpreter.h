@@ -343,7 +343,12 @@ class Interpreter {
                                        const std::shared_ptr<const scene::LightGroup>& group,
                                        const std::optional<bool>& outermostGlobal);
     TexturePtr parseTexture(const scene::Texture* base);
-    PigmentPtr parsePigment();
+    // pigment { }; inside a texture or object it edits the pigment there (base).
+    PigmentPtr parsePigment(const scene::Pigment* base = nullptr);
+    // pigment { } and normal { } editing those of `tex`, in the space the
+    // texture's transformations lead to (texture_items.cpp).
+    PigmentPtr parseTexturePigment(const scene::Texture& tex);
+    std::shared_ptr<const scene::Normal> parseTextureNormal(const scene::Texture& tex);
     // Pattern keywords and their modifiers inside pigment { }; false when
     // the next token is none of them.
     bool parsePigmentPatternItem(scene::Pigment& pigment);

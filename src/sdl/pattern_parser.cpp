@@ -142,10 +142,12 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
 
 }  // namespace
 
-PigmentPtr Interpreter::parsePigment() {
+PigmentPtr Interpreter::parsePigment(const scene::Pigment* base) {
     next();  // pigment
     expect(Sym::LBrace, "'{' after 'pigment'");
-    auto result = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
+    // povray edits the pigment a texture already has (measured:
+    // texture { T pigment { scale 0.3 } } scales T's checker).
+    auto result = std::make_shared<scene::Pigment>(base ? *base : *defaultTexture_.pigment);
     parsePigmentBody(*result, Sym::RBrace);
     expect(Sym::RBrace, "'}' closing 'pigment'");
     return result;
