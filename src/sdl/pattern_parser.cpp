@@ -201,6 +201,7 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
     checkPavement(result.pattern(), peek());
+    result.settleDefaultColorMap();
 }
 
 PigmentPtr Interpreter::parsePigmentListEntry() {
