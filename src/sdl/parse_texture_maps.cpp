@@ -368,7 +368,7 @@ void Interpreter::directiveDefault() {
                 defaultTexture_.pigment = parsePigment();
                 break;
             case Keyword::kw_normal:
-                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get());
+                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get(), &defaultNormal_);
                 break;
             case Keyword::kw_finish:
                 defaultTexture_.finish = *parseFinish(&defaultTexture_.finish);

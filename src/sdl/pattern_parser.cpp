@@ -625,18 +625,20 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
     }
 }
 
-std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base) {
+std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base,
+                                                              scene::Normal* settings) {
     next();  // normal
     expect(Sym::LBrace, "'{' after 'normal'");
-    auto normal = parseNormalBody(base, Sym::RBrace);
+    auto normal = parseNormalBody(base, Sym::RBrace, settings);
     expect(Sym::RBrace, "'}' closing 'normal'");
     return normal;
 }
 
 std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::Normal* base,
-                                                                  Sym closing) {
+                                                                  Sym closing,
+                                                                  scene::Normal* settings) {
     const NestingGuard nesting(*this, peek());
-    scene::Normal normal = base ? *base : scene::Normal{};
+    scene::Normal normal = base ? *base : defaultNormal_;
     bool havePattern = base != nullptr;
     // A declared normal to start from.
     if (const Token first = peek(); first.isIdentifier()) {
@@ -762,6 +764,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     }
     normal.pattern = holder.pattern();
     checkPavement(normal.pattern, peek());
+    if (settings) *settings = normal;
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
 }
