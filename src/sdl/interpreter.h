@@ -359,14 +359,22 @@ class Interpreter {
                                        const std::shared_ptr<const scene::LightGroup>& group,
                                        const std::optional<bool>& outermostGlobal);
     TexturePtr parseTexture(const scene::Texture* base);
-    PigmentPtr parsePigment();
+    // pigment { }; inside a texture or object it edits the pigment there (base).
+    PigmentPtr parsePigment(const scene::Pigment* base = nullptr);
+    // pigment { } and normal { } editing those of `tex`, in the space the
+    // texture's transformations lead to (texture_items.cpp).
+    PigmentPtr parseTexturePigment(const scene::Texture& tex);
+    std::shared_ptr<const scene::Normal> parseTextureNormal(const scene::Texture& tex);
     // Pattern keywords and their modifiers inside pigment { }; false when
     // the next token is none of them.
     bool parsePigmentPatternItem(scene::Pigment& pigment);
     PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
     scene::ColorMap parseColorMap();
     // --- patterns (pattern_parser.cpp) ---
-    std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
+    // normal { }; `settings` (when given) receives the block's settings even
+    // when it names no pattern (#default { normal { bump_size 2 } }).
+    std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base,
+                                                     scene::Normal* settings = nullptr);
     void directiveDefault();
     void parseFractalHead(const Token& kind, scene::FractalSettings& f);
     void parseFractalItem(const Token& item, scene::FractalSettings& f);
@@ -387,7 +395,8 @@ class Interpreter {
     void parseSlopeArguments(scene::Pattern& pattern);   // after 'slope'
     void parsePavementItem(scene::PavementSettings& s);  // pavement modifiers
     void checkPavement(const scene::Pattern& pattern, const Token& at);
-    std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
+    std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing,
+                                                         scene::Normal* settings = nullptr);
     // --- texture bodies and maps (parse_texture_maps.cpp) ---
     void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`
     // texture { } texture { }...: one layered texture, the first block
@@ -497,6 +506,10 @@ class Interpreter {
     // #default { texture | pigment | normal | finish }: where new textures,
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture_;
+    // What a normal without a base starts from: #default's normal settings,
+    // kept even without a pattern (measured: #default { normal { bump_size
+    // 1.5 } } makes normal { gradient x } and normal_map entries 1.5 deep).
+    scene::Normal defaultNormal_;
     bool defaultTextureSet_ = false;
     // The component textures of the blob parseBlob just read, for
     // parseObject to attach (empty when no component has one).

@@ -57,6 +57,7 @@ scene::Camera Interpreter::parseCamera() {
         cam = **cp;
         // povray 3.7 accepts only transformations after a camera identifier.
         scene::CameraEdits edits;
+        edits.sized = true;  // the declared camera has its final size
         for (;;) {
             if (accept(Sym::RBrace)) break;
             Transform step;
@@ -119,9 +120,11 @@ scene::Camera Interpreter::parseCamera() {
                 break;
             case Keyword::kw_right:
                 cam.right = parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_up:
                 cam.up = parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_sky:
                 cam.sky = parseVec3();

@@ -105,12 +105,13 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
                 continue;
             }
             if (at.is(Keyword::kw_pigment)) {
-                editTexture().pigment = parsePigment();
+                scene::Texture& tx = editTexture();
+                tx.pigment = parseTexturePigment(tx);
                 continue;
             }
             if (at.is(Keyword::kw_normal)) {
                 scene::Texture& tx = editTexture();
-                tx.normal = parseNormal(tx.normal.get());
+                tx.normal = parseTextureNormal(tx);
                 continue;
             }
             if (at.is(Keyword::kw_finish)) {

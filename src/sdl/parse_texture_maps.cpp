@@ -122,9 +122,9 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
                                    "texture of the map",
                                    item.text));
         if (item.is(Keyword::kw_pigment)) {
-            tex.pigment = parsePigment();
+            tex.pigment = parseTexturePigment(tex);
         } else if (item.is(Keyword::kw_normal)) {
-            tex.normal = parseNormal(tex.normal.get());
+            tex.normal = parseTextureNormal(tex);
         } else if (item.is(Keyword::kw_finish)) {
             tex.finish = *parseFinish(&tex.finish);
         } else if (parseTexturePatternItem(tex, draft)) {
@@ -380,7 +380,7 @@ void Interpreter::directiveDefault() {
                 defaultTexture_.pigment = parsePigment();
                 break;
             case Keyword::kw_normal:
-                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get());
+                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get(), &defaultNormal_);
                 break;
             case Keyword::kw_finish:
                 defaultTexture_.finish = *parseFinish(&defaultTexture_.finish);

@@ -142,10 +142,12 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
 
 }  // namespace
 
-PigmentPtr Interpreter::parsePigment() {
+PigmentPtr Interpreter::parsePigment(const scene::Pigment* base) {
     next();  // pigment
     expect(Sym::LBrace, "'{' after 'pigment'");
-    auto result = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
+    // povray edits the pigment a texture already has (measured:
+    // texture { T pigment { scale 0.3 } } scales T's checker).
+    auto result = std::make_shared<scene::Pigment>(base ? *base : *defaultTexture_.pigment);
     parsePigmentBody(*result, Sym::RBrace);
     expect(Sym::RBrace, "'}' closing 'pigment'");
     return result;
@@ -206,6 +208,7 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
     checkPavement(result.pattern(), peek());
+    result.settleDefaultColorMap();
 }
 
 PigmentPtr Interpreter::parsePigmentListEntry() {
@@ -634,18 +637,20 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
     }
 }
 
-std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base) {
+std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base,
+                                                              scene::Normal* settings) {
     next();  // normal
     expect(Sym::LBrace, "'{' after 'normal'");
-    auto normal = parseNormalBody(base, Sym::RBrace);
+    auto normal = parseNormalBody(base, Sym::RBrace, settings);
     expect(Sym::RBrace, "'}' closing 'normal'");
     return normal;
 }
 
 std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::Normal* base,
-                                                                  Sym closing) {
+                                                                  Sym closing,
+                                                                  scene::Normal* settings) {
     const NestingGuard nesting(*this, peek());
-    scene::Normal normal = base ? *base : scene::Normal{};
+    scene::Normal normal = base ? *base : defaultNormal_;
     bool havePattern = base != nullptr;
     // A declared normal to start from.
     if (const Token first = peek(); first.isIdentifier()) {
@@ -769,6 +774,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     }
     normal.pattern = holder.pattern();
     checkPavement(normal.pattern, peek());
+    if (settings) *settings = normal;
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
 }

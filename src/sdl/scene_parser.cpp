@@ -533,12 +533,14 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
         return *texture;
     };
     switch (tok.kw) {
-        case Keyword::kw_pigment:
-            editTexture().pigment = parsePigment();
+        case Keyword::kw_pigment: {
+            scene::Texture& tx = editTexture();
+            tx.pigment = parseTexturePigment(tx);
             return true;
+        }
         case Keyword::kw_normal: {
             scene::Texture& tx = editTexture();
-            tx.normal = parseNormal(tx.normal.get());
+            tx.normal = parseTextureNormal(tx);
             return true;
         }
         case Keyword::kw_finish: {
