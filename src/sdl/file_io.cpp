@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
@@ -130,7 +130,7 @@ void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
 
 }  // namespace
 
-void Interpreter::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
+void Reader::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty())
         fail(at, refusal);
     // Scene files, data, images and fonts are read whole: a device or pipe
@@ -141,12 +141,12 @@ void Interpreter::checkReadable(const fs::path& path, const std::string& name, c
              fmt::format("cannot read '{}': not a regular file (a folder, device or pipe)", name));
 }
 
-void Interpreter::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
+void Reader::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty())
         fail(at, refusal);
 }
 
-void Interpreter::directiveFopen(const Token& at) {
+void Reader::directiveFopen(const Token& at) {
     const std::string id = expectIdentifier();
     const std::string name = parsePathname();
     const Token mode = next();
@@ -190,28 +190,27 @@ void Interpreter::directiveFopen(const Token& at) {
                                    describeToken(mode)));
     }
     openFiles_.push_back(handle);
-    declare(id, FilePtr(handle), false);
+    symbols_.declare(id, FilePtr(handle), false);
 }
 
-void Interpreter::directiveFclose(const Token& at) {
+void Reader::directiveFclose(const Token& at) {
     (void)at;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     // Closing a file that reached its end (and so was undefined) is fine.
     if (!v) return;
     if (!std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("'{}' is a {}, not a file identifier", id, valueKindName(*v)));
     std::get<FilePtr>(*v)->out.close();
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-        if (it->erase(id)) break;
+    symbols_.undefine(id);
 }
 
-void Interpreter::directiveRead(const Token& at) {
+void Reader::directiveRead(const Token& at) {
     expect(Sym::LParen, "'('");
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     if (!v)
         fail(idToken,
              fmt::format(
@@ -229,7 +228,7 @@ void Interpreter::directiveRead(const Token& at) {
         ArrayPtr array;
         size_t index = 0;
         if (peek().is(Sym::LBracket)) {
-            Value* a = find(name);
+            Value* a = symbols_.find(name);
             if (!a || !std::holds_alternative<ArrayPtr>(*a))
                 fail(target, fmt::format("'{}' is not an array", name));
             array = std::get<ArrayPtr>(*a);
@@ -244,25 +243,23 @@ void Interpreter::directiveRead(const Token& at) {
         if (array)
             setArrayElement(*array, index, std::move(item), target);
         else
-            declare(name, std::move(item), false);
+            symbols_.declare(name, std::move(item), false);
     }
     expect(Sym::RParen, "')'");
     // At the end of the data the file identifier becomes undefined, which
     // is how scenes loop: #while (defined(F)) #read (F, X) ... #end
     skipSeparators(*file, file->pos);
-    if (file->pos >= file->content.size())
-        for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-            if (it->erase(id)) break;
+    if (file->pos >= file->content.size()) symbols_.undefine(id);
 }
 
-void Interpreter::directiveWrite(const Token& at) {
+void Reader::directiveWrite(const Token& at) {
     (void)at;
     expect(Sym::LParen, "'('");
     // Inside the parentheses directives run as anywhere else.
     cursors_.back().inDirective = false;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     if (!v || !std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("expected a file identifier opened for writing, found '{}'", id));
     const FilePtr file = std::get<FilePtr>(*v);
@@ -304,7 +301,7 @@ void Interpreter::directiveWrite(const Token& at) {
     expect(Sym::RParen, "')'");
 }
 
-void Interpreter::closeAllFiles() {
+void Reader::closeAllFiles() {
     for (const FilePtr& f : openFiles_)
         if (f->out.is_open()) f->out.close();
     openFiles_.clear();
