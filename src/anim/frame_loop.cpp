@@ -49,7 +49,7 @@ using options::TextStream;
 
 namespace {
 
-const fs::path kDefaultLibrary = "/usr/share/povray-3.7/include";
+const fs::path kDefaultLibrary = options::kStandardIncludeFolder;
 
 sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& seq,
                              const FrameSpec& f) {
@@ -117,12 +117,11 @@ std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq)
 // Temporary files left by a run that was killed mid-write: of the frames,
 // of sequence.json and of the journal (rewritten when a run resumes).
 void removeStaleTemporaries(const Sequence& seq) {
+    // Every frame of a sequence is in one folder; the journal beside them.
     std::set<fs::path> folders;
+    const fs::path frameFolder = seq.frames.front().output.parent_path();
+    folders.insert(frameFolder.empty() ? fs::path(".") : frameFolder);
     std::set<std::string> names{seq.statisticsName};
-    for (const FrameSpec& f : seq.frames) {
-        folders.insert(f.output.parent_path().empty() ? fs::path(".") : f.output.parent_path());
-        names.insert(f.output.filename().string());
-    }
     if (!seq.journal.empty()) {
         folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
                                                          : seq.journal.parent_path());
@@ -132,15 +131,13 @@ void removeStaleTemporaries(const Sequence& seq) {
         std::error_code ec;
         for (const auto& entry : fs::directory_iterator(dir, ec)) {
             const std::string name = entry.path().filename().string();
-            if (name.empty() || name[0] != '.') continue;
-            for (const std::string& target : names) {
-                long pid = 0;
-                if (!image::isTemporaryFor(name, target, pid)) continue;
-                if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
-                    continue;  // alive
-                fs::remove(entry.path(), ec);
-                break;
-            }
+            long pid = 0;
+            std::string target;
+            if (!image::parseTemporaryName(name, target, pid)) continue;
+            if (!names.count(target) && !seq.frames.holdsImageNamed(target)) continue;
+            if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
+                continue;  // alive
+            fs::remove(entry.path(), ec);
         }
     }
 }
@@ -160,7 +157,8 @@ struct Job {
     size_t index = 0;     // position in the pipeline (order of stage 3)
     size_t position = 0;  // position in the sequence
     const FrameSpec* frame = nullptr;
-    Outcome stop;  // Kind::Stop
+    Outcome stop;    // Kind::Stop
+    FrameSpec spec;  // what `frame` points to
     std::unique_ptr<FrameLog> log;
     std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
     std::optional<scene::Scene> scene;
@@ -223,11 +221,12 @@ class Run {
     int execute() {
         if (o_.outputToFile && !seq_.frames.empty()) {
             std::error_code ec;
-            for (const FrameSpec& f : seq_.frames)
-                if (!f.output.parent_path().empty())
-                    fs::create_directories(f.output.parent_path(), ec);
-            if (!seq_.journal.parent_path().empty())
-                fs::create_directories(seq_.journal.parent_path(), ec);
+            // Every frame and the journal are in the same folder, created
+            // only when Output_File_Name names it as a folder ("dir/");
+            // main refuses a missing folder otherwise (checkOutputFolder).
+            if (const fs::path folder = seq_.frames.front().output.parent_path();
+                !folder.empty() && !o_.outputFile.empty() && o_.outputFile.back() == '/')
+                fs::create_directories(folder, ec);
             removeStaleTemporaries(seq_);
             journal_ =
                 std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
@@ -378,7 +377,10 @@ class Run {
         job->kind = kind;
         job->index = jobs_.size();
         job->position = position;
-        if (position < seq_.frames.size()) job->frame = &seq_.frames[position];
+        if (position < seq_.frames.size()) {
+            job->spec = seq_.frames[position];
+            job->frame = &job->spec;
+        }
         // Only the oldest frame in flight prints as it goes; the others
         // hold their messages until it is out.
         job->log = std::make_unique<FrameLog>(streams_, job->index == head_);
@@ -387,10 +389,16 @@ class Run {
         return *jobs_.back();
     }
 
-    Job* stopJob(Outcome outcome) {
+    // A job that ends the run; `frame` (kept in the job) is the one whose
+    // Pre_Frame_Command decided it, if any.
+    Job* stopJob(Outcome outcome, const FrameSpec* frame = nullptr) {
         inputDone_ = true;
         Job& job = newJob(Job::Kind::Stop, seq_.frames.size());
         job.stop = std::move(outcome);
+        if (frame) {
+            job.spec = *frame;
+            job.stop.frame = &job.spec;
+        }
         return &job;
     }
 
@@ -399,7 +407,7 @@ class Run {
         while (!inputDone_ && !decided_ && next_ < seq_.frames.size() && rendersLeft_ > 0) {
             if (stopRequested()) return stopJob({Outcome::Kind::UserAbort, "", nullptr});
             const size_t position = next_++;
-            const FrameSpec& frame = seq_.frames[position];
+            const FrameSpec frame = seq_.frames[position];
             if (o_.continueTrace && journal_) {
                 bool kept = false;
                 {
@@ -420,7 +428,8 @@ class Run {
                 case HookAction::UserAbort:
                     return stopJob({Outcome::Kind::UserAbort, "", nullptr});
                 case HookAction::Fatal:
-                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", &frame});
+                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", nullptr},
+                                   &frame);
             }
             Job& job = newJob(Job::Kind::Render, position);
             --rendersLeft_;

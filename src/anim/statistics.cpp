@@ -13,8 +13,8 @@ namespace {
 std::string jsonRays(const render::RayCounts& r) {
     return fmt::format(
         "{{\"camera\": {}, \"shadow\": {}, \"reflection\": {}, \"refraction\": {}, "
-        "\"transmission\": {}}}",
-        r.camera, r.shadow, r.reflection, r.refraction, r.transmission);
+        "\"transmission\": {}, \"media_samples\": {}}}",
+        r.camera, r.shadow, r.reflection, r.refraction, r.transmission, r.mediaSamples);
 }
 
 std::string jsonTests(const render::ShapeTestCounts& tests) {

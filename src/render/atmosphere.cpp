@@ -188,6 +188,16 @@ Color AtmosphereView::throughFogs(const Vec3& origin, const Vec3& d, double dept
     return Color(added + attenuation * seen.rgb, seen.filter, seen.transmit * grey(attenuation));
 }
 
+double fogLightTransmittance(const scene::Scene& scene, const Vec3& origin,
+                             const Vec3& unitDirection, double depth) {
+    double keep = 1.0;
+    for (const scene::Fog& fog : scene.atmosphere.fogs) {
+        if (!(std::fabs(fog.distance) > kEpsilon)) continue;
+        keep *= std::max(fogTransmittance(fog, origin, unitDirection, depth), fog.color.transmit);
+    }
+    return keep;
+}
+
 Color AtmosphereView::miss(const scene::Ray& ray) const {
     const Vec3 d = normalize(ray.direction);
     Color c = sky(d);

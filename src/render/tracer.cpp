@@ -86,6 +86,7 @@ Tracer::Tracer(const World& world, int quality)
       atmosphere_(world.scene(), quality >= 9),
       lighting_(LightingQuality::forQuality(quality)),
       secondaryRays_(quality >= 8),
+      media_(quality >= 9),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
       opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
@@ -128,14 +129,14 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
                                    ? atmosphere_.along(ray, kMissDepth / length(ray.direction), sky)
                                    : sky;
             *state.transmit = seen.transmit;
-            return seen.rgb;
+            return throughMedia(ray, 0.0, true, state, seen.rgb, counts);
         }
         // No fog for a ray that leaves the scene inside an object that is
         // not hollow (measured: the sky seen from inside an inverse plane).
         RGB sky = state.inside.allHollow() ? atmosphere_.miss(ray).rgb
                                            : atmosphere_.sky(normalize(ray.direction)).rgb;
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
-        return sky;
+        return throughMedia(ray, 0.0, true, state, sky, counts);
     }
     if (quickColours_) {
         const scene::Object& obj = *hit.object;
@@ -151,6 +152,7 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     } else {
         color = shade(ray, hit, state, counts);
     }
+    color = throughMedia(ray, hit.t, false, state, color, counts);
     // povray leaves out fog and rainbows along rays inside objects that
     // are not hollow (measured: a transmitting box 4 units deep in fog
     // shows the fog only in front of it and beyond it; inside a hollow
@@ -162,6 +164,32 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
         return seen.rgb;
     }
     return atmosphere_.along(ray, hit.t, Color(color)).rgb;
+}
+
+RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const State& state,
+                         const RGB& color, RayCounts& counts) const {
+    // Inside an object that is not hollow no media is sampled at all, not
+    // even that of the hollow containers around it (measured: a solid glass
+    // sphere inside a sphere of emitting media hides the media behind it).
+    if (!media_ || !state.inside.allHollow()) return color;
+    MediaSet set;
+    // Innermost first: the first media's sampling settings are used.
+    for (int i = state.inside.size() - 1; i >= 0; --i) {
+        const InteriorStack::Region& r = state.inside[i];
+        if (r.interior) set.add(r.interior->media);
+    }
+    set.add(scene_.atmosphere.media);
+    if (set.empty()) return color;
+    const double speed = length(ray.direction);
+    const scene::Ray unit{ray.origin, ray.direction * (1.0 / speed)};
+    const double depth = missed ? kMissDepth : t * speed;
+    const MediaResult m = integrateMedia(world_, lighting_, unit, depth, set, true,
+                                         counts.mediaSamples, counts.shadow);
+    if (state.transmit) {
+        const RGB& k = m.transmittance;
+        *state.transmit *= 0.297 * k.r + 0.589 * k.g + 0.114 * k.b;
+    }
+    return color * m.transmittance + m.light;
 }
 
 // +Q0/+Q1 (povray 3.7, measured): every surface in the colour of its

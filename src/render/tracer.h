@@ -10,6 +10,7 @@
 #include "render/atmosphere.h"
 #include "render/dispersion.h"
 #include "render/lighting.h"
+#include "render/media.h"
 #include "render/world.h"
 #include "util/color.h"
 
@@ -22,6 +23,7 @@ struct RayCounts {
     uint64_t reflection = 0;    // mirrored rays, including total internal reflection
     uint64_t refraction = 0;    // transmitted rays bent at a change of ior
     uint64_t transmission = 0;  // transmitted rays that go straight on (same ior both sides)
+    uint64_t mediaSamples = 0;  // points where media were evaluated (render/media.h)
 
     RayCounts& operator+=(const RayCounts& o) {
         camera += o.camera;
@@ -29,6 +31,7 @@ struct RayCounts {
         reflection += o.reflection;
         refraction += o.refraction;
         transmission += o.transmission;
+        mediaSamples += o.mediaSamples;
         return *this;
     }
 };
@@ -57,6 +60,7 @@ class InteriorStack {
     // fog only along such rays.
     bool allHollow() const;
     const Region* innermost() const { return size_ ? &regions_[size_ - 1] : nullptr; }
+    const Region& operator[](int i) const { return regions_[i]; }
     void push(const Region& r);
     void remove(const void* key);
 
@@ -99,6 +103,11 @@ class Tracer {
     };
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
+    // The media along the ray up to t (kMissDepth for a ray that hit
+    // nothing) over `color`: interior media of the hollow regions the ray
+    // is inside, and the scene's media where every region is hollow.
+    RGB throughMedia(const scene::Ray& ray, double t, bool missed, const State& state,
+                     const RGB& color, RayCounts& counts) const;
     RGB shade(const scene::Ray& ray, const Hit& hit, const State& state, RayCounts& counts) const;
     // p is where the surface is lit, texP where the texture is evaluated
     // (they differ inside a warped texture map); uv is the surface's
@@ -118,6 +127,7 @@ class Tracer {
     AtmosphereView atmosphere_;
     LightingQuality lighting_;
     bool secondaryRays_;
+    bool media_;                  // +Q9 and up, and the scene has media somewhere
     bool quickColours_;           // +Q0, +Q1
     bool quickColorPigments_;     // up to +Q5: a pigment's quick_color replaces its pattern
     bool opaqueSky_;              // alpha output sees the sky's own transmit (3.7 scenes)

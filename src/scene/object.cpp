@@ -54,6 +54,16 @@ void Object::transformBy(const Transform& t) {
         moved->transformBy(t);
         texture = moved;
     }
+    if (interior && !interior->media.empty()) {
+        // The media's densities move with the object.
+        auto moved = std::make_shared<Interior>(*interior);
+        for (auto& m : moved->media) {
+            auto media = std::make_shared<Media>(*m);
+            media->transformBy(t);
+            m = std::move(media);
+        }
+        interior = std::move(moved);
+    }
     for (auto& component : componentTextures) {
         if (!component) continue;
         auto moved = std::make_shared<Texture>(*component);

@@ -58,6 +58,12 @@ Value buildTexture(BuildContext& c) {
 Value buildNormal(BuildContext& c) {
     return NormalPtr(parseNormal(c, nullptr));
 }
+Value buildMedia(BuildContext& c) {
+    return parseMedia(c);
+}
+Value buildDensity(BuildContext& c) {
+    return parseDensity(c);
+}
 Value buildCamera(BuildContext& c) {
     return std::make_shared<const scene::Camera>(parseCamera(c));
 }
@@ -79,6 +85,9 @@ void placeLightValue(BuildContext& c, const Token&, Value v) {
 }
 void placeFog(BuildContext& c, const Token&, Value v) {
     c.scene.atmosphere.fogs.push_back(*std::get<FogPtr>(v));
+}
+void placeMedia(BuildContext& c, const Token&, Value v) {
+    c.scene.atmosphere.media.push_back(std::get<MediaPtr>(v));
 }
 void placeSkySphere(BuildContext& c, const Token& keyword, Value v) {
     if (c.scene.atmosphere.skySphere)
@@ -142,11 +151,12 @@ constexpr Builder kBuilders[] = {
     value(K::kw_light_source, buildLight, placeLightValue),
     value(K::kw_fog, buildFog, placeFog),
     value(K::kw_sky_sphere, buildSkySphere, placeSkySphere),
+    value(K::kw_media, buildMedia, placeMedia),
+    value(K::kw_density, buildDensity),
     // Top-level statements only.
     statement(K::kw_global_settings, sceneStatement<parseGlobalSettings>),
     statement(K::kw_background, sceneStatement<parseBackground>),
     statement(K::kw_rainbow, sceneStatement<parseRainbow>),
-    unsupportedStatement(K::kw_media),
     unsupportedStatement(K::kw_photons),
     unsupportedStatement(K::kw_radiosity),
 };

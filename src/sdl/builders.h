@@ -144,6 +144,9 @@ void parseDefaultDirective(BuildContext& c);  // #default { }, after `#default`
 FinishPtr parseFinish(BuildContext& c, const scene::Finish* base);
 InteriorPtr parseInterior(BuildContext& c, const scene::Interior* base);
 MaterialPtr parseMaterial(BuildContext& c);
+// media { } and density { } (parse_media.cpp), each at its keyword.
+MediaPtr parseMedia(BuildContext& c);
+DensityPtr parseDensity(BuildContext& c);
 
 // --- pigments, patterns, normals (pattern_parser.cpp, parse_image_map.cpp) ---
 PigmentPtr parsePigment(BuildContext& c);
@@ -160,6 +163,10 @@ void parsePatternKeyword(BuildContext& c, scene::Pigment& holder, bool inNormal 
 // this after reading a list pattern's entries.
 void closeListPattern(BuildContext& c, const scene::Pattern& pattern);
 bool parseTurbulenceItem(BuildContext& c, scene::Turbulence& turb);  // turbulence, octaves...
+// One modifier of a pattern (waves, frequency, phase, turbulence, warps,
+// the settings of brick, crackle, facets, fractals, pavement...), the same
+// wherever the pattern is used; false when the next token is none.
+bool parsePatternModifier(BuildContext& c, scene::Pattern& pattern);
 std::shared_ptr<const scene::Normal> parseNormal(BuildContext& c, const scene::Normal* base);
 std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scene::Normal* base,
                                                      Sym closing);

@@ -188,6 +188,10 @@ InteriorPtr parseInterior(BuildContext& c, const scene::Interior* base) {
     }
     for (;;) {
         if (r.accept(Sym::RBrace)) break;
+        if (r.peek().is(Keyword::kw_media)) {
+            in.media.push_back(parseMedia(c));
+            continue;
+        }
         const Token t = r.next();
         switch (t.kw) {
             case Keyword::kw_ior:
@@ -211,9 +215,6 @@ InteriorPtr parseInterior(BuildContext& c, const scene::Interior* base) {
                 break;
             case Keyword::kw_caustics:
                 in.caustics = r.parseFloat();
-                break;
-            case Keyword::kw_media:
-                r.unsupported(t, "media");
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)

@@ -149,6 +149,15 @@ void parseObjectCopyBody(BuildContext& c, const Token&, ObjectValue& object) {
         r.fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
     const Value v = r.identifierValue(id);
     const auto* src = std::get_if<ObjectPtr>(&v);
+    if (const auto* light = std::get_if<LightPtr>(&v)) {
+        // object { LIGHT ... }: a light that moves as an object, an empty
+        // union holding it (povray 3.7 allows it anywhere an object goes).
+        object.object->op = scene::CsgOp::Union;
+        auto lights = std::make_shared<ObjectLights>();
+        lights->lights.push_back(**light);
+        object.lights = std::move(lights);
+        return;
+    }
     if (!src) r.fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
     object.object = std::make_shared<scene::Object>(*(*src)->object);
     object.lights = (*src)->lights;

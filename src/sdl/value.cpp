@@ -32,6 +32,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
         const char* operator()(const MaterialPtr&) const { return "material"; }
+        const char* operator()(const MediaPtr&) const { return "media"; }
+        const char* operator()(const DensityPtr&) const { return "density"; }
     };
     return std::visit(Namer{}, v);
 }

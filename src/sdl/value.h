@@ -62,6 +62,13 @@ struct MaterialValue {
     InteriorPtr interior;
 };
 using MaterialPtr = std::shared_ptr<const MaterialValue>;
+using MediaPtr = std::shared_ptr<const scene::Media>;
+// density { }: a pigment-like pattern, kept apart from pigments so that a
+// declared density is only accepted where a density is.
+struct DensityValue {
+    PigmentPtr pigment;
+};
+using DensityPtr = std::shared_ptr<const DensityValue>;
 
 struct ArrayValue;
 struct FileHandle;
@@ -85,10 +92,11 @@ struct IdentifierAlias {
     std::string name;
 };
 
-using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
-                           FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
-                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr,
-                           SkySpherePtr, InteriorPtr, BlendMapPtr, NormalPtr, MaterialPtr>;
+using Value =
+    std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr, FinishPtr,
+                 TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr, ArrayPtr, FilePtr,
+                 SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr, InteriorPtr,
+                 BlendMapPtr, NormalPtr, MaterialPtr, MediaPtr, DensityPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other

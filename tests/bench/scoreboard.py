@@ -73,6 +73,18 @@ STILLS = [
     "advanced/woodbox.pov",
     "interior/foglayr.pov",
     "radiosity/cornell.pov",
+    # participating media (issue 25)
+    "interior/media/media1.pov",
+    "interior/media/media2.pov",
+    "interior/media/media3.pov",
+    "interior/media/media4.pov",
+    "interior/media/media5.pov",
+    "interior/media/hollow1.pov",
+    "interior/media/hollow2.pov",
+    "interior/media/hollow3.pov",
+    "interior/media/galaxy.pov",
+    "interior/media/micro.pov",
+    "advanced/mediasky.pov",
 ]
 
 IMAGE_SUFFIXES = (".png", ".tga", ".ppm", ".bmp", ".exr", ".hdr", ".jpg")
