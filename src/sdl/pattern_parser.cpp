@@ -117,6 +117,24 @@ std::optional<scene::PatternKind> patternKeyword(Keyword k) {
     }
 }
 
+// The wave keywords without arguments (poly_wave takes an exponent).
+std::optional<scene::WaveType> waveKeyword(Keyword kw) {
+    switch (kw) {
+        case Keyword::kw_ramp_wave:
+            return scene::WaveType::Ramp;
+        case Keyword::kw_triangle_wave:
+            return scene::WaveType::Triangle;
+        case Keyword::kw_sine_wave:
+            return scene::WaveType::Sine;
+        case Keyword::kw_scallop_wave:
+            return scene::WaveType::Scallop;
+        case Keyword::kw_cubic_wave:
+            return scene::WaveType::Cubic;
+        default:
+            return std::nullopt;
+    }
+}
+
 std::vector<Color> defaultListColors(scene::PatternKind kind) {
     using scene::PatternKind;
     const Color blue(RGB(0, 0, 1)), green(RGB(0, 1, 0)), red(RGB(1, 0, 0));
@@ -151,6 +169,8 @@ static scene::NoiseGenerator parseNoiseGenerator(BuildContext& c, const Token& a
 static void parsePigmentBody(BuildContext& c, scene::Pigment& result, Sym closing);
 static void parseSlopeArguments(BuildContext& c, scene::Pattern& pattern);
 static scene::Warp parseWarp(BuildContext& c);
+static bool parsePatternSetting(BuildContext& c, scene::Pattern& pattern);
+static void parsePavementItem(BuildContext& c, scene::PavementSettings& s);
 
 PigmentPtr parsePigment(BuildContext& c) {
     Reader& r = c.reader;
@@ -470,11 +490,6 @@ bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment) {
         }
         return true;
     }
-    auto editPattern = [&](auto&& edit) {
-        scene::Pattern p = pigment.pattern();
-        edit(p);
-        pigment.pattern() = p;
-    };
     switch (item.kw) {
         case Keyword::kw_color_map:
         case Keyword::kw_colour_map:
@@ -487,155 +502,125 @@ bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment) {
             r.next();
             pigment.setAverage();
             return true;
-        case Keyword::kw_brick_size: {
+        default:
+            return parsePatternModifier(c, pigment.pattern());
+    }
+}
+
+bool parsePatternModifier(BuildContext& c, scene::Pattern& pattern) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
+    if (const auto wave = waveKeyword(item.kw)) {
+        r.next();
+        pattern.waveType = *wave;
+        return true;
+    }
+    switch (item.kw) {
+        case Keyword::kw_brick_size:
             r.next();
-            const Vec3 v = r.parseVec3();
-            editPattern([&](scene::Pattern& p) { p.brickSize = v; });
+            pattern.brickSize = r.parseVec3();
             return true;
-        }
-        case Keyword::kw_mortar: {
+        case Keyword::kw_mortar:
             r.next();
-            const double m = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.mortar = m; });
+            pattern.mortar = r.parseFloat();
             return true;
-        }
-        case Keyword::kw_control0: {
+        case Keyword::kw_control0:
             r.next();
-            const double v = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.control0 = static_cast<float>(v); });
+            pattern.control0 = static_cast<float>(r.parseFloat());
             return true;
-        }
-        case Keyword::kw_control1: {
+        case Keyword::kw_control1:
             r.next();
-            const double v = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.control1 = static_cast<float>(v); });
+            pattern.control1 = static_cast<float>(r.parseFloat());
             return true;
-        }
-        case Keyword::kw_frequency: {
+        case Keyword::kw_frequency:
             r.next();
-            const double f = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.frequency = static_cast<float>(f); });
+            pattern.frequency = static_cast<float>(r.parseFloat());
             return true;
-        }
-        case Keyword::kw_phase: {
+        case Keyword::kw_phase:
             r.next();
-            const double f = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.phase = static_cast<float>(f); });
+            pattern.phase = static_cast<float>(r.parseFloat());
             return true;
-        }
-        case Keyword::kw_ramp_wave:
-        case Keyword::kw_triangle_wave:
-        case Keyword::kw_sine_wave:
-        case Keyword::kw_scallop_wave:
-        case Keyword::kw_cubic_wave: {
-            r.next();
-            const scene::WaveType w =
-                item.kw == Keyword::kw_ramp_wave       ? scene::WaveType::Ramp
-                : item.kw == Keyword::kw_triangle_wave ? scene::WaveType::Triangle
-                : item.kw == Keyword::kw_sine_wave     ? scene::WaveType::Sine
-                : item.kw == Keyword::kw_scallop_wave  ? scene::WaveType::Scallop
-                                                       : scene::WaveType::Cubic;
-            editPattern([&](scene::Pattern& p) { p.waveType = w; });
-            return true;
-        }
         case Keyword::kw_poly_wave: {
             r.next();
             const double e = r.parseOptionalFloat(1.0);
-            editPattern([&](scene::Pattern& p) {
-                p.waveType = scene::WaveType::Poly;
-                p.exponent = e;
-            });
+            pattern.waveType = scene::WaveType::Poly;
+            pattern.exponent = e;
             return true;
         }
         case Keyword::kw_number_of_sides:
         case Keyword::kw_number_of_tiles:
         case Keyword::kw_pattern:
-            if (pigment.pattern().kind != scene::PatternKind::Pavement) return false;
-            parsePavementItem(c, pigment.pattern().pavement);
-            return true;
         case Keyword::kw_exponent:
         case Keyword::kw_interior:
-        case Keyword::kw_exterior: {
-            if (pigment.pattern().kind == scene::PatternKind::Pavement &&
-                !item.is(Keyword::kw_exponent)) {
-                parsePavementItem(c, pigment.pattern().pavement);
-                return true;
-            }
-            if (pigment.pattern().kind != scene::PatternKind::Fractal) return false;
+        case Keyword::kw_exterior:
+        case Keyword::kw_form:
+            return parsePatternSetting(c, pattern);
+        case Keyword::kw_metric:
             r.next();
-            scene::FractalSettings f = pigment.pattern().fractal;
-            parseFractalItem(c, item, f);
-            editPattern([&](scene::Pattern& p) { p.fractal = f; });
+            pattern.crackle.metric = r.parseFloat();
             return true;
-        }
-        case Keyword::kw_form: {
-            if (pigment.pattern().kind == scene::PatternKind::Pavement) {
-                parsePavementItem(c, pigment.pattern().pavement);
-                return true;
-            }
+        case Keyword::kw_offset:
             r.next();
-            const Vec3 f = r.parseVec3();
-            editPattern([&](scene::Pattern& p) { p.crackle.form = f; });
+            pattern.crackle.offset = r.parseFloat();
             return true;
-        }
-        case Keyword::kw_metric: {
-            r.next();
-            const double m = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.crackle.metric = m; });
-            return true;
-        }
-        case Keyword::kw_offset: {
-            r.next();
-            const double o = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.crackle.offset = o; });
-            return true;
-        }
         case Keyword::kw_solid:
             r.next();
-            editPattern([&](scene::Pattern& p) { p.crackle.solid = true; });
+            pattern.crackle.solid = true;
             return true;
         case Keyword::kw_coords:
-        case Keyword::kw_size: {
-            if (pigment.pattern().kind != scene::PatternKind::Facets) return false;
+        case Keyword::kw_size:
+            // coords C tilts by C (the cell size stays `size`); measured:
+            // the coords value does not scale the cells.
+            if (pattern.kind != scene::PatternKind::Facets) return false;
             r.next();
-            const double v = r.parseFloat();
-            editPattern([&](scene::Pattern& p) {
-                // coords C tilts by C (the cell size stays `size`);
-                // measured: the coords value does not scale the cells.
-                if (item.kw == Keyword::kw_coords)
-                    p.facets.coords = v;
-                else
-                    p.facets.size = v;
-            });
+            if (item.is(Keyword::kw_coords))
+                pattern.facets.coords = r.parseFloat();
+            else
+                pattern.facets.size = r.parseFloat();
             return true;
-        }
-        case Keyword::kw_agate_turb: {
+        case Keyword::kw_agate_turb:
             r.next();
-            const double a = r.parseFloat();
-            editPattern([&](scene::Pattern& p) { p.agateTurb = a; });
+            pattern.agateTurb = r.parseFloat();
             return true;
-        }
-        case Keyword::kw_noise_generator: {
+        case Keyword::kw_noise_generator:
             r.next();
-            const scene::NoiseGenerator g = parseNoiseGenerator(c, item);
-            editPattern([&](scene::Pattern& p) { p.noiseGenerator = g; });
+            pattern.noiseGenerator = parseNoiseGenerator(c, item);
             return true;
-        }
-        case Keyword::kw_warp: {
+        case Keyword::kw_warp:
             r.next();
-            const scene::Warp w = parseWarp(c);
-            editPattern([&](scene::Pattern& p) { p.addWarp(w); });
+            pattern.addWarp(parseWarp(c));
             return true;
-        }
         default: {
-            scene::Pattern p = pigment.pattern();
-            scene::Turbulence turb = p.turbulence.value_or(scene::Turbulence{});
+            scene::Turbulence turb = pattern.turbulence.value_or(scene::Turbulence{});
             if (!parseTurbulenceItem(c, turb)) return false;
-            p.turbulence = turb;
-            pigment.pattern() = p;
+            pattern.turbulence = turb;
             return true;
         }
     }
+}
+
+// The modifiers whose meaning depends on the pattern kind: pavement's
+// settings, the fractals' exponent, interior and exterior, and form
+// (pavement's or crackle's).
+static bool parsePatternSetting(BuildContext& c, scene::Pattern& pattern) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
+    const bool pavement = pattern.kind == scene::PatternKind::Pavement;
+    if (pavement && !item.is(Keyword::kw_exponent)) {
+        parsePavementItem(c, pattern.pavement);
+        return true;
+    }
+    if (item.is(Keyword::kw_form)) {
+        r.next();
+        pattern.crackle.form = r.parseVec3();
+        return true;
+    }
+    if (pattern.kind != scene::PatternKind::Fractal || item.is(Keyword::kw_number_of_sides) ||
+        item.is(Keyword::kw_number_of_tiles) || item.is(Keyword::kw_pattern))
+        return false;
+    r.next();
+    parseFractalItem(c, item, pattern.fractal);
+    return true;
 }
 
 std::shared_ptr<const scene::Normal> parseNormal(BuildContext& c, const scene::Normal* base) {
