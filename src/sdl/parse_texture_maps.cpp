@@ -218,6 +218,7 @@ static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
         case Keyword::kw_pigment_map:
         case Keyword::kw_normal_map:
         case Keyword::kw_slope_map:
+        case Keyword::kw_image_map:  // povray: only in a pigment
             r.fail(item, fmt::format("'{}' is not allowed in a texture", item.text));
         default:
             break;

@@ -740,6 +740,7 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
             case Keyword::kw_color_map:
             case Keyword::kw_colour_map:
             case Keyword::kw_pigment_map:
+            case Keyword::kw_image_map:  // povray: only in a pigment
                 r.fail(item, fmt::format("'{}' is not allowed in a normal", item.text));
             default:
                 break;
