@@ -158,7 +158,7 @@ std::vector<scene::Pigment::MapEntry> parsePigmentMap(BuildContext& c);
 // A pattern keyword and its arguments (gradient's vector...), without a
 // colour list; `inNormal`: the pattern belongs to a normal (facets).
 bool isPatternKeyword(const Token& t);
-void parsePatternKeyword(BuildContext& c, scene::Pigment& holder, bool inNormal = false);
+void parsePatternKeyword(BuildContext& c, scene::Pattern& pattern, bool inNormal = false);
 // The object pattern's list entries sit inside its braces: callers call
 // this after reading a list pattern's entries.
 void closeListPattern(BuildContext& c, const scene::Pattern& pattern);
@@ -174,9 +174,12 @@ Value parsePatternFunction(BuildContext& c);  // function { pattern { } }, at `p
 // image_map / image_pattern in a pigment; false when the next token is
 // neither.
 bool parseImagePigmentItem(BuildContext& c, scene::Pigment& pigment);
-// bump_map into `normal`, or image_pattern into the pattern holder of a
-// normal being parsed; false when the next token is neither.
-bool parseImageNormalItem(BuildContext& c, scene::Normal& normal, scene::Pigment& holder);
+// image_pattern into `pattern` (a pigment's, a normal's, a texture
+// map's); false when the next token is not image_pattern.
+bool parseImagePatternItem(BuildContext& c, scene::Pattern& pattern);
+// bump_map into `normal`, or image_pattern into the pattern of a normal
+// being parsed; false when the next token is neither.
+bool parseImageNormalItem(BuildContext& c, scene::Normal& normal, scene::Pattern& pattern);
 // The block after image_map, image_pattern, bump_map or material_map
 // (`keyword`); bump_size is stored through `bumpSize` when given, a
 // material_map's textures are appended to `materials`.

@@ -437,18 +437,23 @@ bool parseImagePigmentItem(BuildContext& c, scene::Pigment& pigment) {
         pigment.setImageMap(parseImageBlock(c, item, nullptr));
         return true;
     }
-    if (item.is(Keyword::kw_image_pattern)) {
-        r.next();
-        scene::Pattern pattern = pigment.pattern();
-        pattern.kind = scene::PatternKind::Image;
-        pattern.image = parseImageBlock(c, item, nullptr);
-        pigment.setPattern(pattern);
-        return true;
-    }
-    return false;
+    scene::Pattern pattern = pigment.pattern();
+    if (!parseImagePatternItem(c, pattern)) return false;
+    pigment.setPattern(pattern);
+    return true;
 }
 
-bool parseImageNormalItem(BuildContext& c, scene::Normal& normal, scene::Pigment& holder) {
+bool parseImagePatternItem(BuildContext& c, scene::Pattern& pattern) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
+    if (!item.is(Keyword::kw_image_pattern)) return false;
+    r.next();
+    pattern.kind = scene::PatternKind::Image;
+    pattern.image = parseImageBlock(c, item, nullptr);
+    return true;
+}
+
+bool parseImageNormalItem(BuildContext& c, scene::Normal& normal, scene::Pattern& pattern) {
     Reader& r = c.reader;
     const Token item = r.peek();
     if (item.is(Keyword::kw_bump_map)) {
@@ -456,7 +461,7 @@ bool parseImageNormalItem(BuildContext& c, scene::Normal& normal, scene::Pigment
         normal.bumpMap = parseImageBlock(c, item, &normal.amount);
         return true;
     }
-    return item.is(Keyword::kw_image_pattern) && parseImagePigmentItem(c, holder);
+    return parseImagePatternItem(c, pattern);
 }
 
 }  // namespace frameray::sdl

@@ -161,7 +161,7 @@ static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
             if (tex.pigment && !tex.pigment->isSolid())
                 r.fail(item, "a texture with a pigment cannot take a pattern of textures");
             draft = std::make_shared<scene::TextureMap>();
-            if (!tex.transform.isIdentity()) draft->holder.transform(tex.transform);
+            if (!tex.transform.isIdentity()) draft->pattern.addTransform(tex.transform);
             tex.transform = Transform();
         }
         return *draft;
@@ -183,9 +183,7 @@ static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
             r.next();
             r.expect(Sym::LBrace, "'{' after 'tiles'");
             scene::TextureMap& map = patterned();
-            scene::Pattern pattern = map.holder.pattern();
-            pattern.kind = scene::PatternKind::Checker;
-            map.holder.setPattern(pattern);
+            map.pattern.kind = scene::PatternKind::Checker;
             map.mode = scene::TextureMap::Mode::List;
             // The first tile takes the checker's second cells (measured).
             map.entries.clear();
@@ -225,8 +223,8 @@ static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
     }
     if (isPatternKeyword(item)) {
         scene::TextureMap& map = patterned();
-        parsePatternKeyword(c, map.holder);
-        if (!map.holder.pattern().isList()) {
+        parsePatternKeyword(c, map.pattern);
+        if (!map.pattern.isList()) {
             if (map.mode == scene::TextureMap::Mode::List)
                 map.mode = scene::TextureMap::Mode::Values;
             return true;
@@ -235,18 +233,19 @@ static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
         // ones are the default texture.
         map.mode = scene::TextureMap::Mode::List;
         map.entries.clear();
-        const int count = scene::Pattern::listSize(map.holder.pattern().kind);
+        const int count = scene::Pattern::listSize(map.pattern.kind);
         for (int i = 0; i < count; ++i) {
             if (i > 0) r.accept(Sym::Comma);
             std::shared_ptr<const scene::Texture> entry = std::make_shared<const scene::Texture>();
             if (r.peek().is(Keyword::kw_texture)) entry = parseTexture(c, nullptr);
             map.entries.push_back({static_cast<double>(i), std::move(entry)});
         }
-        closeListPattern(c, map.holder.pattern());
+        closeListPattern(c, map.pattern);
         return true;
     }
-    // Pattern modifiers (turbulence, warps, wave types...).
-    return draft && parsePigmentPatternItem(c, draft->holder);
+    // image_pattern and the pattern modifiers (turbulence, warps, waves...).
+    return draft &&
+           (parseImagePatternItem(c, draft->pattern) || parsePatternModifier(c, draft->pattern));
 }
 
 static std::vector<scene::TextureMap::Entry> parseTextureMap(BuildContext& c) {

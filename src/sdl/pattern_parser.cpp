@@ -252,13 +252,12 @@ bool isPatternKeyword(const Token& t) {
     return patternKeyword(t.kw).has_value();
 }
 
-void parsePatternKeyword(BuildContext& c, scene::Pigment& pigment, bool inNormal) {
+void parsePatternKeyword(BuildContext& c, scene::Pattern& pattern, bool inNormal) {
     Reader& r = c.reader;
     const Token item = r.next();
     const scene::PatternKind kind = *patternKeyword(item.kw);
     if (kind == scene::PatternKind::Facets && !inNormal)
         r.fail(item, "'facets' can only be used in a normal");
-    scene::Pattern pattern = pigment.pattern();
     pattern.kind = kind;
     if (kind == scene::PatternKind::Gradient) {
         const Vec3 g = r.parseVec3();
@@ -335,7 +334,6 @@ void parsePatternKeyword(BuildContext& c, scene::Pigment& pigment, bool inNormal
     } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
         pattern.waveType = scene::WaveType::Triangle;  // their default wave
     }
-    pigment.setPattern(pattern);
 }
 
 // pavement's number_of_sides, number_of_tiles, pattern, exterior, interior
@@ -461,7 +459,9 @@ bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment) {
     const Token item = r.peek();
     if (parseImagePigmentItem(c, pigment)) return true;
     if (const auto kind = patternKeyword(item.kw)) {
-        parsePatternKeyword(c, pigment);
+        scene::Pattern pattern = pigment.pattern();
+        parsePatternKeyword(c, pattern);
+        pigment.setPattern(pattern);
         if (pigment.pattern().isList()) {
             // Up to listSize colours or pigments, optionally comma-separated;
             // missing ones keep the pattern's defaults.
@@ -652,10 +652,8 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
     // nothing (measured).
     const bool uvFrozen = normal.uvMapping && havePattern;
     if (r.accept(Keyword::kw_uv_mapping)) normal.uvMapping = true;
-    // The pattern and its modifiers are parsed like a pigment's; the
-    // pigment is a scratch holder for the pattern and its chain.
-    scene::Pigment holder;
-    holder.setPattern(normal.pattern);
+    // The pattern with its chain of transformations and warps.
+    scene::Pattern& pattern = normal.pattern;
     // An optional bump size follows the pattern, after an optional comma
     // (povray: `gradient x, 5.6`; the fractals write it so).
     auto parseBumpSize = [&] {
@@ -667,7 +665,7 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
         Transform step;
         if (r.parseTransformation(step)) {
             if (uvFrozen) continue;
-            holder.transform(step);
+            pattern.addTransform(step);
             // The normals of a map move with it (as a texture map's do).
             for (auto& e : normal.map) {
                 if (!e.normal) continue;
@@ -678,22 +676,22 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
             continue;
         }
         if (patternKeyword(item.kw)) {
-            parsePatternKeyword(c, holder, true);
+            parsePatternKeyword(c, pattern, true);
             havePattern = true;
-            if (holder.pattern().isList() && !r.peek().is(Keyword::kw_normal)) {
+            if (pattern.isList() && !r.peek().is(Keyword::kw_normal)) {
                 // A list pattern without normals is a bumpy pattern of its
                 // own: its index is sampled, so only the cells' edges tilt.
-                closeListPattern(c, holder.pattern());
+                closeListPattern(c, pattern);
                 if (normal.mapMode == scene::Normal::MapMode::List)
                     normal.mapMode = scene::Normal::MapMode::None;
                 parseBumpSize();
                 continue;
             }
-            if (holder.pattern().isList()) {
+            if (pattern.isList()) {
                 // A list pattern takes one normal per index.
                 normal.mapMode = scene::Normal::MapMode::List;
                 normal.map.clear();
-                const int count = scene::Pattern::listSize(holder.pattern().kind);
+                const int count = scene::Pattern::listSize(pattern.kind);
                 for (int i = 0; i < count; ++i) {
                     if (i > 0) r.accept(Sym::Comma);
                     if (!r.peek().is(Keyword::kw_normal)) break;
@@ -705,7 +703,7 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
                 }
                 while (static_cast<int>(normal.map.size()) < count)
                     normal.map.push_back({static_cast<double>(normal.map.size()), nullptr});
-                closeListPattern(c, holder.pattern());
+                closeListPattern(c, pattern);
                 continue;
             }
             if (normal.mapMode == scene::Normal::MapMode::List)
@@ -745,17 +743,16 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
             default:
                 break;
         }
-        if (parseImageNormalItem(c, normal, holder)) {
+        if (parseImageNormalItem(c, normal, pattern)) {
             havePattern = true;
             continue;
         }
-        if (parsePigmentPatternItem(c, holder)) continue;
+        if (parsePatternModifier(c, pattern)) continue;
         if (item.kind == TokenKind::Word && item.kw != Keyword::None)
             r.unsupported(item, fmt::format("'{}' in normal", item.text));
         r.fail(item, fmt::format("expected a normal item or '{}', found {}",
                                  closing == Sym::RBrace ? "}" : "]", describeToken(item)));
     }
-    normal.pattern = holder.pattern();
     checkPavement(c, normal.pattern, r.peek());
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
