@@ -243,7 +243,8 @@ World::World(const scene::Scene& scene)
 }
 
 void World::add(const scene::Object* obj) {
-    if (obj->noImage && obj->noShadow && obj->noReflection) return;  // invisible to every ray kind
+    if (obj->noImage && obj->noShadow && obj->noReflection && obj->noRadiosity)
+        return;  // invisible to every ray kind
     // A plain union's first hit is its nearest child's: its children join
     // the BVH one by one (povray splits unions the same way), instead of
     // a union of thousands being searched child by child.

@@ -21,6 +21,8 @@ bool visibleTo(const Object& primitive, RayKind kind) {
             return !primitive.noReflection;
         case RayKind::Shadow:
             return !primitive.noShadow;
+        case RayKind::Radiosity:
+            return !primitive.noRadiosity;
         case RayKind::Any:
             return true;
     }
@@ -49,6 +51,11 @@ void Object::transformBy(const Transform& t) {
     for (ObjectRef& child : children) child = transformedCopy(child, t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
+    if (interiorTexture) {
+        auto moved = std::make_shared<Texture>(*interiorTexture);
+        moved->transformBy(t);
+        interiorTexture = std::move(moved);
+    }
     if (texture) {
         auto moved = std::make_shared<Texture>(*texture);
         moved->transformBy(t);

@@ -31,6 +31,7 @@ enum class RayKind {
     Camera,      // skips no_image surfaces (also rays refracted from camera rays)
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
+    Radiosity,   // skips no_radiosity surfaces
     Any,         // sees everything (bounding tests)
 };
 
@@ -59,6 +60,10 @@ struct Object {
     // Null: the nearest ancestor's texture, finally the default texture
     // (resolved once the object is placed in the scene, see csg.h).
     std::shared_ptr<const Texture> texture;
+    // interior_texture: the texture of the surface's inner side (seen where
+    // the outward normal faces away from the viewer). Null: the nearest
+    // ancestor's, finally `texture` (povray 3.7, measured).
+    std::shared_ptr<const Texture> interiorTexture;
     // A blob whose components carry textures: one per component (null: the
     // object's own texture), blended at each point by how much each
     // component adds to the field there (povray 3.7: weights |field_i| /
@@ -76,6 +81,10 @@ struct Object {
     bool noShadow = false;
     bool noImage = false;
     bool noReflection = false;
+    bool noRadiosity = false;  // radiosity rays pass through it
+    // radiosity { importance }: the share of `count` a sample on it shoots;
+    // 0: not given (1).
+    double radiosityImportance = 0;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
     bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
 

@@ -101,6 +101,7 @@ std::shared_ptr<const scene::Shape> parseDisc(BuildContext& c, const Token& kind
 std::shared_ptr<const scene::Shape> parseTriangle(BuildContext& c, const Token& kind);
 std::shared_ptr<const scene::Shape> parseSmoothTriangle(BuildContext& c, const Token& kind);
 std::shared_ptr<const scene::Shape> parseQuadric(BuildContext& c, const Token& kind);
+std::shared_ptr<const scene::Shape> parsePolygon(BuildContext& c, const Token& kind);
 std::shared_ptr<const scene::Shape> parsePolynomialShape(BuildContext& c, const Token& kind);
 void parseBlobBody(BuildContext& c, const Token& kind, ObjectValue& blob);
 void applySturm(BuildContext& c, scene::Object& obj, const Token& at);  // after `sturm`
@@ -127,6 +128,10 @@ scene::Fog parseFog(BuildContext& c);
 scene::SkySphere parseSkySphere(BuildContext& c);
 void parseRainbow(BuildContext& c);
 void parseGlobalSettings(BuildContext& c);  // parse_global_settings.cpp
+// radiosity (parse_radiosity.cpp): the global_settings block, after the
+// keyword (`start`), and an object's radiosity { importance }, at the keyword.
+void parseRadiositySettings(BuildContext& c, const Token& start);
+void parseObjectRadiosity(BuildContext& c, scene::Object& obj);
 
 // --- textures (parse_texture_maps.cpp, parse_finish.cpp, parse_material.cpp) ---
 TexturePtr parseTexture(BuildContext& c, const scene::Texture* base);
@@ -135,7 +140,9 @@ TexturePtr parseTexture(BuildContext& c, const scene::Texture* base);
 scene::Texture parseLayeredTextures(BuildContext& c, const scene::Texture* base = nullptr,
                                     bool inDeclaration = false);
 Value parseBlendMapValue(BuildContext& c);  // a declared map
-double parseMapValue(BuildContext& c);      // an entry's value, ending before a '<'
+// An entry's value, ending before a '<'; 1 when an average map's entry
+// leaves its weight out (`weightMayBeOmitted`: pigment, normal, texture maps).
+double parseMapValue(BuildContext& c, bool weightMayBeOmitted = false);
 // After a map's '{': a declared map of that kind (consumed), or null.
 const BlendMapValue* blendMapIdentifier(BuildContext& c, BlendMapValue::Kind kind);
 std::vector<scene::Normal::MapEntry> parseNormalMap(BuildContext& c);

@@ -25,6 +25,9 @@ void Reader::runDirective() {
     const NestingGuard nesting(*this, hash);
     ++cursors_.back().pos;
     const Token word = rawPeek();
+    // povray drops a '#' that a symbol follows, silently (the example
+    // language/image_size.pov has `look_at <0,2,0>#` before the camera's '}').
+    if (word.kind == TokenKind::Symbol) return;
     if (word.kind != TokenKind::Word || word.kw == Keyword::None)
         fail(word, fmt::format("expected a directive after '#', found {}", describeToken(word)));
     ++cursors_.back().pos;
@@ -556,13 +559,14 @@ void Reader::invokeMacro(const Token& nameToken, const Macro& macro) {
     SymbolTable::Scope args;
     expectAfter(Sym::LParen, "'('", macro.name);
     size_t count = 0;
-    if (!peek().is(Sym::RParen)) {
-        do {
-            Value v = bareIdentifierArgument();
-            if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
-            if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
-            ++count;
-        } while (accept(Sym::Comma) && !peek().is(Sym::RParen));  // M(1, 2,) as povray
+    // The commas between arguments are optional in povray (`M(<1,0,0> .5)`),
+    // and a trailing one is ignored (`M(1, 2,)`).
+    while (!peek().is(Sym::RParen)) {
+        Value v = bareIdentifierArgument();
+        if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
+        if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
+        ++count;
+        accept(Sym::Comma);
     }
     expect(Sym::RParen, "')'");
     if (count != macro.params.size())

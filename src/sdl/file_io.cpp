@@ -265,7 +265,9 @@ void Reader::directiveWrite(const Token& at) {
     const FilePtr file = std::get<FilePtr>(*v);
     if (!file->writing)
         fail(idToken, fmt::format("file '{}' was opened for reading, not writing", file->name));
-    while (accept(Sym::Comma)) {
+    // povray takes the commas between the items as optional, the one after
+    // the file identifier too (`#write(F Header)` in the portfolio), silently.
+    for (accept(Sym::Comma); !peek().is(Sym::RParen); accept(Sym::Comma)) {
         const BinaryFormat* binary = nullptr;
         for (const auto& f : kBinaryFormats)
             if (peek().is(f.kw)) binary = &f;

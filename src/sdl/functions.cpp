@@ -48,7 +48,7 @@ class VectorComponent final : public NativeFunction {
 
 }  // namespace
 
-// Recursive-descent compiler over the interpreter's token stream, with the
+// Recursive-descent compiler over the reader's token stream, with the
 // same precedence as parse-time expressions.
 class FunctionCompiler {
   public:
@@ -530,10 +530,14 @@ Value Reader::parseInternalFunctionBody() {
 // A `function { ... }` of x, y, z that the renderer will evaluate (patterns,
 // isosurfaces, height fields): a body frameray cannot run yet stops here
 // rather than mid-render.
-std::shared_ptr<const CompiledFunction> Reader::parseXyzFunction(const Token& at) {
+std::shared_ptr<const CompiledFunction> Reader::parseXyzFunction(const Token& at,
+                                                                 bool colourAsGray) {
     const Value body = parseFunctionBody({"x", "y", "z"});
     const FunctionValue& fn = *std::get<FunctionPtr>(body);
     if (!fn.unsupported.empty()) unsupported(at, fn.unsupported);
+    if (fn.vector && fn.vector->isColor && colourAsGray && fn.vector->paramCount == 3)
+        return nativeBody("pigment function", 3,
+                          std::make_shared<VectorComponent>(fn.vector, kGrayItem));
     if (fn.vector)
         fail(at,
              fmt::format(

@@ -54,6 +54,9 @@ void parseGlobalSettings(BuildContext& c) {
                 c.textCharset = found->second;
                 break;
             }
+            case Keyword::kw_radiosity:
+                parseRadiositySettings(c, t);
+                break;
             case Keyword::kw_hf_gray_16:
                 r.parseOptionalBool();
                 break;

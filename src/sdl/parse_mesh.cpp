@@ -344,7 +344,7 @@ void parseHeightFieldBody(BuildContext& c, const Token&, ObjectValue& object) {
                                w, h, r.frame().limits.arrayElements));
         width = static_cast<int>(w);
         height = static_cast<int>(h);
-        const std::shared_ptr<const CompiledFunction> fn = r.parseXyzFunction(source);
+        const std::shared_ptr<const CompiledFunction> fn = r.parseXyzFunction(source, true);
         heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
         // Sample (i, j) sees x = i / (W - 1), y = j / (H - 1) (j = 0 is the
         // row at z = 1, as an image's top row); the value is kept as povray
@@ -376,15 +376,21 @@ void parseHeightFieldBody(BuildContext& c, const Token&, ObjectValue& object) {
             case Keyword::kw_hdr:
             case Keyword::kw_sys:
             case Keyword::kw_gif:
+            case Keyword::kw_pot:
                 r.next();
                 break;
             case Keyword::kw_iff:
                 r.unsupported(source, "iff height fields");
             default:
+                // povray 3.7 takes a bare file name too, its type read from
+                // the file (the example advanced/crater/crater.pov); a
+                // literal only, not a string identifier (measured).
+                if (source.kind == TokenKind::String) break;
                 r.fail(source,
                        fmt::format("expected an image type or 'function' in height_field, found {}",
                                    describeToken(source)));
         }
+        const bool pot = source.is(Keyword::kw_pot);
         const Token nameAt = r.peek();
         const std::string name = r.parsePathname();
         // The same per-frame image cache as image maps (parse_image_map.cpp).
@@ -394,7 +400,24 @@ void parseHeightFieldBody(BuildContext& c, const Token&, ObjectValue& object) {
             r.fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
         width = img.width;
         height = img.height;
-        if (source.isPalette()) {
+        if (pot) {
+            // Fractint's continuous-potential file: a GIF twice as wide as
+            // the field, each row's left half the heights' high bytes and
+            // its right half their low bytes (seed 003: "a GIF file with a
+            // 16 bit palette").
+            if (!source.isPalette() || img.width % 2 != 0)
+                r.fail(nameAt, "a pot file must be a GIF image of even width");
+            width = img.width / 2;
+            heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
+            for (int j = 0; j < height; ++j)
+                for (int i = 0; i < width; ++i) {
+                    const size_t row = static_cast<size_t>(j) * static_cast<size_t>(img.width);
+                    heights[static_cast<size_t>(j) * static_cast<size_t>(width) +
+                            static_cast<size_t>(i)] =
+                        static_cast<uint16_t>(source.indices[row + static_cast<size_t>(i)] * 256 +
+                                              source.indices[row + static_cast<size_t>(i + width)]);
+                }
+        } else if (source.isPalette()) {
             // Palette images (GIF): the colour index is the height, as the
             // high byte (seed 003: index 0 lowest, 255 highest).
             heights.resize(source.indices.size());

@@ -277,6 +277,9 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         case Keyword::kw_interior:
             obj.interior = parseInterior(c, obj.interior.get());
             return true;
+        case Keyword::kw_interior_texture:  // a texture body, from the default texture
+            obj.interiorTexture = parseTexture(c, nullptr);
+            return true;
         case Keyword::kw_material: {
             // Its texture replaces the object's; its interior too.
             const MaterialPtr m = parseMaterial(c);
@@ -311,6 +314,13 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         case Keyword::kw_no_reflection:
             r.next();
             obj.noReflection = true;
+            return true;
+        case Keyword::kw_no_radiosity:
+            r.next();
+            obj.noRadiosity = true;
+            return true;
+        case Keyword::kw_radiosity:
+            parseObjectRadiosity(c, obj);
             return true;
         case Keyword::kw_hierarchy:
             r.next();

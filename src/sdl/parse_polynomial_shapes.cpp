@@ -48,7 +48,7 @@ std::shared_ptr<const scene::Shape> parsePolynomialShape(BuildContext& c, const 
     switch (kind.kw) {
         case Keyword::kw_torus: {
             const double major = r.parseFloat();
-            r.expect(Sym::Comma, "',' between the major and minor radius");
+            r.accept(Sym::Comma);  // optional, as in povray
             const double minor = r.parseFloat();
             return std::make_shared<scene::Torus>(major, minor, false);
         }
@@ -140,9 +140,9 @@ void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
             r.expect(Sym::LBrace, "'{' after 'sphere'");
             Component comp;
             comp.a = r.parseVec3();
-            r.expect(Sym::Comma, "',' between the centre and the radius");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.radius = r.parseFloat();
-            r.expect(Sym::Comma, "',' between the radius and the strength");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.strength = parseStrength();
             parseComponentModifiers(comp, "sphere");
             components.push_back(comp);
@@ -151,11 +151,11 @@ void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
             Component comp;
             comp.kind = Component::Kind::Cylinder;
             comp.a = r.parseVec3();
-            r.expect(Sym::Comma, "',' between the ends");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.b = r.parseVec3();
-            r.expect(Sym::Comma, "',' between the end and the radius");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.radius = r.parseFloat();
-            r.expect(Sym::Comma, "',' between the radius and the strength");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.strength = parseStrength();
             parseComponentModifiers(comp, "cylinder");
             components.push_back(comp);
@@ -163,9 +163,9 @@ void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
             // The 2.0 form: component Strength, Radius, <Centre>.
             Component comp;
             comp.strength = r.parseFloat();
-            r.expect(Sym::Comma, "',' between the strength and the radius");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.radius = r.parseFloat();
-            r.expect(Sym::Comma, "',' between the radius and the centre");
+            r.accept(Sym::Comma);  // optional, as in povray
             comp.a = r.parseVec3();
             components.push_back(comp);
             textures.push_back(nullptr);

@@ -70,7 +70,10 @@ std::shared_ptr<const scene::Shape> parseSor(BuildContext& c, const Token& kind)
         const Token at = r.peek();
         const VectorValue v = r.parseVector();
         points.push_back({v.v[0], v.v[1]});
-        if (i > 0 && !(points[i].v > points[i - 1].v))
+        // Only the points the curve passes through must rise; the first
+        // and last only steer its slope and may sit anywhere (measured:
+        // the example objects/sor1.pov repeats a height there).
+        if (i >= 2 && i <= count - 2 && !(points[i].v > points[i - 1].v))
             r.fail(at, "Incorrect point in surface of revolution: heights must increase");
     }
     bool open = false;
@@ -103,9 +106,9 @@ std::shared_ptr<const scene::Shape> parsePrism(BuildContext& c, const Token& kin
         }
     }
     const double h1 = r.parseFloat();
-    r.expect(Sym::Comma, "',' between the prism's heights");
+    r.accept(Sym::Comma);  // optional, as in povray
     const double h2 = r.parseFloat();
-    r.expect(Sym::Comma, "',' after the prism's heights");
+    r.accept(Sym::Comma);  // optional, as in povray
     const Token countAt = r.peek();
     const int count = static_cast<int>(r.parseFloat());
     const int minimum =
@@ -153,14 +156,14 @@ static void parseContainedBy(BuildContext& c, bool& sphere, Vec3& boxLo, Vec3& b
     r.expect(Sym::LBrace, "'{' after the container's kind");
     if (shape.is(Keyword::kw_box)) {
         const Vec3 a = r.parseVec3();
-        r.expect(Sym::Comma, "',' between the corners");
+        r.accept(Sym::Comma);  // optional, as in povray
         const Vec3 b = r.parseVec3();
         sphere = false;
         boxLo = vmin(a, b);
         boxHi = vmax(a, b);
     } else if (shape.is(Keyword::kw_sphere)) {
         center = r.parseVec3();
-        r.expect(Sym::Comma, "',' between the centre and the radius");
+        r.accept(Sym::Comma);  // optional, as in povray
         radius = std::fabs(r.parseFloat());
         sphere = true;
     } else {
@@ -256,7 +259,7 @@ std::shared_ptr<const scene::Shape> parseParametric(BuildContext& c, const Token
         r.accept(Sym::Comma);  // povray takes a comma after each function
     }
     const VectorValue lo = r.parseVector();
-    r.expect(Sym::Comma, "',' between the parametric's (u, v) corners");
+    r.accept(Sym::Comma);  // optional, as in povray
     const VectorValue hi = r.parseVector();
     s.uMin = lo.v[0];
     s.vMin = lo.v[1];
@@ -338,7 +341,7 @@ std::shared_ptr<const scene::Shape> parseSphereSweep(BuildContext& c, const Toke
         r.accept(Sym::Comma);
         scene::SweepPoint p;
         p.center = r.parseVec3();
-        r.expect(Sym::Comma, "',' between a sphere's centre and its radius");
+        r.accept(Sym::Comma);  // optional, as in povray
         p.radius = std::fabs(r.parseFloat());
         points.push_back(p);
     }

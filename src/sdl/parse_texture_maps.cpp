@@ -260,7 +260,7 @@ static std::vector<scene::TextureMap::Entry> parseTextureMap(BuildContext& c) {
     for (;;) {
         if (r.accept(Sym::RBrace)) break;
         r.expect(Sym::LBracket, "'[' or '}' in texture_map");
-        const double v = parseMapValue(c);
+        const double v = parseMapValue(c, true);
         r.accept(Sym::Comma);
         scene::Texture tex = c.defaultTexture;
         parseTextureBody(c, tex, Sym::RBracket);
@@ -271,8 +271,20 @@ static std::vector<scene::TextureMap::Entry> parseTextureMap(BuildContext& c) {
     return entries;
 }
 
-double parseMapValue(BuildContext& c) {
+double parseMapValue(BuildContext& c, bool weightMayBeOmitted) {
     Reader& r = c.reader;
+    // Entries of an average map may leave their weight out, which then is 1
+    // (measured; the examples write `[pigment { Jade } finish { ... }]` and
+    // `[gradient y color_map { ... }]`). povray knows it is the map of an
+    // average; this takes any pigment, normal or texture map entry that
+    // starts with its body, one of the keywords below.
+    if (weightMayBeOmitted) {
+        const Token t = r.peek();
+        if (t.kind == TokenKind::Word && !t.isIdentifier() &&
+            (isPatternKeyword(t) || t.is(Keyword::kw_pigment) || t.is(Keyword::kw_normal) ||
+             t.is(Keyword::kw_finish) || t.is(Keyword::kw_texture) || t.is(Keyword::kw_image_map)))
+            return 1.0;
+    }
     // `[0 <1, 0, 0>]`: the value ends before the '<', as every expression
     // outside parentheses does.
     return r.parseFloat();
@@ -334,7 +346,7 @@ std::vector<scene::Normal::MapEntry> parseNormalMap(BuildContext& c) {
     for (;;) {
         if (r.accept(Sym::RBrace)) break;
         r.expect(Sym::LBracket, "'[' or '}' in normal_map");
-        const double v = parseMapValue(c);
+        const double v = parseMapValue(c, true);
         r.accept(Sym::Comma);
         const Token body = r.peek();
         std::shared_ptr<const scene::Normal> normal = parseNormalBody(c, nullptr, Sym::RBracket);

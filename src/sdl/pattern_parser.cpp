@@ -469,6 +469,10 @@ bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment) {
             std::vector<PigmentPtr> list;
             for (const Color& colour : defaults)
                 list.push_back(std::make_shared<const scene::Pigment>(colour));
+            // The object pattern takes colours, or pigment { } blocks when
+            // its first entry is one (the example advanced/abyss.pov), never
+            // a mix nor a bare pigment identifier (measured).
+            bool objectPigments = false;
             for (std::size_t i = 0; i < defaults.size(); ++i) {
                 if (i > 0) r.accept(Sym::Comma);
                 const Token n = r.peek();
@@ -476,13 +480,12 @@ bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment) {
                     n.isIdentifier() && r.lookup(std::string(n.text)) &&
                     std::holds_alternative<PigmentPtr>(*r.lookup(std::string(n.text)));
                 if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
-                // povray's newer list patterns (object, square, triangular,
-                // cubic) take colours only in a pigment.
-                const bool coloursOnly = *kind != scene::PatternKind::Checker &&
-                                         *kind != scene::PatternKind::Hexagon &&
-                                         *kind != scene::PatternKind::Brick;
-                if (coloursOnly && (n.is(Keyword::kw_pigment) || isPigmentId))
-                    r.fail(n, fmt::format("the {} pattern takes colours, not pigments", item.text));
+                if (*kind == scene::PatternKind::Object) {
+                    if (i == 0) objectPigments = n.is(Keyword::kw_pigment);
+                    if (isPigmentId || n.is(Keyword::kw_pigment) != objectPigments)
+                        r.fail(n, fmt::format("No matching }} in 'object', {} found instead",
+                                              describeToken(n)));
+                }
                 list[i] = parsePigmentListEntry(c);
             }
             pigment.setList(std::move(list));
@@ -1016,7 +1019,7 @@ std::vector<scene::Pigment::MapEntry> parsePigmentMap(BuildContext& c) {
     for (;;) {
         if (r.accept(Sym::RBrace)) break;
         r.expect(Sym::LBracket, "'[' or '}' in pigment_map");
-        const double v = parseMapValue(c);
+        const double v = parseMapValue(c, true);
         r.accept(Sym::Comma);
         // [v PIGMENT_BODY]: a colour, a pigment identifier, a pattern...
         auto entry = std::make_shared<scene::Pigment>();

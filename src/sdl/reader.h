@@ -92,8 +92,11 @@ class Reader {
     Transform parseTransformBlock();  // at `transform`
     // `{ body }` of a function with these parameters.
     Value parseFunctionBody(std::vector<std::string> params);
-    // A `function { ... }` of x, y, z that a shape or pattern evaluates.
-    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at);
+    // A `function { ... }` of x, y, z that a shape or pattern evaluates;
+    // `colourAsGray`: a pigment function gives its colour's gray, as a
+    // height_field function does in povray (measured).
+    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at,
+                                                             bool colourAsGray = false);
     void skipToClosingBrace(const Token& from, int depth);
 
     // --- identifiers ---

@@ -32,10 +32,16 @@ void SymbolTable::declare(const std::string& name, Value value, bool local, size
     const size_t visible = std::min(scopeCount, scopes_.size());
     if (local) {
         Scope& scope = scopes_[visible - 1];
-        if (auto found = scope.find(key); found != scope.end())
-            found->second = std::move(value);
-        else
+        if (auto found = scope.find(key); found == scope.end()) {
             scope.emplace(name, std::move(value));
+        } else if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
+            // A macro parameter passed by reference: povray's #local on it
+            // assigns the caller's identifier too.
+            const IdentifierAlias target = *alias;
+            scopes_[target.scope][target.name] = std::move(value);
+        } else {
+            found->second = std::move(value);
+        }
         return;
     }
     // #declare assigns the most local existing version, or creates a global;
