@@ -170,6 +170,11 @@ struct Job {
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
     bool failed = false;  // the log holds the fatal message
+    // The parse stopped on a file that an earlier frame of this run writes
+    // (a scene showing the previous frames' images, as the example
+    // advanced/desk does): stage 3 parses and renders it again once every
+    // earlier frame is written, as povray's one-frame-after-another order.
+    bool deferred = false;
     double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0,
            commitSeconds = 0;
 };
@@ -433,32 +438,55 @@ class Run {
             }
             Job& job = newJob(Job::Kind::Render, position);
             --rendersLeft_;
-            const auto start = Clock::now();
-            try {
-                job.interpreter = std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame),
-                                                                     cache_, *job.log);
-                job.scene.emplace(job.interpreter->parseFile(o_.inputFile));
-            } catch (const sdl::SdlError& e) {
-                job.log->message(sdl::Stream::Fatal, e.what());
-                job.failed = true;
-            } catch (const std::bad_alloc&) {
-                job.log->message(
-                    sdl::Stream::Fatal,
-                    fmt::format("error: frame {}: out of memory while parsing the scene",
-                                frame.number));
-                job.failed = true;
-            } catch (const std::exception& e) {
-                job.log->message(sdl::Stream::Fatal,
-                                 fmt::format("error: frame {}: {}", frame.number, e.what()));
-                job.failed = true;
-            }
-            job.parseSeconds = secondsSince(start);
+            parseJob(job, true);
             // A frame that failed to parse ends the run: later frames
             // could depend on what it should have written.
             if (job.failed) inputDone_ = true;
             return &job;
         }
         return nullptr;
+    }
+
+    // Whether `message` names the output file of a frame before `position`.
+    bool namesEarlierOutput(const std::string& message, size_t position) const {
+        for (size_t i = 0; i < position; ++i) {
+            const std::string quoted =
+                fmt::format("'{}'", seq_.frames[i].output.filename().string());
+            if (message.find(quoted) != std::string::npos) return true;
+        }
+        return false;
+    }
+
+    // Parses the job's frame into job.scene; on an error the log holds it
+    // and job.failed is set, or job.deferred when `mayDefer` and the error
+    // names an earlier frame's output file.
+    void parseJob(Job& job, bool mayDefer) {
+        const FrameSpec& frame = *job.frame;
+        const auto start = Clock::now();
+        try {
+            job.interpreter =
+                std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame), cache_, *job.log);
+            job.scene.emplace(job.interpreter->parseFile(o_.inputFile));
+        } catch (const sdl::SdlError& e) {
+            if (mayDefer && namesEarlierOutput(e.what(), job.position)) {
+                job.deferred = true;
+                job.interpreter.reset();
+                job.parseSeconds = secondsSince(start);
+                return;
+            }
+            job.log->message(sdl::Stream::Fatal, e.what());
+            job.failed = true;
+        } catch (const std::bad_alloc&) {
+            job.log->message(sdl::Stream::Fatal,
+                             fmt::format("error: frame {}: out of memory while parsing the scene",
+                                         frame.number));
+            job.failed = true;
+        } catch (const std::exception& e) {
+            job.log->message(sdl::Stream::Fatal,
+                             fmt::format("error: frame {}: {}", frame.number, e.what()));
+            job.failed = true;
+        }
+        job.parseSeconds = secondsSince(start);
     }
 
     render::FrameSettings frameSettings(const image::GammaEncoding& gamma) const {
@@ -487,7 +515,9 @@ class Run {
 
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
-        if (job.kind != Job::Kind::Render || job.failed || decided_ || stopRequested()) return;
+        if (job.kind != Job::Kind::Render || job.failed || job.deferred || decided_ ||
+            stopRequested())
+            return;
         progress_.started(job.frame->number);
         try {
             auto start = Clock::now();
@@ -566,6 +596,15 @@ class Run {
         if (job.kind == Job::Kind::Stop) return decide(job.stop);
         const FrameSpec& frame = *job.frame;
         const size_t index = job.position + 1;
+        if (job.deferred) {
+            // Every earlier frame is written now: parse again, render here.
+            job.deferred = false;
+            job.log = std::make_unique<FrameLog>(streams_, true);
+            const double firstParse = job.parseSeconds;
+            parseJob(job, false);
+            job.parseSeconds += firstParse;
+            renderJob(job);
+        }
         if (job.kind == Job::Kind::Kept) {
             ++finished_;
             kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});

@@ -7,6 +7,7 @@
 
 #include "render/lighting.h"
 #include "render/optics.h"
+#include "render/photons.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
@@ -259,6 +260,12 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
+    if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
+        // Caustics: the photons' light, diffused like a light's head-on
+        // (render/photons.h).
+        thread_local std::vector<PhotonNeighbour> scratch;
+        color += photons->irradiance(p, n, scratch) * lit * (fin.diffuse) * fade;
+    }
     for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;

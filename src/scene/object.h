@@ -15,6 +15,7 @@
 
 #include "scene/interior.h"
 #include "scene/lights.h"
+#include "scene/photon_settings.h"
 #include "scene/shapes.h"
 #include "scene/texture.h"
 
@@ -87,6 +88,9 @@ struct Object {
     double radiosityImportance = 0;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
     bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
+    // Its part in photon mapping; a CSG node's block holds for the
+    // children that have none (csg::resolveInheritance).
+    ObjectPhotons photons;
 
     // (Light sources written inside a CSG node or light_group are the
     // parser's until the object is placed: sdl::ObjectLights.)

@@ -10,6 +10,7 @@
 #include "scene/lights.h"
 #include "scene/object.h"
 #include "scene/radiosity.h"
+#include "scene/photon_settings.h"
 
 namespace frameray::scene {
 
@@ -27,6 +28,8 @@ struct GlobalSettings {
     RGB iridWavelength{0.70, 0.52, 0.48};
     // Set by `radiosity { }`: only then is any radiosity computed.
     std::optional<RadiositySettings> radiosity;
+    // Photon mapping, when the scene turns it on (render/photons.h).
+    std::optional<PhotonSettings> photons;
 };
 
 struct Scene {

@@ -101,37 +101,65 @@ void placeSkySphere(BuildContext& c, const Token& keyword, Value v) {
 }
 
 using K = Keyword;
+// One row a line (clang-format would pack them).
+// clang-format off
 constexpr Builder kBuilders[] = {
     // Objects: the shape or body after '{' (the modifiers: parseObject).
-    object(K::kw_sphere, parseSphere), object(K::kw_box, parseBox), object(K::kw_plane, parsePlane),
-    object(K::kw_cylinder, parseCylinder), object(K::kw_cone, parseCone),
-    object(K::kw_disc, parseDisc), object(K::kw_triangle, parseTriangle),
-    object(K::kw_smooth_triangle, parseSmoothTriangle), object(K::kw_quadric, parseQuadric),
+    object(K::kw_sphere, parseSphere),
+    object(K::kw_box, parseBox),
+    object(K::kw_plane, parsePlane),
+    object(K::kw_cylinder, parseCylinder),
+    object(K::kw_cone, parseCone),
+    object(K::kw_disc, parseDisc),
+    object(K::kw_triangle, parseTriangle),
+    object(K::kw_smooth_triangle, parseSmoothTriangle),
+    object(K::kw_quadric, parseQuadric),
     object(K::kw_polygon, parsePolygon),  // parse_polygon.cpp
-    object(K::kw_torus, parsePolynomialShape), object(K::kw_poly, parsePolynomialShape),
-    object(K::kw_cubic, parsePolynomialShape), object(K::kw_quartic, parsePolynomialShape),
-    object(K::kw_blob, parseBlobBody), object(K::kw_lathe, parseLathe), object(K::kw_sor, parseSor),
-    object(K::kw_prism, parsePrism), object(K::kw_superellipsoid, parseSuperellipsoid),
-    object(K::kw_sphere_sweep, parseSphereSweep), object(K::kw_isosurface, parseIsosurface),
-    object(K::kw_parametric, parseParametric), object(K::kw_mesh, parseMeshBody),
-    object(K::kw_mesh2, parseMesh2Body), object(K::kw_height_field, parseHeightFieldBody),
-    object(K::kw_bicubic_patch, parseBicubicPatch), object(K::kw_text, parseTextBody),
-    object(K::kw_object, parseObjectCopyBody), object(K::kw_union, parseCsgBody),
-    object(K::kw_merge, parseCsgBody), object(K::kw_intersection, parseCsgBody),
-    object(K::kw_difference, parseCsgBody), object(K::kw_light_group, parseLightGroupBody),
-    unsupportedObject(K::kw_julia_fractal), unsupportedObject(K::kw_ovus),
+    object(K::kw_julia_fractal, parseJuliaFractal),  // parse_julia_fractal.cpp
+    object(K::kw_torus, parsePolynomialShape),
+    object(K::kw_poly, parsePolynomialShape),
+    object(K::kw_cubic, parsePolynomialShape),
+    object(K::kw_quartic, parsePolynomialShape),
+    object(K::kw_blob, parseBlobBody),
+    object(K::kw_lathe, parseLathe),
+    object(K::kw_sor, parseSor),
+    object(K::kw_prism, parsePrism),
+    object(K::kw_superellipsoid, parseSuperellipsoid),
+    object(K::kw_sphere_sweep, parseSphereSweep),
+    object(K::kw_isosurface, parseIsosurface),
+    object(K::kw_parametric, parseParametric),
+    object(K::kw_mesh, parseMeshBody),
+    object(K::kw_mesh2, parseMesh2Body),
+    object(K::kw_height_field, parseHeightFieldBody),
+    object(K::kw_bicubic_patch, parseBicubicPatch),
+    object(K::kw_text, parseTextBody),
+    object(K::kw_object, parseObjectCopyBody),
+    object(K::kw_union, parseCsgBody),
+    object(K::kw_merge, parseCsgBody),
+    object(K::kw_intersection, parseCsgBody),
+    object(K::kw_difference, parseCsgBody),
+    object(K::kw_light_group, parseLightGroupBody),
+    unsupportedObject(K::kw_ovus),
     // Values #declare accepts; those with a place function are also
     // top-level statements.
-    value(K::kw_pigment, buildPigment), value(K::kw_finish, buildFinish),
-    value(K::kw_interior, buildInterior), value(K::kw_material, buildMaterial),
-    value(K::kw_texture, buildTexture), value(K::kw_normal, buildNormal),
-    value(K::kw_color_map, parseBlendMapValue), value(K::kw_colour_map, parseBlendMapValue),
-    value(K::kw_pigment_map, parseBlendMapValue), value(K::kw_normal_map, parseBlendMapValue),
-    value(K::kw_slope_map, parseBlendMapValue), value(K::kw_texture_map, parseBlendMapValue),
+    value(K::kw_pigment, buildPigment),
+    value(K::kw_finish, buildFinish),
+    value(K::kw_interior, buildInterior),
+    value(K::kw_material, buildMaterial),
+    value(K::kw_texture, buildTexture),
+    value(K::kw_normal, buildNormal),
+    value(K::kw_color_map, parseBlendMapValue),
+    value(K::kw_colour_map, parseBlendMapValue),
+    value(K::kw_pigment_map, parseBlendMapValue),
+    value(K::kw_normal_map, parseBlendMapValue),
+    value(K::kw_slope_map, parseBlendMapValue),
+    value(K::kw_texture_map, parseBlendMapValue),
     value(K::kw_camera, buildCamera, placeCamera),
-    value(K::kw_light_source, buildLight, placeLightValue), value(K::kw_fog, buildFog, placeFog),
+    value(K::kw_light_source, buildLight, placeLightValue),
+    value(K::kw_fog, buildFog, placeFog),
     value(K::kw_sky_sphere, buildSkySphere, placeSkySphere),
-    value(K::kw_media, buildMedia, placeMedia), value(K::kw_density, buildDensity),
+    value(K::kw_media, buildMedia, placeMedia),
+    value(K::kw_density, buildDensity),
     // Top-level statements only.
     statement(K::kw_global_settings, sceneStatement<parseGlobalSettings>),
     statement(K::kw_background, sceneStatement<parseBackground>),
@@ -140,6 +168,7 @@ constexpr Builder kBuilders[] = {
     unsupportedStatement(K::kw_photons),
     unsupportedStatement(K::kw_radiosity),  // only in global_settings
 };
+// clang-format on
 
 // The table by keyword, for constant-time look-up.
 struct BuilderIndex {

@@ -102,6 +102,7 @@ std::shared_ptr<const scene::Shape> parseTriangle(BuildContext& c, const Token& 
 std::shared_ptr<const scene::Shape> parseSmoothTriangle(BuildContext& c, const Token& kind);
 std::shared_ptr<const scene::Shape> parseQuadric(BuildContext& c, const Token& kind);
 std::shared_ptr<const scene::Shape> parsePolygon(BuildContext& c, const Token& kind);
+std::shared_ptr<const scene::Shape> parseJuliaFractal(BuildContext& c, const Token& kind);
 std::shared_ptr<const scene::Shape> parsePolynomialShape(BuildContext& c, const Token& kind);
 void parseBlobBody(BuildContext& c, const Token& kind, ObjectValue& blob);
 void applySturm(BuildContext& c, scene::Object& obj, const Token& at);  // after `sturm`
@@ -132,6 +133,11 @@ void parseGlobalSettings(BuildContext& c);  // parse_global_settings.cpp
 // keyword (`start`), and an object's radiosity { importance }, at the keyword.
 void parseRadiositySettings(BuildContext& c, const Token& start);
 void parseObjectRadiosity(BuildContext& c, scene::Object& obj);
+// photons blocks (parse_photons.cpp), each after 'photons': global_settings',
+// an object's (`keyword`: where it stands) and a light's.
+void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& settings);
+void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& photons, const Token& keyword);
+void parseLightPhotons(BuildContext& c, scene::LightPhotons& photons);
 
 // --- textures (parse_texture_maps.cpp, parse_finish.cpp, parse_material.cpp) ---
 TexturePtr parseTexture(BuildContext& c, const scene::Texture* base);

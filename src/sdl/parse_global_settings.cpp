@@ -60,6 +60,11 @@ void parseGlobalSettings(BuildContext& c) {
             case Keyword::kw_hf_gray_16:
                 r.parseOptionalBool();
                 break;
+            case Keyword::kw_photons:
+                // A second block replaces the first's values item by item.
+                if (!g.photons) g.photons.emplace();
+                parseGlobalPhotons(c, *g.photons);
+                break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                     r.unsupported(t, fmt::format("'{}' in global_settings", t.text));

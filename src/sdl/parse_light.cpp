@@ -133,6 +133,9 @@ scene::Light parseLightSource(BuildContext& c) {
             case Keyword::kw_shadowless:
                 light.shadowless = true;
                 break;
+            case Keyword::kw_photons:
+                parseLightPhotons(c, light.photons);
+                break;
             case Keyword::kw_spotlight:
                 light.kind = scene::LightKind::Spot;
                 break;

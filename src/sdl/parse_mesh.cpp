@@ -458,6 +458,7 @@ std::shared_ptr<const scene::Shape> parseBicubicPatch(BuildContext& c, const Tok
     };
     int type = -1, uSteps = 0, vSteps = 0;
     double flatness = 0;
+    scene::BicubicPatch::UvCorners uvCorners = scene::BicubicPatch::kUnitUvCorners;
     const Token start = r.peek();
     for (;;) {
         const Token t = r.peek();
@@ -474,6 +475,13 @@ std::shared_ptr<const scene::Shape> parseBicubicPatch(BuildContext& c, const Tok
         } else if (t.is(Keyword::kw_v_steps)) {
             r.next();
             vSteps = static_cast<int>(setting());
+        } else if (t.is(Keyword::kw_uv_vectors)) {
+            r.next();
+            for (auto& corner : uvCorners) {
+                r.accept(Sym::Comma);
+                const VectorValue uv = r.parseVector();
+                corner = {uv.v[0], uv.v[1]};
+            }
         } else {
             break;
         }
@@ -488,7 +496,8 @@ std::shared_ptr<const scene::Shape> parseBicubicPatch(BuildContext& c, const Tok
         r.accept(Sym::Comma);  // commas are optional, also before the first point (povray)
         points[i] = r.parseVec3();
     }
-    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness);
+    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness, Transform(),
+                                                 uvCorners);
 }
 
 }  // namespace frameray::sdl

@@ -277,6 +277,13 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         case Keyword::kw_interior:
             obj.interior = parseInterior(c, obj.interior.get());
             return true;
+        case Keyword::kw_uv_mapping:
+            // An object's uv_mapping maps the texture that follows it
+            // (povray 3.7, measured: as `texture { uv_mapping ... }`).
+            r.next();
+            if (texture) r.fail(tok, "uv_mapping must be specified before texture.");
+            editTexture().uvMapping = true;
+            return true;
         case Keyword::kw_interior_texture:  // a texture body, from the default texture
             obj.interiorTexture = parseTexture(c, nullptr);
             return true;
@@ -329,6 +336,16 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         case Keyword::kw_sturm:
             r.next();
             applySturm(c, obj, tok);
+            return true;
+        case Keyword::kw_photons:
+            r.next();
+            parseObjectPhotons(c, obj.photons, tok);
+            return true;
+        case Keyword::kw_split_union:
+            r.next();
+            if (!obj.isCsg() || obj.op != scene::CsgOp::Union)
+                r.fail(tok, "split_union found in non-union object.");
+            obj.photons.splitUnion = r.parseOptionalBool();
             return true;
         case Keyword::kw_hollow:
             // Lets fog reach rays inside the object (see render::Tracer).

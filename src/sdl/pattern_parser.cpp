@@ -194,9 +194,16 @@ static void parsePigmentBody(BuildContext& c, scene::Pigment& result, Sym closin
         const Token id = r.peek();
         if (!id.isIdentifier()) return false;
         const Value* v = r.lookup(std::string(id.text));
-        if (!v || !std::holds_alternative<PigmentPtr>(*v)) return false;
+        // A pigment identifier, or an element of an array of pigments
+        // (`pigment { Pigments[I] }`, the example portfolio).
+        if (!v || !(std::holds_alternative<PigmentPtr>(*v) || arrayHolds<PigmentPtr>(*v)))
+            return false;
         r.next();
-        result = *std::get<PigmentPtr>(*v);
+        const Value declared = r.identifierValue(id, v);
+        const auto* pigment = std::get_if<PigmentPtr>(&declared);
+        if (!pigment)
+            r.fail(id, fmt::format("expected a pigment, found a {}", valueKindName(declared)));
+        result = **pigment;
         return true;
     };
     if (copyIdentifier()) {
@@ -300,14 +307,7 @@ void parsePatternKeyword(BuildContext& c, scene::Pattern& pattern, bool inNormal
         } catch (const std::runtime_error& e) {
             r.fail(at, e.what());
         }
-        if (r.accept(Keyword::kw_interpolate)) {
-            const Token n = r.peek();
-            const double mode = r.parseFloat();
-            if (mode < 0 || mode > 2)
-                r.fail(n,
-                       fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
-            pattern.densityInterpolation = static_cast<int>(mode);
-        }
+        // Its `interpolate` is a modifier (parsePatternModifier).
     } else if (kind == scene::PatternKind::PigmentPattern) {
         r.expect(Sym::LBrace, "'{' after 'pigment_pattern'");
         auto inner = std::make_shared<scene::Pigment>(*c.defaultTexture.pigment);
@@ -519,6 +519,19 @@ bool parsePatternModifier(BuildContext& c, scene::Pattern& pattern) {
         return true;
     }
     switch (item.kw) {
+        case Keyword::kw_interpolate: {
+            // density_file's, anywhere among the modifiers (the example
+            // textures/patterns/densfile.pov writes it after a bump size).
+            if (pattern.kind != scene::PatternKind::DensityFile) return false;
+            r.next();
+            const Token n = r.peek();
+            const double mode = r.parseFloat();
+            if (mode < 0 || mode > 2)
+                r.fail(n,
+                       fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
+            pattern.densityInterpolation = static_cast<int>(mode);
+            return true;
+        }
         case Keyword::kw_brick_size:
             r.next();
             pattern.brickSize = r.parseVec3();
@@ -644,11 +657,15 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
     // A declared normal to start from.
     if (const Token first = r.peek(); first.isIdentifier()) {
         const Value* v = r.lookup(std::string(first.text));
-        if (v && std::holds_alternative<NormalPtr>(*v)) {
+        // A normal identifier, or an element of an array of normals.
+        if (v && (std::holds_alternative<NormalPtr>(*v) || arrayHolds<NormalPtr>(*v))) {
             r.next();
-            const NormalPtr& declared = std::get<NormalPtr>(*v);
-            normal = declared ? *declared : scene::Normal{};
-            havePattern = declared != nullptr;
+            const Value value = r.identifierValue(first, v);
+            const auto* declared = std::get_if<NormalPtr>(&value);
+            if (!declared)
+                r.fail(first, fmt::format("expected a normal, found a {}", valueKindName(value)));
+            normal = *declared ? **declared : scene::Normal{};
+            havePattern = *declared != nullptr;
         }
     }
     // As in a pigment: transformations after a uv-mapped identifier do

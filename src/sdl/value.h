@@ -106,6 +106,19 @@ struct ArrayValue {
     std::vector<Value> elements;  // row-major
 };
 
+// Whether `v` is an array whose elements hold a T. Elements are all of one
+// kind, so the first one set tells (an array of arrays: its innermost).
+template <typename T>
+bool arrayHolds(const Value& v) {
+    const auto* array = std::get_if<ArrayPtr>(&v);
+    if (!array || !*array) return false;
+    for (const Value& e : (*array)->elements) {
+        if (std::holds_alternative<std::monostate>(e)) continue;
+        return std::holds_alternative<T>(e) || arrayHolds<T>(e);
+    }
+    return false;
+}
+
 // "float", "vector", "object"... for messages.
 const char* valueKindName(const Value& v);
 

@@ -148,7 +148,8 @@ def parse_args(argv):
                         help="render threads per program (+WTn for both); 0 = their default")
     parser.add_argument("--nice", type=int, default=10, help="nice(1) level of every render")
     parser.add_argument("--timeout", type=float, default=300.0,
-                        help="seconds per frameray run before it is killed")
+                        help="seconds per frameray run before it is killed (at least 3 "
+                        "times povray's wall time)")
     parser.add_argument("--povray-timeout", type=float, default=1800.0,
                         help="seconds per povray run (cached, so it runs once)")
     parser.add_argument("--povray-only", action="store_true",
@@ -298,11 +299,13 @@ def povray_run(entry, args, version, scratch):
     return run, slot
 
 
-def frameray_run(entry, args, scratch):
+def frameray_run(entry, args, scratch, povray_wall):
     copy = fresh_copy(entry.folder, scratch / "frameray")
     env = dict(os.environ, POVINI="/dev/null")
     command = ["nice", "-n", str(args.nice), args.frameray] + entry.switches
-    run = run_renderer(command, copy, env, args.timeout)
+    # A scene povray needs long for may take frameray long too: the limit
+    # is for hangs, not for slow renders.
+    run = run_renderer(command, copy, env, max(args.timeout, 3 * povray_wall))
     keep = Path(args.cache) / "frameray" / entry.name.replace("/", "+")
     shutil.rmtree(keep, ignore_errors=True)
     keep.mkdir(parents=True)
@@ -409,7 +412,8 @@ def score(entry, args, version, scratch_root, index):
     scratch = scratch_root / f"{index:04d}"
     scratch.mkdir()
     pov, pov_dir = povray_run(entry, args, version, scratch)
-    fr, fr_dir = (None, None) if args.povray_only else frameray_run(entry, args, scratch)
+    fr, fr_dir = (None, None) if args.povray_only else frameray_run(entry, args, scratch,
+                                                                    pov.wall)
     row = judge(entry, pov, pov_dir, fr, fr_dir, args)
     shutil.rmtree(scratch, ignore_errors=True)
     return row

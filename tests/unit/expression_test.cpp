@@ -122,10 +122,10 @@ TEST(Errors, MissingEndAndUnsupported) {
     struct : MessageSink { void message(Stream, const std::string&) override {} } sink;
     EXPECT_THROW(Interpreter(ctx, cache, sink).parseText("s.pov", "#if (1)\n#declare A = 1;\n"), SdlError);
     try {
-        Interpreter(ctx, cache, sink).parseText("s.pov", "julia_fractal { <1, 0, 0, 0> }");
+        Interpreter(ctx, cache, sink).parseText("s.pov", "ovus { 1, 0.5 }");
         FAIL();
     } catch (const SdlError& e) {
-        EXPECT_EQ(e.message(), "not supported yet: julia_fractal");
+        EXPECT_EQ(e.message(), "not supported yet: ovus");
     }
 }
 
