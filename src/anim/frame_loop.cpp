@@ -99,29 +99,79 @@ void refuseAlphaWith(const scene::Scene& scene) {
         throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
 }
 
+// Options that do not change what a frame looks like: which frames a run
+// renders (subsets, steps, shards), how it runs, and where its messages go.
+// Every other option is part of the journal's settings hash.
+bool settingsNeutral(std::string_view key) {
+    // clang-format off
+    static constexpr std::string_view kNeutral[] = {
+        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Continue_Trace",
+        "Create_Ini",           "Display",            "Display_Gamma",      "Field_Render",
+        "File_Restrictions",    "Frame_Step",         "Frames_In_Flight",   "Input_File_Name",
+        "Max_Parse_Iterations", "Odd_Field",          "Output_File_Name",   "Output_To_File",
+        "Pause_When_Done",      "Read_Path",          "Shard_Count",        "Shard_Index",
+        "Subset_End_Frame",     "Subset_Start_Frame", "Test_Abort",         "Test_Abort_Count",
+        "Verbose",              "Work_Threads",       "Write_Path"};
+    // clang-format on
+    for (const std::string_view n : kNeutral)
+        if (key == n) return true;
+    // The text streams and the shell-outs.
+    return key.ends_with("_Console") || key.ends_with("_File") || key.ends_with("_Command") ||
+           key.ends_with("_Return");
+}
+
 // What makes two runs' images comparable: a journal written with other
-// values is not trusted.
-std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq) {
+// values of any option that changes a frame (size, window, quality,
+// anti-aliasing, gamma, clocks, declares, library path...) is not trusted.
+// The scene and the files it reads are checked frame by frame (journal.h).
+std::uint64_t settingsHash(const options::RenderOptions& o) {
     std::error_code ec;
-    // Shards share the images but not the journal (each has its own), so
-    // the shard is not part of the settings.
-    std::string s = fmt::format(
-        "{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(), o.width,
-        o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
-        seq.window.x1, seq.window.y1, o.version, o.quality, o.includeHeader);
-    for (const auto& [k, v] : o.declares) s += fmt::format("|{}={}", k, v);
-    for (const auto& p : o.libraryPaths) s += fmt::format("|{}", p.string());
+    std::string s = fs::absolute(o.inputFile, ec).string();
+    for (const options::OptionSpec& spec : options::optionTable()) {
+        if (settingsNeutral(spec.iniKey)) continue;
+        s += fmt::format("|{}", spec.iniKey);
+        for (const std::string& value : spec.write(o)) s += "=" + value;
+    }
     return hashText(s);
 }
 
+// The journals of a sharded run of this sequence (beside its own), which a
+// run without shards takes over when resuming.
+std::vector<fs::path> shardJournals(const Sequence& seq) {
+    std::vector<fs::path> out;
+    if (seq.shardCount > 1) return out;
+    const std::string name = seq.journal.filename().string();  // ".NAME.frameray-journal"
+    const std::string suffix = ".frameray-journal";
+    if (!name.ends_with(suffix)) return out;
+    const std::string prefix = name.substr(0, name.size() - suffix.size()) + ".shard-";
+    const fs::path dir =
+        seq.journal.parent_path().empty() ? fs::path(".") : seq.journal.parent_path();
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string n = entry.path().filename().string();
+        if (n.starts_with(prefix) && n.ends_with(suffix)) out.push_back(entry.path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// A file as the journal names it: absolute, '..' and links resolved.
+std::string journalName(const fs::path& p) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(p, ec);
+    const fs::path canonical = fs::weakly_canonical(absolute, ec);
+    return (ec ? absolute.lexically_normal() : canonical).string();
+}
+
 // Temporary files left by a run that was killed mid-write: of the frames,
-// of sequence.json and of the journal (rewritten when a run resumes).
+// their logs, sequence.json and the journal (rewritten when a run resumes).
 void removeStaleTemporaries(const Sequence& seq) {
     // Every frame of a sequence is in one folder; the journal beside them.
     std::set<fs::path> folders;
     const fs::path frameFolder = seq.frames.front().output.parent_path();
     folders.insert(frameFolder.empty() ? fs::path(".") : frameFolder);
     std::set<std::string> names{seq.statisticsName};
+    const fs::path imageExtension = seq.frames.front().output.extension();
     if (!seq.journal.empty()) {
         folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
                                                          : seq.journal.parent_path());
@@ -134,7 +184,11 @@ void removeStaleTemporaries(const Sequence& seq) {
             long pid = 0;
             std::string target;
             if (!image::parseTemporaryName(name, target, pid)) continue;
-            if (!names.count(target) && !seq.frames.holdsImageNamed(target)) continue;
+            // A frame's log (NAME.log beside NAME.png) is replaced too.
+            const bool log = target.ends_with(".log") &&
+                             seq.frames.holdsImageNamed(
+                                 fs::path(target).replace_extension(imageExtension).string());
+            if (!names.count(target) && !seq.frames.holdsImageNamed(target) && !log) continue;
             if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
                 continue;  // alive
             fs::remove(entry.path(), ec);
@@ -159,6 +213,10 @@ struct Job {
     const FrameSpec* frame = nullptr;
     Outcome stop;    // Kind::Stop
     FrameSpec spec;  // what `frame` points to
+    // What the frame's parse read (with the files' hashes) and wrote, for
+    // the journal.
+    FrameInputs inputs;
+    std::vector<std::string> written;
     std::unique_ptr<FrameLog> log;
     std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
     std::optional<scene::Scene> scene;
@@ -233,8 +291,9 @@ class Run {
                 !folder.empty() && !o_.outputFile.empty() && o_.outputFile.back() == '/')
                 fs::create_directories(folder, ec);
             removeStaleTemporaries(seq_);
-            journal_ =
-                std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
+            journal_ = std::make_unique<Journal>(seq_.journal, settingsHash(o_), o_.continueTrace,
+                                                 shardJournals(seq_));
+            written_ = journal_->written();
             if (journal_->discardedStale())
                 say(TextStream::Warning,
                     fmt::format("frameray: the journal {} was written with other settings; "
@@ -417,7 +476,8 @@ class Run {
                 bool kept = false;
                 {
                     std::lock_guard lock(journalMutex_);
-                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output);
+                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output,
+                                              hashes_);
                 }
                 if (kept) return &newJob(Job::Kind::Kept, position);
             }
@@ -486,7 +546,26 @@ class Run {
                              fmt::format("error: frame {}: {}", frame.number, e.what()));
             job.failed = true;
         }
+        if (!job.failed && journal_) noteInputs(job);
         job.parseSeconds = secondsSince(start);
+    }
+
+    // Stage 1, right after the parse: the files the frame read, hashed now
+    // (each once per run), and those it wrote; files written by this or an
+    // earlier frame of the sequence are not inputs.
+    void noteInputs(Job& job) {
+        for (const fs::path& p : job.interpreter->filesWritten()) {
+            job.written.push_back(journalName(p));
+            written_.insert(job.written.back());
+        }
+        std::set<std::string> read;
+        for (const fs::path& p : job.interpreter->filesRead()) read.insert(journalName(p));
+        for (const std::string& p : read) {
+            if (written_.count(p)) continue;
+            // An input that cannot be hashed now never verifies later: 0
+            // stands for it.
+            job.inputs.emplace_back(p, hashes_.hash(p).value_or(0));
+        }
     }
 
     render::FrameSettings frameSettings(const image::GammaEncoding& gamma) const {
@@ -624,7 +703,7 @@ class Run {
                 if (journal_) {
                     std::lock_guard lock(journalMutex_);
                     journal_->record(frame.number, clockText(frame.clock), frame.output,
-                                     job.fileSize, job.fileHash);
+                                     job.fileSize, job.fileHash, job.inputs, job.written);
                 }
             } catch (const std::exception& e) {
                 log.message(sdl::Stream::Fatal,
@@ -807,6 +886,10 @@ class Run {
     Progress progress_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
+    FileHashes hashes_;  // input files' hashes, read once per run
+    // Files the sequence's frames wrote (stage 1 adds each frame's as it
+    // is parsed): state passed between frames, not inputs.
+    std::set<std::string> written_;
     std::mutex journalMutex_;
     std::atomic<const FrameSpec*> current_{nullptr};  // the oldest frame in flight
     std::atomic<size_t> finished_{0};

@@ -2,8 +2,8 @@
 // switches. Wiring only: options -> sequence -> frame loop.
 #include <tbb/global_control.h>
 
+#include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,11 +13,16 @@
 #include "anim/sequence.h"
 #include "options/option_table.h"
 #include "options/options.h"
+#include "util/durable_file.h"
 
 int main(int argc, char** argv) {
     using namespace frameray;
     // First, before any thread exists: Ctrl-C is handled by a watcher.
     anim::installInterruptWatcher();
+    // A write past `ulimit -f` would kill the process with SIGXFSZ and no
+    // word; ignored, the write fails with EFBIG ("File too large") and the
+    // frame ends with that message, as a full disk does.
+    std::signal(SIGXFSZ, SIG_IGN);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     // --list-frames: print the frames the options ask for (number, clock,
@@ -48,11 +53,12 @@ int main(int argc, char** argv) {
         if (opts.inputFile.empty())
             throw options::OptionError("no scene file given (Input_File_Name or +I)");
         if (!opts.createIni.empty()) {
-            std::ofstream ini(opts.createIni, std::ios::trunc);
-            ini << options::createIniText(opts);
-            if (!ini)
-                throw options::OptionError("cannot write the Create_Ini file '" + opts.createIni +
-                                           "'");
+            // Replaced, never written through a link planted under its name.
+            try {
+                util::replaceFileDurably(opts.createIni, options::createIniText(opts));
+            } catch (const std::exception& e) {
+                throw options::OptionError(std::string("Create_Ini: ") + e.what());
+            }
         }
         if (listFrames) {
             const anim::Sequence planned = anim::planSequence(opts);

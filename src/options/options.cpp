@@ -142,6 +142,11 @@ struct Applier {
             readIni(path, section, where);
             inUntrustedIni = outer;
         } else {
+            if (inUntrustedIni)
+                if (const std::string refusal =
+                        untrustedPathRefusal({}, {{"Input_File_Name", name}}, roots, where);
+                    !refusal.empty())
+                    throw OptionError(refusal);
             options.inputFile = name;
             options.explicitlySet.emplace("Input_File_Name");
         }

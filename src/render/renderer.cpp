@@ -71,6 +71,20 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                         return tracer.traceCamera(r, rays, nullptr, blockRadiosity);
                     });
                 }
+                if (std::vector<scene::Ray> meshRays; camera.meshRays(x + 0.5, y + 0.5, meshRays)) {
+                    // mesh_camera: the mean of the pixel's rays; black
+                    // where it has none (povray).
+                    PixelSample mean{RGB{}, 0.0};
+                    if (meshRays.empty()) return mean;
+                    for (const scene::Ray& r : meshRays) {
+                        double transmit = 0;
+                        mean.rgb +=
+                            tracer.traceCamera(r, rays, settings.alpha ? &transmit : nullptr);
+                        mean.transmit += transmit;
+                    }
+                    const double n = static_cast<double>(meshRays.size());
+                    return PixelSample{mean.rgb * (1.0 / n), mean.transmit / n};
+                }
                 const std::optional<scene::Ray> ray = camera.generate(x + 0.5, y + 0.5);
                 // Where the projection traces nothing povray writes transparent black.
                 if (!ray) return PixelSample{RGB{}, 1.0};

@@ -510,7 +510,10 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
             reflectivity = RGB(0.0);
         }
 
-        transmits = surface.filter + surface.transmit > 0;
+        // Negative filter or transmit subtract what lies behind (measured:
+        // rgb 0.5 transmit -1 over a background B shows 1 - B), so the
+        // ray continues whenever either is non-zero.
+        transmits = surface.filter != 0 || surface.transmit != 0;
         if (!transmits) break;
         through = through * (pigment * surface.filter + RGB(surface.transmit));
         throughGrey *= surface.filter * grey(pigment) + surface.transmit;
@@ -521,11 +524,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         }
     }
     if (!spawns || !transmits) return color;
-    if (state.weight * through.maxComponent() < adcBailout) return color;
+    const double throughWeight =
+        std::max({std::abs(through.r), std::abs(through.g), std::abs(through.b)});
+    if (state.weight * throughWeight < adcBailout) return color;
 
     const Crossing& c = crossingInfo();
     State child;
-    child.weight = state.weight * through.maxComponent();
+    child.weight = state.weight * throughWeight;
     child.kind = state.kind;
     child.inside = c.beyond;
     child.band = state.band;

@@ -53,7 +53,9 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
         for (Vec3& n : normals_)
             if (dot(n, n) > 0) n = normalize(n);
     triangles_.reserve(triangles.size());
+    inputFaces_.reserve(triangles.size());
     for (const MeshTriangle& t : triangles) {
+        inputFaces_.push_back(t.vertex);
         const Vec3 &a = vertices_[t.vertex[0]], &b = vertices_[t.vertex[1]],
                    &c = vertices_[t.vertex[2]];
         const Vec3 n = cross(b - a, c - a);

@@ -52,6 +52,10 @@ class Pigment {
     void setList(std::vector<std::shared_ptr<const Pigment>> list) { list_ = std::move(list); }
     const std::vector<std::shared_ptr<const Pigment>>& list() const { return list_; }
     void setColorMap(ColorMap map);
+    // A pattern without a colour_map takes povray's default map for it,
+    // which may depend on items after the pattern keyword (mandel's
+    // exponent): the parser calls this once the pigment block is read.
+    void settleDefaultColorMap();
     void setPigmentMap(std::vector<MapEntry> map);
     // image_map (image_map.h): the image, seen through the pattern's chain.
     void setImageMap(std::shared_ptr<const ImageMap> map) {
@@ -92,6 +96,7 @@ class Pigment {
     std::vector<MapEntry> pigmentMap_;
     std::shared_ptr<const ImageMap> imageMap_;
     bool average_ = false;
+    bool defaultColorMap_ = false;  // colorMap_ is the pattern's default
     bool uvMapping_ = false;
     bool hasTransform_ = false;
     Transform transform_;

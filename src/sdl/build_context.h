@@ -9,6 +9,7 @@
 #include <string>
 
 #include "image/image_io.h"
+#include "scene/normals.h"
 #include "scene/scene.h"
 #include "scene/ttf_font.h"
 #include "sdl/reader.h"
@@ -26,6 +27,10 @@ struct BuildContext {
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture;
     bool defaultTextureSet = false;
+    // What a normal without a base starts from: #default's normal settings,
+    // kept even without a pattern (measured: #default { normal { bump_size
+    // 1.5 } } makes normal { gradient x } and normal_map entries 1.5 deep).
+    scene::Normal defaultNormal;
     // Text objects: the global_settings charset in force, and the fonts
     // read so far, by the name the scene gave (this frame's only).
     scene::TextCharset textCharset = scene::TextCharset::Ascii;

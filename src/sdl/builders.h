@@ -124,7 +124,9 @@ std::shared_ptr<const scene::Shape> parseBicubicPatch(BuildContext& c, const Tok
 scene::Light parseLightSource(BuildContext& c);  // parse_light.cpp
 void placeLight(BuildContext& c, scene::Light light);
 scene::Camera parseCamera(BuildContext& c);  // parse_camera.cpp
-void parseBackground(BuildContext& c);       // parse_atmosphere.cpp
+// After 'mesh_camera': its block (parse_mesh_camera.cpp).
+std::shared_ptr<scene::MeshCamera> parseMeshCamera(BuildContext& c, const Token& at);
+void parseBackground(BuildContext& c);  // parse_atmosphere.cpp
 scene::Fog parseFog(BuildContext& c);
 scene::SkySphere parseSkySphere(BuildContext& c);
 void parseRainbow(BuildContext& c);
@@ -162,7 +164,12 @@ MediaPtr parseMedia(BuildContext& c);
 DensityPtr parseDensity(BuildContext& c);
 
 // --- pigments, patterns, normals (pattern_parser.cpp, parse_image_map.cpp) ---
-PigmentPtr parsePigment(BuildContext& c);
+// pigment { }; inside a texture or object it edits the pigment there (base).
+PigmentPtr parsePigment(BuildContext& c, const scene::Pigment* base = nullptr);
+// pigment { } and normal { } editing those of `tex`, in the space the
+// texture's transformations lead to (texture_items.cpp).
+PigmentPtr parseTexturePigment(BuildContext& c, const scene::Texture& tex);
+std::shared_ptr<const scene::Normal> parseTextureNormal(BuildContext& c, const scene::Texture& tex);
 // Pattern keywords and their modifiers inside pigment { }; false when
 // the next token is none of them.
 bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment);
@@ -180,9 +187,13 @@ bool parseTurbulenceItem(BuildContext& c, scene::Turbulence& turb);  // turbulen
 // the settings of brick, crackle, facets, fractals, pavement...), the same
 // wherever the pattern is used; false when the next token is none.
 bool parsePatternModifier(BuildContext& c, scene::Pattern& pattern);
-std::shared_ptr<const scene::Normal> parseNormal(BuildContext& c, const scene::Normal* base);
+// normal { }; `settings` (when given) receives the block's settings even
+// when it names no pattern (#default { normal { bump_size 2 } }).
+std::shared_ptr<const scene::Normal> parseNormal(BuildContext& c, const scene::Normal* base,
+                                                 scene::Normal* settings = nullptr);
 std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scene::Normal* base,
-                                                     Sym closing);
+                                                     Sym closing,
+                                                     scene::Normal* settings = nullptr);
 Value parsePatternFunction(BuildContext& c);  // function { pattern { } }, at `pattern`
 // image_map / image_pattern in a pigment; false when the next token is
 // neither.

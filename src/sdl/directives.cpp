@@ -294,7 +294,12 @@ void Reader::directiveInclude(const Token& at) {
         fail(at,
              fmt::format("#include nested more than {} levels deep", frame_.limits.includeFiles));
     const fs::path path = findIncludeFile(name);
-    if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
+    if (path.empty()) {
+        const std::string why = whyNotFound(name);
+        fail(at, why.starts_with("no such file")
+                     ? fmt::format("cannot find include file '{}'", name)
+                     : fmt::format("cannot include '{}': {}", name, why));
+    }
     checkReadable(path, name, at);
     const SourceLoc callSite = loc(at);
     std::shared_ptr<const TokenizedFile> file;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <numbers>
 
 #include "scene/noise.h"
@@ -476,12 +477,15 @@ Value Reader::parseMultiplicative() {
         if (!isNumeric(left) || !isNumeric(right))
             fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
                                  valueKindName(right)));
-        // Division by zero gives POV-Ray's huge value rather than inf.
-        left = op.is(Sym::Star)
-                   ? combine(left, right, std::multiplies<double>())
-                   : combine(left, right, [](double a, double b) {
-                         return b == 0 ? (a == 0 ? 0.0 : std::copysign(1e10, a)) : a / b;
-                     });
+        // povray warns once per component divided by zero, and the result
+        // is +inf whatever the sign of the dividend (measured: -1/0 and
+        // 0/0 are inf too).
+        left = op.is(Sym::Star) ? combine(left, right, std::multiplies<double>())
+                                : combine(left, right, [&](double a, double b) {
+                                      if (b != 0) return a / b;
+                                      warn(op, "divide by zero; the result is inf");
+                                      return std::numeric_limits<double>::infinity();
+                                  });
     }
 }
 
@@ -775,13 +779,42 @@ Value Reader::parsePrimary() {
     return parseBuiltinFunction(t);
 }
 
+// povray's domain checks of the float functions at parse time (compiled
+// user functions have none): sqrt, log and ln of a number out of their
+// domain stop the parse; acos and asin warn and take the nearest end of
+// theirs.
+double Reader::checkedArgument(const Token& fn, double a) {
+    switch (fn.kw) {
+        case Keyword::kw_sqrt:
+            if (a < 0) fail(fn, fmt::format("sqrt of a negative number ({})", a));
+            return a;
+        case Keyword::kw_ln:
+        case Keyword::kw_log:
+            if (a <= 0) fail(fn, fmt::format("{} of a number not above zero ({})", fn.text, a));
+            return a;
+        case Keyword::kw_acos:
+        case Keyword::kw_asin:
+            if (a > 1 || a < -1) {
+                warn(fn, fmt::format("domain error in {}: {} is outside -1 to 1; using {}", fn.text,
+                                     a, a > 1 ? 1 : -1));
+                return a > 1 ? 1.0 : -1.0;
+            }
+            return a;
+        default:
+            return a;
+    }
+}
+
 Value Reader::parseBuiltinFunction(const Token& fn) {
     auto f = [&](const Value& v) { return toFloat(v, fn); };
     if (const UnaryFloatFunction op = unaryFloatFunction(fn.kw))
-        return op(f(parseArguments(1, 1, fn)[0]));
+        return op(checkedArgument(fn, f(parseArguments(1, 1, fn)[0])));
     if (const BinaryFloatFunction op = binaryFloatFunction(fn.kw)) {
         auto a = parseArguments(2, 2, fn);
-        return op(f(a[0]), f(a[1]));
+        const double x = f(a[0]), y = f(a[1]);
+        if (fn.kw == Keyword::kw_atan2 && x == 0 && y == 0)
+            fail(fn, "domain error in atan2: atan2(0, 0) has no angle");
+        return op(x, y);
     }
     if (std::optional<Value> v = parseNumericBuiltin(fn)) return std::move(*v);
     if (std::optional<Value> v = parseStringBuiltin(fn)) return std::move(*v);

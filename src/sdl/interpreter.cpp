@@ -24,12 +24,21 @@ Interpreter::~Interpreter() = default;
 scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
     auto file = cache_.get(sceneFile);
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
+    reader_->noteFileRead(sceneFile);
     // povray gives the bare name as input_file_name.
     return run(std::move(file), sceneFile.filename().string());
 }
 
 scene::Scene Interpreter::parseText(const std::string& name, const std::string& text) {
     return run(TokenCache::fromText(name, text), {});
+}
+
+const std::vector<fs::path>& Interpreter::filesRead() const {
+    return reader_->filesRead();
+}
+
+const std::vector<fs::path>& Interpreter::filesWritten() const {
+    return reader_->filesWritten();
 }
 
 const Value* Interpreter::lookup(std::string_view name) const {

@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/scene.h"
 #include "sdl/diagnostics.h"
@@ -35,6 +36,11 @@ class Interpreter {
 
     // Parses a scene file into a Scene. Throws SdlError on the first error.
     scene::Scene parseFile(const std::filesystem::path& sceneFile);
+    // The files the parse read (the scene, includes, images, fonts, data
+    // read with #fopen) and wrote (#fopen write/append), in order, as
+    // found: what the frame was made from, for the resume journal.
+    const std::vector<std::filesystem::path>& filesRead() const;
+    const std::vector<std::filesystem::path>& filesWritten() const;
     // Parses scene text (tests, one-liners); `name` is used in messages.
     scene::Scene parseText(const std::string& name, const std::string& text);
 

@@ -5,6 +5,7 @@
 // (angle, look_at, transformations) is scene::finalizeCamera().
 #include <fmt/format.h>
 
+#include "scene/mesh_camera.h"
 #include "sdl/builders.h"
 
 namespace frameray::sdl {
@@ -37,7 +38,31 @@ std::optional<scene::Projection> projectionKeyword(Keyword kw) {
 }
 
 bool isUnsupportedCameraWord(const Token& t) {
-    return t.text == "mesh_camera" || t.text == "bokeh";
+    return t.text == "bokeh";
+}
+
+// camera { CAMERA_IDENTIFIER transformations }, at the identifier.
+scene::Camera parseDeclaredCamera(Reader& r, const Token& first) {
+    r.next();
+    const Value v = r.identifierValue(first);
+    const auto* cp = std::get_if<CameraPtr>(&v);
+    if (!cp) r.fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
+    scene::Camera cam = **cp;
+    // povray 3.7 accepts only transformations after a camera identifier.
+    scene::CameraEdits edits;
+    edits.sized = true;  // the declared camera has its final size
+    for (;;) {
+        if (r.accept(Sym::RBrace)) break;
+        Transform step;
+        if (!r.parseTransformation(step)) {
+            const Token t = r.peek();
+            r.fail(t, fmt::format("only transformations may follow a camera identifier, found {}",
+                                  describeToken(t)));
+        }
+        edits.transform = edits.transform.then(step);
+    }
+    scene::finalizeCamera(cam, edits);
+    return cam;
 }
 
 }  // namespace
@@ -48,32 +73,16 @@ scene::Camera parseCamera(BuildContext& c) {
     r.expect(Sym::LBrace, "'{' after 'camera'");
     scene::Camera cam;
     const Token first = r.peek();
-    if (first.isIdentifier() && !isUnsupportedCameraWord(first)) {
-        r.next();
-        const Value v = r.identifierValue(first);
-        const auto* cp = std::get_if<CameraPtr>(&v);
-        if (!cp)
-            r.fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
-        cam = **cp;
-        // povray 3.7 accepts only transformations after a camera identifier.
-        scene::CameraEdits edits;
-        for (;;) {
-            if (r.accept(Sym::RBrace)) break;
-            Transform step;
-            if (!r.parseTransformation(step)) {
-                const Token t = r.peek();
-                r.fail(t,
-                       fmt::format("only transformations may follow a camera identifier, found {}",
-                                   describeToken(t)));
-            }
-            edits.transform = edits.transform.then(step);
-        }
-        scene::finalizeCamera(cam, edits);
-        return cam;
-    }
+    if (first.isIdentifier() && !isUnsupportedCameraWord(first) && first.text != "mesh_camera")
+        return parseDeclaredCamera(r, first);
     const Token typeToken = r.peek();
     if (isUnsupportedCameraWord(typeToken)) r.unsupported(typeToken, std::string(typeToken.text));
-    if (const auto projection = projectionKeyword(typeToken.kw)) {
+    std::shared_ptr<scene::MeshCamera> meshCamera;
+    if (typeToken.text == "mesh_camera") {
+        r.next();
+        meshCamera = parseMeshCamera(c, typeToken);
+        cam.projection = scene::Projection::Mesh;
+    } else if (const auto projection = projectionKeyword(typeToken.kw)) {
         r.next();
         cam.projection = *projection;
         if (*projection == scene::Projection::Cylinder1) {
@@ -116,9 +125,11 @@ scene::Camera parseCamera(BuildContext& c) {
                 break;
             case Keyword::kw_right:
                 cam.right = r.parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_up:
                 cam.up = r.parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_sky:
                 cam.sky = r.parseVec3();
@@ -176,6 +187,12 @@ scene::Camera parseCamera(BuildContext& c) {
     }
     if (edits.lookAt && length(cam.lookAt - cam.location) < 1e-10)
         r.fail(closing, "camera location and look_at point must be different");
+    if (meshCamera) {
+        // Only location's and direction's z count, as written (measured).
+        meshCamera->startOffset = cam.location.z;
+        meshCamera->reverse = cam.direction.z < 0;
+        cam.mesh = std::move(meshCamera);
+    }
     scene::finalizeCamera(cam, edits);
     return cam;
 }

@@ -6,8 +6,8 @@
 //   - colours are decoded with the file's gamma - the `gamma` given, else
 //     the one a PNG declares, else sRGB for PNG, TGA, GIF, JPEG, IFF and
 //     sys files and linear for PPM, PGM, TIFF, EXR and HDR - and re-encoded
-//     in the scene's working gamma; a scene without assumed_gamma from
-//     before 3.7 uses the file values as they are;
+//     in the scene's working gamma; before 3.7 a file of unknown gamma
+//     (no `gamma`, no gAMA) gives its values as they are;
 //   - alpha becomes transmit (1 - alpha) on top of `transmit all`; the
 //     colour is taken as not premultiplied unless `premultiplied` says so;
 //   - `filter N` / `transmit N` set palette entries of palette images (GIF)
@@ -320,7 +320,12 @@ static std::shared_ptr<scene::ImageTexels> imageTexels(BuildContext& c,
 
     if (use == ImageUse::Pigment) {
         // File values -> linear light -> the working gamma in force now.
-        const bool legacy = !c.scene.globals.assumedGammaSet && r.version() < 3.7 - 1e-9;
+        // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
+        // file (PNG gAMA) gives holds working-space values, whatever the
+        // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows
+        // the file value v as v^2.2 of linear light).
+        const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
+        const bool asIs = !fileGammaKnown && r.version() < 3.7 - 1e-9;
         const double working = c.scene.globals.assumedGammaSet ? c.scene.globals.assumedGamma : 1.0;
         const double fileGamma = s.gamma                 ? *s.gamma
                                  : src.declaredGamma > 0 ? src.declaredGamma
@@ -328,7 +333,7 @@ static std::shared_ptr<scene::ImageTexels> imageTexels(BuildContext& c,
         auto decode = [&](double v) {
             // A function image's values are working-space values whatever
             // the assumed_gamma (measured).
-            if (legacy || fromFunction) return v;
+            if (asIs || fromFunction) return v;
             double linear = fileGamma == 0   ? srgbDecode(v)
                             : fileGamma == 1 ? v
                                              : std::pow(v, fileGamma);

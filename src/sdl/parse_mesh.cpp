@@ -15,6 +15,7 @@
 // group); the triangles without a texture take the mesh object's.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -127,9 +128,33 @@ static void parseMeshTriangleItems(BuildContext& c, MeshParts& parts, scene::Mes
     }
 }
 
+namespace {
+
+// A mesh object: its shape, or (triangles with their own textures) a union
+// of its texture groups.
+bool isMeshObject(const scene::Object& obj) {
+    if (obj.shape) return dynamic_cast<const scene::MeshShape*>(obj.shape.get()) != nullptr;
+    return !obj.children.empty() &&
+           std::all_of(obj.children.begin(), obj.children.end(),
+                       [](const scene::ObjectRef& c) { return c && isMeshObject(*c); });
+}
+
+}  // namespace
+
 void parseMeshBody(BuildContext& c, const Token&, ObjectValue& object) {
-    scene::Object& obj = *object.object;
     Reader& r = c.reader;
+    // mesh { DECLARED_MESH modifiers } copies the declared mesh as object { }
+    // would (povray 3.7; no triangles may follow).
+    if (const Token id = r.peek(); id.isIdentifier()) {
+        r.next();
+        const Value v = r.identifierValue(id);
+        const auto* src = std::get_if<ObjectPtr>(&v);
+        if (!src || !isMeshObject(*(*src)->object))
+            r.fail(id, fmt::format("'{}' is not a mesh", id.text));
+        object.object = std::make_shared<scene::Object>(*(*src)->object);
+        return;
+    }
+    scene::Object& obj = *object.object;
     MeshParts parts;
     for (;;) {
         const Token t = r.peek();

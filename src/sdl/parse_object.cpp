@@ -254,12 +254,14 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         return *texture;
     };
     switch (tok.kw) {
-        case Keyword::kw_pigment:
-            editTexture().pigment = parsePigment(c);
+        case Keyword::kw_pigment: {
+            scene::Texture& tx = editTexture();
+            tx.pigment = parseTexturePigment(c, tx);
             return true;
+        }
         case Keyword::kw_normal: {
             scene::Texture& tx = editTexture();
-            tx.normal = parseNormal(c, tx.normal.get());
+            tx.normal = parseTextureNormal(c, tx);
             return true;
         }
         case Keyword::kw_finish: {

@@ -106,12 +106,13 @@ void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
                 continue;
             }
             if (at.is(Keyword::kw_pigment)) {
-                editTexture().pigment = parsePigment(c);
+                scene::Texture& tx = editTexture();
+                tx.pigment = parseTexturePigment(c, tx);
                 continue;
             }
             if (at.is(Keyword::kw_normal)) {
                 scene::Texture& tx = editTexture();
-                tx.normal = parseNormal(c, tx.normal.get());
+                tx.normal = parseTextureNormal(c, tx);
                 continue;
             }
             if (at.is(Keyword::kw_finish)) {

@@ -133,9 +133,9 @@ static void parseTextureBody(BuildContext& c, scene::Texture& tex, Sym closing) 
                                      "texture of the map",
                                      item.text));
         if (item.is(Keyword::kw_pigment)) {
-            tex.pigment = parsePigment(c);
+            tex.pigment = parseTexturePigment(c, tex);
         } else if (item.is(Keyword::kw_normal)) {
-            tex.normal = parseNormal(c, tex.normal.get());
+            tex.normal = parseTextureNormal(c, tex);
         } else if (item.is(Keyword::kw_finish)) {
             tex.finish = *parseFinish(c, &tex.finish);
         } else if (parseTexturePatternItem(c, tex, draft)) {
@@ -399,7 +399,8 @@ void parseDefaultDirective(BuildContext& c) {
                 c.defaultTexture.pigment = parsePigment(c);
                 break;
             case Keyword::kw_normal:
-                c.defaultTexture.normal = parseNormal(c, c.defaultTexture.normal.get());
+                c.defaultTexture.normal =
+                    parseNormal(c, c.defaultTexture.normal.get(), &c.defaultNormal);
                 break;
             case Keyword::kw_finish:
                 c.defaultTexture.finish = *parseFinish(c, &c.defaultTexture.finish);

@@ -172,11 +172,13 @@ static scene::Warp parseWarp(BuildContext& c);
 static bool parsePatternSetting(BuildContext& c, scene::Pattern& pattern);
 static void parsePavementItem(BuildContext& c, scene::PavementSettings& s);
 
-PigmentPtr parsePigment(BuildContext& c) {
+PigmentPtr parsePigment(BuildContext& c, const scene::Pigment* base) {
     Reader& r = c.reader;
     r.next();  // pigment
     r.expect(Sym::LBrace, "'{' after 'pigment'");
-    auto result = std::make_shared<scene::Pigment>(*c.defaultTexture.pigment);
+    // povray edits the pigment a texture already has (measured:
+    // texture { T pigment { scale 0.3 } } scales T's checker).
+    auto result = std::make_shared<scene::Pigment>(base ? *base : *c.defaultTexture.pigment);
     parsePigmentBody(c, *result, Sym::RBrace);
     r.expect(Sym::RBrace, "'}' closing 'pigment'");
     return result;
@@ -239,6 +241,7 @@ static void parsePigmentBody(BuildContext& c, scene::Pigment& result, Sym closin
                fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
     checkPavement(c, result.pattern(), r.peek());
+    result.settleDefaultColorMap();
 }
 
 static PigmentPtr parsePigmentListEntry(BuildContext& c) {
@@ -639,20 +642,21 @@ static bool parsePatternSetting(BuildContext& c, scene::Pattern& pattern) {
     return true;
 }
 
-std::shared_ptr<const scene::Normal> parseNormal(BuildContext& c, const scene::Normal* base) {
+std::shared_ptr<const scene::Normal> parseNormal(BuildContext& c, const scene::Normal* base,
+                                                 scene::Normal* settings) {
     Reader& r = c.reader;
     r.next();  // normal
     r.expect(Sym::LBrace, "'{' after 'normal'");
-    auto normal = parseNormalBody(c, base, Sym::RBrace);
+    auto normal = parseNormalBody(c, base, Sym::RBrace, settings);
     r.expect(Sym::RBrace, "'}' closing 'normal'");
     return normal;
 }
 
 std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scene::Normal* base,
-                                                     Sym closing) {
+                                                     Sym closing, scene::Normal* settings) {
     Reader& r = c.reader;
     const Reader::NestingGuard nesting(r, r.peek());
-    scene::Normal normal = base ? *base : scene::Normal{};
+    scene::Normal normal = base ? *base : c.defaultNormal;
     bool havePattern = base != nullptr;
     // A declared normal to start from.
     if (const Token first = r.peek(); first.isIdentifier()) {
@@ -774,6 +778,7 @@ std::shared_ptr<const scene::Normal> parseNormalBody(BuildContext& c, const scen
                                  closing == Sym::RBrace ? "}" : "]", describeToken(item)));
     }
     checkPavement(c, normal.pattern, r.peek());
+    if (settings) *settings = normal;
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
 }

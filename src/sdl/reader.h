@@ -118,6 +118,14 @@ class Reader {
     std::filesystem::path findIncludeFile(const std::string& name) const;
     // Fails at `at` when the frame's FileAccessPolicy refuses the file.
     void checkReadable(const std::filesystem::path& path, const std::string& name, const Token& at);
+    // Why findIncludeFile found nothing: a folder of that name, or where
+    // it looked (file_io.cpp).
+    std::string whyNotFound(const std::string& name) const;
+    // The files this parse read (the scene, includes, images, fonts, #read
+    // data: checkReadable records them) and wrote (#fopen write/append).
+    void noteFileRead(const std::filesystem::path& path) { filesRead_.push_back(path); }
+    const std::vector<std::filesystem::path>& filesRead() const { return filesRead_; }
+    const std::vector<std::filesystem::path>& filesWritten() const { return filesWritten_; }
 
     // --- diagnostics ---
     SourceLoc loc(const Token& t) const;
@@ -209,6 +217,7 @@ class Reader {
     Value parseVectorLiteral();
     Value parseColorKeywords(const Token& first);
     Value parseBuiltinFunction(const Token& name);
+    double checkedArgument(const Token& fn, double a);            // povray's domain checks
     std::optional<Value> parseNumericBuiltin(const Token& name);  // nullopt: not one of them
     std::optional<Value> parseStringBuiltin(const Token& name);
     std::optional<Value> parseQueryBuiltin(const Token& name);
@@ -247,8 +256,11 @@ class Reader {
     size_t arrayElementsMade_ = 0;         // elements of every array made so far
     const char* stackFloor_ = nullptr;     // lowest usable stack address (null: unknown)
     std::vector<uint32_t> randomStreams_;  // seed()'s streams, by the number it returns
-    std::vector<FilePtr> openFiles_;       // closed at the end of the parse
-    std::string inputFileName_;            // the scene file as named to the interpreter
+    // Files #fopen opened: closed at the end of the parse, or as soon as
+    // no identifier holds them.
+    std::vector<std::weak_ptr<FileHandle>> openFiles_;
+    std::string inputFileName_;  // the scene file as named to the interpreter
+    std::vector<std::filesystem::path> filesRead_, filesWritten_;
 };
 
 }  // namespace frameray::sdl

@@ -503,6 +503,7 @@ TEST(Options, UntrustedIniNamesPathsOnlyInItsFolders) {
     EXPECT_TRUE(refused("Create_Ini=/tmp/c.ini\n"));
     EXPECT_TRUE(refused("Include_Header=/etc/passwd\n"));
     EXPECT_TRUE(refused("/etc/other.ini\n"));
+    EXPECT_TRUE(refused("/home/someone/.profile\n"));  // a scene named on a line of its own
     // In the INI's folder (or below it) and the working folder: fine.
     EXPECT_FALSE(refused("Library_Path=" + (dir.path / "scene/inc").string() + "\n"));
     EXPECT_FALSE(refused("Output_File_Name=" + (dir.path / "scene/frames/").string() + "\n"));
