@@ -11,6 +11,7 @@
 #include "anim/frame_loop.h"
 #include "anim/interrupt.h"
 #include "anim/sequence.h"
+#include "app/version.h"
 #include "options/option_table.h"
 #include "options/options.h"
 #include "util/durable_file.h"
@@ -34,6 +35,9 @@ int main(int argc, char** argv) {
     for (const std::string& a : args)
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);
+            return 0;
+        } else if (a == "--version" || a == "-version" || a == "--V") {  // povray's spellings
+            std::fputs(app::versionText().c_str(), stdout);
             return 0;
         } else if (a == "--options-markdown") {
             std::fputs(options::optionsMarkdown().c_str(), stdout);

@@ -844,6 +844,7 @@ std::string helpText() {
         "(+X/-X).\n"
         "--list-frames prints the frames the options ask for (number, clock, file) without "
         "rendering.\n"
+        "--version prints frameray's version and those of its libraries.\n"
         "Read in order: povray.ini ($POVINI, ./povray.ini, ~/.povray/3.7/povray.ini, "
         "/etc/povray/3.7/povray.ini: "
         "the first found), then the arguments.\n\n";
