@@ -70,10 +70,12 @@ int main(int argc, char** argv) {
                 std::printf("%d %.17g %s\n", f.number, f.clock, f.output.c_str());
             return 0;
         }
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(opts.inputFile, ec))
+        // As povray: the working folder, then the library path (+L).
+        const std::filesystem::path scene = options::findSceneFile(opts);
+        if (scene.empty())
             throw options::OptionError("cannot open scene file '" + opts.inputFile +
                                        "': no such file");
+        opts.inputFile = scene.string();
         // Options whose effect is not built yet must not be silently
         // ignored; the option table says which values need what.
         if (const std::string missing = options::firstUnsupported(opts); !missing.empty())

@@ -307,6 +307,21 @@ struct Applier {
 
 }  // namespace
 
+fs::path findSceneFile(const RenderOptions& options) {
+    if (options.inputFile.empty()) return {};
+    const fs::path name = options.inputFile;
+    std::vector<fs::path> folders{fs::path()};
+    if (name.is_relative())
+        folders.insert(folders.end(), options.libraryPaths.begin(), options.libraryPaths.end());
+    std::error_code ec;
+    for (const fs::path& folder : folders)
+        for (const fs::path& candidate : {name, fs::path(name.string() + ".pov")}) {
+            const fs::path path = folder.empty() ? candidate : folder / candidate;
+            if (fs::is_regular_file(path, ec)) return path;
+        }
+    return {};
+}
+
 std::vector<std::string> splitOptionString(const std::string& text) {
     std::vector<std::string> out;
     std::string cur;
