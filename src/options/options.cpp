@@ -8,6 +8,7 @@
 
 #include "options/ini_trust.h"
 #include "options/option_table.h"
+#include "util/file_paths.h"
 #include "util/spelling.h"
 
 namespace frameray::options {
@@ -158,9 +159,8 @@ struct Applier {
             if (inUntrustedIni) {
                 // An INI file named by an untrusted one is read only from
                 // the same folders as any other path it names.
-                if (!insideTrustRoots(resolvedForTrust(path), roots) &&
-                    !insideTrustRoots(resolvedForTrust(path),
-                                      {resolvedForTrust(kStandardIniFolder)}))
+                if (!insideTrustRoots(resolvedPath(path), roots) &&
+                    !insideTrustRoots(resolvedPath(path), {resolvedPath(kStandardIniFolder)}))
                     throw OptionError(
                         untrustedPathRefusal({}, {{"INI file", path.string()}}, roots, where));
             } else if (namedIniUntrusted) {
