@@ -21,15 +21,15 @@ constexpr double kPi = std::numbers::pi;
 
 // --- targets --------------------------------------------------------------
 
-// One object photons are shot at: `shape` gives the bounding sphere (a
-// child of a split union, or the target itself), `primitives` the
-// surfaces that count as hitting the target (all of the declared
-// target, so a photon that meets another part of a split union first
-// still reaches it).
+// One object photons are shot at: a child of a split union, or a target
+// itself. Its bounding sphere aims the photons; only photons whose first
+// surface is its own count as hitting it for autostop (measured: a ring
+// and a glass sphere inside it, one split union, shoot exactly as many
+// photons as when each is a target of its own).
 struct Target {
     const scene::Object* shape;
     double multiplier;
-    std::shared_ptr<std::vector<const scene::Object*>> primitives;  // sorted
+    std::vector<const scene::Object*> primitives;  // sorted
     Vec3 centre;
     double radius;
 };
@@ -42,27 +42,25 @@ void collectPrimitives(const scene::Object& obj, std::vector<const scene::Object
     for (const scene::ObjectRef& child : obj.children) collectPrimitives(*child, out);
 }
 
-void addShootingShapes(const scene::Object& obj, double multiplier,
-                       const std::shared_ptr<std::vector<const scene::Object*>>& primitives,
-                       std::vector<Target>& out) {
+void addShootingShapes(const scene::Object& obj, double multiplier, std::vector<Target>& out) {
     // A union is split into its children unless it says split_union off
     // (its children's own target multipliers do not matter then).
     if (obj.isCsg() && obj.op == scene::CsgOp::Union && obj.photons.splitUnion) {
         for (const scene::ObjectRef& child : obj.children)
-            addShootingShapes(*child, multiplier, primitives, out);
+            addShootingShapes(*child, multiplier, out);
         return;
     }
     const scene::Bounds b = obj.surfaceBounds();
     if (b.isEmpty() || !b.isFinite()) return;  // povray cannot aim at an infinite object
-    out.push_back({&obj, multiplier, primitives, (b.lo + b.hi) * 0.5, length(b.hi - b.lo) * 0.5});
+    Target t{&obj, multiplier, {}, (b.lo + b.hi) * 0.5, length(b.hi - b.lo) * 0.5};
+    collectPrimitives(obj, t.primitives);
+    std::sort(t.primitives.begin(), t.primitives.end());
+    out.push_back(std::move(t));
 }
 
 void findTargets(const scene::Object& obj, std::vector<Target>& out) {
     if (obj.photons.target > 0) {
-        auto primitives = std::make_shared<std::vector<const scene::Object*>>();
-        collectPrimitives(obj, *primitives);
-        std::sort(primitives->begin(), primitives->end());
-        addShootingShapes(obj, obj.photons.target, primitives, out);
+        addShootingShapes(obj, obj.photons.target, out);
         return;
     }
     // A target inside a plain union (the union itself is no target).
@@ -71,7 +69,7 @@ void findTargets(const scene::Object& obj, std::vector<Target>& out) {
 }
 
 bool isPartOf(const Target& t, const scene::Object* primitive) {
-    return std::binary_search(t.primitives->begin(), t.primitives->end(), primitive);
+    return std::binary_search(t.primitives.begin(), t.primitives.end(), primitive);
 }
 
 // --- hashing --------------------------------------------------------------
@@ -219,8 +217,8 @@ bool Tracing::trace(Path path) const {
             return false;
         const scene::Object& obj = *hit.object;
         // On its way to the target a photon passes pass_through objects
-        // untouched and is stopped by every other one.
-        if (!path.bounced && !isPartOf(target, &obj)) {
+        // untouched and is stopped by every other one that is no target.
+        if (!path.bounced && obj.photons.target <= 0) {
             if (!obj.photons.passThrough) return false;
             const Vec3 p = path.ray.at(hit.t);
             tMin = hit.t + photonEpsilon(p);
@@ -233,10 +231,10 @@ bool Tracing::trace(Path path) const {
         in && in->interior && in->interior->fades())
         path.power = path.power * interiorFade(*in->interior, hit.t);
     path.travelled += hit.t;
-    const bool first = !path.bounced;
+    const bool onTarget = !path.bounced && isPartOf(target, hit.object);
     if (path.bounced && hit.object->photons.collect) store(path, p);
     interact(path, hit, p);
-    return first;
+    return onTarget;
 }
 
 void Tracing::interact(const Path& path, const Hit& hit, const Vec3& p) const {
