@@ -526,6 +526,7 @@ class Run {
             auto start = Clock::now();
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
+            if (world.photons()) job.stats.photons = world.photons()->stats();
             start = Clock::now();
             const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
             const render::FrameSettings settings = frameSettings(gamma);
@@ -633,7 +634,7 @@ class Run {
         records_.push_back({frame.number, frame.clock, frame.output.filename().string(),
                             job.stats.rays, std::move(job.shapeTests), job.parseSeconds,
                             job.prepareSeconds, job.renderSeconds, job.writeSeconds,
-                            job.commitSeconds});
+                            job.commitSeconds, job.stats.photons});
         const double seconds =
             job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
         const std::string where =
