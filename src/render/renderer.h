@@ -43,6 +43,7 @@ struct FrameImage {
 struct FrameStats {
     RayCounts rays;
     AntialiasCounts antialias;
+    RadiosityCounts radiosity;
     // The photon map's figures, when the scene shot photons.
     std::optional<PhotonStats> photons;
 };

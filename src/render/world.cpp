@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "render/atmosphere.h"
+#include "render/media.h"
 #include "render/optics.h"
 #include "render/photons.h"
 
@@ -163,6 +165,21 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     });
 }
 
+// Embree traces float rays and asserts (aborting the process) unless their
+// origin and direction are finite and below about 1.8e18 in magnitude and
+// tfar is not NaN. A scene can make any of them (a light at
+// <pow(-8,1/3),1,1>, a camera at 1e20): such a ray skips Embree and meets
+// no bounded object. It could meet one only beyond kMaxRayDistance from a
+// finite origin, or at 1e17 from the origin of the scene, where float
+// bounds no longer separate anything.
+bool embreeCanTrace(const scene::Ray& ray, double tMax) {
+    constexpr double kLimit = 1e17;
+    const auto small = [](const Vec3& v) {
+        return std::fabs(v.x) <= kLimit && std::fabs(v.y) <= kLimit && std::fabs(v.z) <= kLimit;
+    };
+    return small(ray.origin) && small(ray.direction) && !std::isnan(tMax);
+}
+
 RTCRay toEmbreeRay(const scene::Ray& ray, double tMax) {
     RTCRay r{};
     r.org_x = static_cast<float>(ray.origin.x);
@@ -243,7 +260,8 @@ World::World(const scene::Scene& scene)
 }
 
 void World::add(const scene::Object* obj) {
-    if (obj->noImage && obj->noShadow && obj->noReflection) return;  // invisible to every ray kind
+    if (obj->noImage && obj->noShadow && obj->noReflection && obj->noRadiosity)
+        return;  // invisible to every ray kind
     // A plain union's first hit is its nearest child's: its children join
     // the BVH one by one (povray splits unions the same way), instead of
     // a union of thousands being searched child by child.
@@ -275,13 +293,15 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
     ctx.tMin = tMin;
-    ctx.tMax = tMax;
+    // povray sees nothing from kMaxRayDistance on (measured: a plane 0.99e7
+    // in front of the camera shows, one 1e7 away does not).
+    ctx.tMax = std::min(tMax, kMaxRayDistance / length(ray.direction));
     ctx.hitObject = nullptr;
     ctx.kind = kind;
     ctx.tests = counters();
-    if (hasBounded_) {
+    if (hasBounded_ && embreeCanTrace(ray, ctx.tMax)) {
         RTCRayHit rh{};
-        rh.ray = toEmbreeRay(ray, tMax);
+        rh.ray = toEmbreeRay(ray, ctx.tMax);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(bvh_, &ctx.embree, &rh);
         if (ctx.error) std::rethrow_exception(ctx.error);
@@ -316,7 +336,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
         }
         found.translucent = true;
     }
-    if (!hasBounded_) return found;
+    if (!hasBounded_ || !embreeCanTrace(ray, tMax)) return found;
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
@@ -341,6 +361,29 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
 
 RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
                         const scene::Light* light) const {
+    RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light);
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.fogs.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        const double speed = length(ray.direction);
+        passed *= fogLightTransmittance(scene_, ray.at(tMin), ray.direction * (1.0 / speed),
+                                        (tMax - tMin) * speed);
+    }
+    // media_attenuation: the scene's media dim the light on its way (povray
+    // leaves it out by default, and for a light without media_interaction;
+    // measured).
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.media.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        MediaSet set;
+        set.add(scene_.atmosphere.media);
+        const double speed = length(ray.direction);
+        const scene::Ray unit{ray.at(tMin), ray.direction * (1.0 / speed)};
+        passed *= mediaTransmittance(unit, (tMax - tMin) * speed, set);
+    }
+    return passed;
+}
+
+RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                         const scene::Light* light) const {
     ThreadState& state = tests_.local();
     const bool refractorsOpaque = photons_ && light && light->photons.refraction;
     // povray's shadow cache: the object that last blocked this light is
@@ -393,9 +436,37 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         if (dot(obj.normalAt(p), ray.direction) < 0 && insideCount < inside.size())
             inside[insideCount++] = {in, t};
     };
+    // Hollow objects with media: the light is dimmed by the media between
+    // where the ray enters and leaves, or from its start when it starts
+    // inside (a media sample point), or to its end when the light is inside
+    // (measured: povray's shadow under a box of absorbing media).
+    std::array<Inside, 8> inMedia{};
+    size_t inMediaCount = 0;
+    auto mediaBetween = [&](const scene::Interior& in, double t0, double t1) {
+        MediaSet set;
+        set.add(in.media);
+        const scene::Ray unit{ray.at(t0), ray.direction * (1.0 / speed)};
+        passed *= mediaTransmittance(unit, (t1 - t0) * speed, set);
+    };
+    auto crossMedia = [&](const scene::Object& obj, const Vec3& p, double t) {
+        const scene::Interior* in = obj.interior.get();
+        if (!in || in->media.empty() || !obj.hollow) return;
+        for (size_t i = 0; i < inMediaCount; ++i) {
+            if (inMedia[i].interior != in) continue;
+            mediaBetween(*in, inMedia[i].from, t);
+            inMedia[i] = inMedia[--inMediaCount];
+            return;
+        }
+        if (dot(obj.normalAt(p), ray.direction) < 0) {
+            if (inMediaCount < inMedia.size()) inMedia[inMediaCount++] = {in, t};
+        } else {
+            mediaBetween(*in, tMin, t);
+        }
+    };
     while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
         const Vec3 p = ray.at(hit.t);
         crossFading(*hit.object, p, hit.t);
+        crossMedia(*hit.object, p, hit.t);
         const RGB through = passing(*hit.object, p, refractorsOpaque);
         if (through.isBlack()) return RGB(0.0);
         passed *= through * fakeCaustics(*hit.object, p, ray.direction);
@@ -403,6 +474,9 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);
     }
+    if (std::isfinite(tMax))
+        for (size_t i = 0; i < inMediaCount; ++i)
+            mediaBetween(*inMedia[i].interior, inMedia[i].from, tMax);
     return passed;
 }
 

@@ -32,6 +32,9 @@ using ShapeTestCounts = std::vector<std::pair<std::string, std::uint64_t>>;
 // opaque there (render-side, shared by shadow rays and their cache).
 RGB lightPassing(const scene::Object& obj, const Vec3& p);
 
+// As in povray, a ray sees no surface this far from its origin or farther.
+inline constexpr double kMaxRayDistance = 1e7;
+
 struct Hit {
     double t = scene::kInfinity;
     const scene::Object* object = nullptr;
@@ -44,8 +47,9 @@ class World {
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
-    // Closest hit with t in (tMin, tMax) among the surfaces `kind` rays
-    // see (camera rays skip no_image, reflected rays no_reflection).
+    // Closest hit with t in (tMin, min(tMax, kMaxRayDistance)) among the
+    // surfaces `kind` rays see (camera rays skip no_image, reflected rays
+    // no_reflection). Any ray may be asked, NaN or huge ones included.
     bool intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
                    scene::RayKind kind = scene::RayKind::Camera) const;
     // Whether anything that casts shadows lies in (tMin, tMax).
@@ -80,6 +84,9 @@ class World {
     };
 
   private:
+    // shadowFilter without the scene's media.
+    RGB surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                      const scene::Light* light) const;
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);

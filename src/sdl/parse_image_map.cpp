@@ -6,21 +6,21 @@
 //   - colours are decoded with the file's gamma - the `gamma` given, else
 //     the one a PNG declares, else sRGB for PNG, TGA, GIF, JPEG, IFF and
 //     sys files and linear for PPM, PGM, TIFF, EXR and HDR - and re-encoded
-//     in the scene's working gamma; a scene without assumed_gamma from
-//     before 3.7 uses the file values as they are;
+//     in the scene's working gamma; before 3.7 a file of unknown gamma
+//     (no `gamma`, no gAMA) gives its values as they are;
 //   - alpha becomes transmit (1 - alpha) on top of `transmit all`; the
 //     colour is taken as not premultiplied unless `premultiplied` says so;
 //   - `filter N` / `transmit N` set palette entries of palette images (GIF)
 //     and are errors on other images; `filter all` / `transmit all` set
 //     every texel, later items overriding earlier ones;
 //   - the scalar of image_pattern and bump_map is the grey value
-//     0.297 r + 0.589 g + 0.114 b of the file values (no gamma), or with
+//     (util/color.h) of the file values (no gamma), or with
 //     use_alpha 1 - alpha; bump_map's use_index takes the palette index
 //     itself (0, 1, 2 ..., not scaled to [0,1]);
 //   - material_map's scalar is the index of the texture: the palette index
 //     of palette images (GIF and palette PNG), the 8-bit red value of
 //     colour images and, for grey images, the grey value taken through
-//     povray's single-precision 0.297/0.589/0.114 weighting times 255,
+//     povray's single-precision grey weighting (greySingle) times 255,
 //     truncated (so 111 gives 110: measured over all 256 grey levels).
 #include <fmt/format.h>
 
@@ -121,8 +121,7 @@ double materialIndex(const image::SourceImage& src, std::size_t p) {
     const double byte = std::floor(static_cast<double>(px.values[p * ch]) * 255.0 + 0.5);
     if (px.channels >= 3) return byte;
     const float g = static_cast<float>(byte) / 255.0f;
-    const float grey = 0.297f * g + 0.589f * g + 0.114f * g;
-    return std::floor(static_cast<double>(grey) * 255.0);
+    return std::floor(static_cast<double>(greySingle(g, g, g)) * 255.0);
 }
 
 }  // namespace
@@ -332,11 +331,11 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
     const std::size_t count =
         static_cast<std::size_t>(px.width) * static_cast<std::size_t>(px.height);
     const int ch = px.channels;
-    const bool grey = ch < 3;
+    const bool greyImage = ch < 3;
     const bool hasAlpha = ch == 2 || ch == 4;
     auto channel = [&](std::size_t p, int c) {
-        return static_cast<double>(
-            px.values[p * static_cast<std::size_t>(ch) + static_cast<std::size_t>(grey ? 0 : c)]);
+        return static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
+                                             static_cast<std::size_t>(greyImage ? 0 : c)]);
     };
     auto alphaOf = [&](std::size_t p) {
         return hasAlpha ? static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
@@ -346,7 +345,12 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
 
     if (use == ImageUse::Pigment) {
         // File values -> linear light -> the working gamma in force now.
-        const bool legacy = !scene_.globals.assumedGammaSet && version_ < 3.7 - 1e-9;
+        // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
+        // file (PNG gAMA) gives holds working-space values, whatever the
+        // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows
+        // the file value v as v^2.2 of linear light).
+        const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
+        const bool asIs = !fileGammaKnown && version_ < 3.7 - 1e-9;
         const double working = scene_.globals.assumedGammaSet ? scene_.globals.assumedGamma : 1.0;
         const double fileGamma = s.gamma                 ? *s.gamma
                                  : src.declaredGamma > 0 ? src.declaredGamma
@@ -354,7 +358,7 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
         auto decode = [&](double v) {
             // A function image's values are working-space values whatever
             // the assumed_gamma (measured).
-            if (legacy || functionImage) return v;
+            if (asIs || functionImage) return v;
             double linear = fileGamma == 0   ? srgbDecode(v)
                             : fileGamma == 1 ? v
                                              : std::pow(v, fileGamma);
@@ -395,7 +399,7 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
             else if (s.useAlpha)
                 v = 1.0 - alphaOf(p);
             else
-                v = 0.297 * channel(p, 0) + 0.589 * channel(p, 1) + 0.114 * channel(p, 2);
+                v = grey(channel(p, 0), channel(p, 1), channel(p, 2));
             texels->values[p] = static_cast<float>(v);
         }
     }
