@@ -20,13 +20,10 @@ import shutil
 import subprocess
 import sys
 
+from sequence_fixture import fail
+
 SETTINGS = [("+WT1", "+WF1"), ("+WT2", "+WF3"), ("Work_Threads=2", "Frames_In_Flight=24")]
 TIMING = re.compile(r"\d+\.\d+ s")
-
-
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 
 
 def run(frameray, root, scene, out, switches):
