@@ -669,6 +669,7 @@ class Run {
             auto start = Clock::now();
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
+            if (world.photons()) job.stats.photons = world.photons()->stats();
             start = Clock::now();
             const auto gamma = image::GammaEncoding::forScene(
                 job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
@@ -795,7 +796,7 @@ class Run {
         records_.push_back({frame.number, frame.clock, frame.output.filename().string(),
                             job.stats.rays, std::move(job.shapeTests), job.parseSeconds,
                             job.prepareSeconds, job.renderSeconds, job.writeSeconds,
-                            job.commitSeconds});
+                            job.commitSeconds, job.stats.photons});
         const double seconds =
             job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
         const std::string where =
