@@ -7,6 +7,7 @@
 
 #include "options/ini_trust.h"
 #include "options/option_table.h"
+#include "util/file_paths.h"
 #include "util/spelling.h"
 
 namespace frameray::options {
@@ -132,7 +133,7 @@ struct Applier {
             if (inUntrustedIni) {
                 // An INI file named by an untrusted one is read only from
                 // the same folders as any other path it names.
-                if (!insideTrustRoots(resolvedForTrust(path), roots))
+                if (!insideTrustRoots(resolvedPath(path), roots))
                     throw OptionError(
                         untrustedPathRefusal({}, {{"INI file", path.string()}}, roots, where));
             } else if (namedIniUntrusted) {

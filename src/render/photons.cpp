@@ -12,6 +12,7 @@
 #include "render/optics.h"
 #include "render/tracer.h"
 #include "render/world.h"
+#include "util/hash.h"
 
 namespace frameray::render {
 
@@ -72,18 +73,6 @@ void findTargets(const scene::Object& obj, std::vector<Target>& out) {
 
 bool isPartOf(const Target& t, const scene::Object* primitive) {
     return std::binary_search(t.primitives->begin(), t.primitives->end(), primitive);
-}
-
-// --- hashing --------------------------------------------------------------
-
-std::uint64_t mix(std::uint64_t z) {
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-double unitHash(std::uint64_t h) {
-    return static_cast<double>(h >> 11) * 0x1.0p-53;
 }
 
 // --- the surface seen by a photon ---------------------------------------
@@ -392,10 +381,10 @@ std::optional<Beam> aim(const scene::Light& light, const Target& target, double 
 
 // The photon j of ring k of a beam.
 scene::Ray photonRay(const Beam& b, int k, int j, int n, double jitter) {
-    const std::uint64_t h =
-        mix(b.seed ^ mix((static_cast<std::uint64_t>(k) << 32) ^ static_cast<std::uint64_t>(j)));
-    const double jr = jitter * (unitHash(h) - 0.5);
-    const double jp = jitter * (unitHash(mix(h)) - 0.5);
+    const std::uint64_t h = splitmix64(
+        b.seed ^ splitmix64((static_cast<std::uint64_t>(k) << 32) ^ static_cast<std::uint64_t>(j)));
+    const double jr = jitter * (unitFromHash(h) - 0.5);
+    const double jp = jitter * (unitFromHash(splitmix64(h)) - 0.5);
     const double dPhi = 2 * kPi / n;
     const double phi = (j + jp) * dPhi;
     if (b.parallel) {
@@ -560,7 +549,7 @@ std::unique_ptr<const Photons> Photons::build(const World& world) {
         const scene::Light& light = scene.lights[li];
         if (!shoots(light)) continue;
         for (size_t ti = 0; ti < targets.size(); ++ti) {
-            const std::uint64_t seed = mix(static_cast<std::uint64_t>(li) * 0x10000 + ti);
+            const std::uint64_t seed = splitmix64(static_cast<std::uint64_t>(li) * 0x10000 + ti);
             if (const auto beam = aim(light, targets[ti], spacing, seed))
                 shooter.shoot(*beam, photons, stats.shot);
         }
