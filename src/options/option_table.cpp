@@ -6,7 +6,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 #include <stdexcept>
+#include <utility>
 
 namespace frameray::options {
 
@@ -75,6 +77,20 @@ double toNonNegative(std::string_view text) {
     if (v < 0) throw std::invalid_argument(fmt::format("'{}' must not be negative", text));
     return v;
 }
+
+// One of a fixed set of words (case-insensitive), e.g. Log_Level's.
+template <typename T>
+T choice(std::string_view text, std::initializer_list<std::pair<std::string_view, T>> words) {
+    const std::string v = trimQuotes(text);
+    std::string names;
+    for (const auto& [word, value] : words) {
+        if (iequals(v, word)) return value;
+        names += fmt::format("{}{}", names.empty() ? "" : ", ", word);
+    }
+    throw std::invalid_argument(fmt::format("'{}' is not one of {}", text, names));
+}
+
+constexpr std::string_view kLogLevelNames[] = {"debug", "info", "warn", "error", "off"};
 
 void mark(RenderOptions& o, std::string_view key) {
     o.explicitlySet.emplace(key);
@@ -442,6 +458,25 @@ const OptionSpec kOptions[] = {
          return lines;
      },
      nullptr},
+    {"Log_Format", "", OptionType::String, "text",
+     "Line format of the run log NAME.frameray.log beside an animation's frames: text, or json "
+     "(one JSON object per event, for farm monitors; schema in the README).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.logFormat =
+             choice<LogFormat>(in.value, {{"text", LogFormat::Text}, {"json", LogFormat::Json}});
+     },
+     FR_WRITE(std::string(o.logFormat == LogFormat::Json ? "json" : "text")), nullptr},
+    {"Log_Level", "", OptionType::String, "info",
+     "Least severe event the run log keeps: debug (adds per-frame parse and render events, also "
+     "shown on the console), info, warn, error, or off (no run log).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.logLevel = choice<LogLevel>(in.value, {{"debug", LogLevel::Debug},
+                                                  {"info", LogLevel::Info},
+                                                  {"warn", LogLevel::Warn},
+                                                  {"error", LogLevel::Error},
+                                                  {"off", LogLevel::Off}});
+     },
+     FR_WRITE(std::string(kLogLevelNames[static_cast<int>(o.logLevel)])), nullptr},
     {"Max_Parse_Iterations", "", OptionType::Int, "100000000",
      "Loop iterations (#while, #for) and macro calls one frame's parse may run before it stops "
      "with an error "

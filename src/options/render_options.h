@@ -34,6 +34,11 @@ struct ShellCommand {
     std::string action;   // the *_Return letters, e.g. "f" or "-s"
 };
 
+// frameray's own run log (anim/run_log.h): the least severe event kept,
+// and the line format.
+enum class LogLevel { Debug, Info, Warn, Error, Off };
+enum class LogFormat { Text, Json };
+
 struct RenderOptions {
     // Input and output.
     std::string inputFile;
@@ -102,6 +107,8 @@ struct RenderOptions {
     bool testAbort = false;
     int testAbortCount = 1;
     std::string createIni;  // Create_Ini (+GI): write the effective options here
+    LogLevel logLevel = LogLevel::Info;
+    LogFormat logFormat = LogFormat::Text;
 
     std::array<StreamOptions, kTextStreams> streams;
     std::array<ShellCommand, kShellHooks> commands;

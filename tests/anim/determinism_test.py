@@ -38,6 +38,8 @@ def run(frameray, root, scene, out, switches):
         if name.endswith(".png"):
             with open(path, "rb") as f:
                 files[name] = f.read()
+        elif name.endswith(".frameray.log"):
+            continue  # the run log records times, threads and pids: not the frames' content
         elif name.endswith(".log"):
             with open(path) as f:
                 files[name] = TIMING.sub("<t>", f.read()).replace(out, "<out>")
