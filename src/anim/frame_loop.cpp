@@ -133,7 +133,7 @@ std::uint64_t settingsHash(const options::RenderOptions& o) {
     for (const options::OptionSpec& spec : options::optionTable()) {
         if (settingsNeutral(spec.iniKey)) continue;
         s += fmt::format("|{}", spec.iniKey);
-        for (const std::string& value : spec.write(o)) s += "=" + value;
+        for (const std::string& value : options::optionValues(spec, o)) s += "=" + value;
     }
     return hashText(s);
 }
