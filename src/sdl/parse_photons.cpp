@@ -5,7 +5,8 @@
 // checked against povray 3.7 (gather and expand_thresholds need both
 // values, radius takes up to four with any left out, count wins over
 // spacing whatever their order, refraction/reflection/collect need a
-// value).
+// value). Media photons and photon map files (save_file, load_file) stop
+// as not supported yet.
 #include <fmt/format.h>
 
 #include "sdl/builders.h"
@@ -41,9 +42,8 @@ void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
                 s.gatherMax = static_cast<int>(r.parseFloat());
                 break;
             case Keyword::kw_media:
-                s.mediaMaxSteps = static_cast<int>(r.parseFloat());
-                if (r.accept(Sym::Comma)) s.mediaFactor = r.parseFloat();
-                break;
+                // Photons are neither stored in media nor gathered there yet.
+                r.unsupported(t, "photons in media (global photons 'media')");
             case Keyword::kw_jitter:
                 s.jitter = r.parseFloat();
                 break;
@@ -73,11 +73,8 @@ void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
                 break;
             }
             case Keyword::kw_save_file:
-                s.saveFile = r.parsePathname();
-                break;
             case Keyword::kw_load_file:
-                s.loadFile = r.parsePathname();
-                break;
+                r.unsupported(t, fmt::format("photon map files ('{}')", t.text));
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
                     r.unsupported(t, fmt::format("'{}' in global photons", t.text));
