@@ -10,8 +10,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <limits>
@@ -226,6 +229,8 @@ struct Job {
     // The image encoded and flushed under a temporary name in stage 2;
     // stage 3 renames it into place and journals it.
     fs::path temporary;
+    // +O-: the encoded image, written to standard output in stage 3.
+    std::vector<unsigned char> encoded;
     std::uintmax_t fileSize = 0;
     std::uint64_t fileHash = 0;
     render::FrameStats stats;
@@ -305,7 +310,7 @@ class Run {
 
   private:
     int executeRun() {
-        if (o_.outputToFile && !seq_.frames.empty()) {
+        if (toFiles_ && !seq_.frames.empty()) {
             std::error_code ec;
             // Every frame and the journal are in the same folder, created
             // only when Output_File_Name names it as a folder ("dir/");
@@ -681,12 +686,15 @@ class Run {
             job.renderSeconds = secondsSince(start);
             // Encoding, compression and the flush to disk happen here, in
             // parallel; stage 3 only renames and journals.
-            if (o_.outputToFile && !decided_) {
+            if (toStdout_ && !decided_) {
                 start = Clock::now();
-                const fs::path temporary = image::writeTemporary(
-                    job.frame->output, seq_.fileType,
-                    image::encodeFrame(image.width, image.height, image.rgb, image.alpha, gamma,
-                                       o_.bitDepth, seq_.window));
+                job.encoded =
+                    image::encodeFile(seq_.fileType, fileImage(image, gamma), "standard output");
+                job.writeSeconds = secondsSince(start);
+            } else if (toFiles_ && !decided_) {
+                start = Clock::now();
+                const fs::path temporary = image::writeTemporary(job.frame->output, seq_.fileType,
+                                                                 fileImage(image, gamma));
                 job.temporary = temporary;
                 const auto hash = hashFile(temporary, &job.fileSize);
                 if (!hash)
@@ -770,7 +778,21 @@ class Run {
             return;
         }
         FrameLog& log = *job.log;
-        if (!job.failed && o_.outputToFile) {
+        if (!job.failed && toStdout_) {
+            const auto start = Clock::now();
+            if (std::fwrite(job.encoded.data(), 1, job.encoded.size(), stdout) !=
+                    job.encoded.size() ||
+                std::fflush(stdout) != 0) {
+                log.message(sdl::Stream::Fatal,
+                            fmt::format("error: frame {}: cannot write the image to standard "
+                                        "output: {}",
+                                        frame.number, std::strerror(errno)));
+                job.failed = true;
+            }
+            job.encoded = {};
+            job.commitSeconds = secondsSince(start);
+            job.writeSeconds += job.commitSeconds;
+        } else if (!job.failed && toFiles_) {
             const auto start = Clock::now();
             try {
                 image::commitTemporary(job.temporary, frame.output);
@@ -789,7 +811,7 @@ class Run {
         if (job.failed) {
             logEvent(LogLevel::Error, "failed",
                      {{"frame", frame.number}, {"clock", frame.clock}, {"reason", job.failure}});
-            if (o_.outputToFile) saveLog(log, frame);
+            if (toFiles_) saveLog(log, frame);
             return decide({Outcome::Kind::Fatal, "", &frame});
         }
         ++finished_;
@@ -799,12 +821,13 @@ class Run {
                             job.commitSeconds, job.stats.photons});
         const double seconds =
             job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
-        const std::string where =
-            o_.outputToFile ? frame.output.string() : std::string("(no file)");
+        const std::string where = toFiles_    ? frame.output.string()
+                                  : toStdout_ ? std::string("(standard output)")
+                                              : std::string("(no file)");
         logEvent(LogLevel::Info, "written",
                  {{"frame", frame.number},
                   {"clock", frame.clock},
-                  {"file", o_.outputToFile ? frame.output.filename().string() : std::string()},
+                  {"file", toFiles_ ? frame.output.filename().string() : std::string()},
                   {"bytes", job.fileSize},
                   {"parse_seconds", job.parseSeconds},
                   {"prepare_seconds", job.prepareSeconds},
@@ -829,8 +852,7 @@ class Run {
         }
         // The image is complete and journalled already: a log that cannot
         // be written ends the run but keeps the frame.
-        if (o_.outputToFile && !saveLog(log, frame))
-            return decide({Outcome::Kind::Fatal, "", &frame});
+        if (toFiles_ && !saveLog(log, frame)) return decide({Outcome::Kind::Fatal, "", &frame});
         progress_.finished(frame.number, false);
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
             case HookAction::Continue:
@@ -879,7 +901,7 @@ class Run {
     // frames of an animation: per-frame statistics, their sums, and how
     // busy the cores were.
     void writeStatistics() const {
-        if (!o_.outputToFile || !seq_.animated || seq_.frames.empty()) return;
+        if (!toFiles_ || !seq_.animated || seq_.frames.empty()) return;
         const fs::path dir = seq_.frames.front().output.parent_path();
         const fs::path path = (dir.empty() ? fs::path(".") : dir) / seq_.statisticsName;
         const std::string text = sequenceJson(figures(), records_, kept_);
@@ -968,6 +990,36 @@ class Run {
     static constexpr size_t kMaxDefaultFramesInFlight = 16;
 
     const options::RenderOptions& o_;
+    // Output_File_Name=- (+O-): the images go to standard output, one
+    // after another in frame order (povray writes them there too); no
+    // files, journal, frame logs or sequence.json then.
+    const bool toStdout_ = o_.outputToFile && o_.outputFile == "-";
+    const bool toFiles_ = o_.outputToFile && !toStdout_;
+
+    // povray writes grey PNG files with 16 bits whatever the depth asked
+    // (measured: Grayscale_Output with +FN8 gives a 16-bit grey PNG).
+    int fileBitDepth() const {
+        return o_.grayscaleOutput && seq_.fileType == image::FileType::PNG ? 16 : o_.bitDepth;
+    }
+
+    // A rendered frame as the file's values: gamma, window, alpha, grey
+    // (Grayscale_Output) and the dithering asked for (Dither).
+    image::EncodedImage fileImage(const render::FrameImage& frame,
+                                  const image::GammaEncoding& gamma) const {
+        image::EncodedImage out =
+            image::encodeFrame(frame.width, frame.height, frame.rgb, frame.alpha, gamma,
+                               fileBitDepth(), seq_.window, o_.grayscaleOutput);
+        if (o_.dither) {
+            static constexpr std::pair<std::string_view, image::Dither> kMethods[] = {
+                {"FS", image::Dither::FloydSteinberg},
+                {"B2", image::Dither::Bayer2},
+                {"B3", image::Dither::Bayer3},
+                {"B4", image::Dither::Bayer4}};
+            for (const auto& [name, method] : kMethods)
+                if (o_.ditherMethod == name) out.dither = method;
+        }
+        return out;
+    }
     const Sequence& seq_;
     mutable RunStreams streams_;
     Progress progress_;

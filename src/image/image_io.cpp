@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "image/codecs.h"
+#include "image/dither.h"
 #include "image/gif_decoder.h"
 #include "image/png_palette.h"
 #include "image/png_writer.h"
@@ -42,18 +43,14 @@ const TypeInfo& info(FileType t) {
 
 // Rounds to `bits` bits, then spreads the levels over the container's
 // range (a 5-bit level 14 in an 8-bit channel is 14*255/31 = 115).
+// Rounded or dithered as the image says (image/dither.h); NaN is black.
 template <typename T>
-std::vector<T> quantize(const std::vector<float>& values, int bits, double containerMax) {
+std::vector<T> quantize(const EncodedImage& image, int bits, double containerMax) {
     const double levels = std::ldexp(1.0, bits) - 1.0;
-    std::vector<T> out(values.size());
-    for (size_t i = 0; i < values.size(); ++i) {
-        // NaN (a scene's NaN light, say) is written black, as povray does;
-        // converting it to an integer would be undefined.
-        const double v =
-            std::isnan(values[i]) ? 0.0 : std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
-        const double q = std::floor(v * levels + 0.5);
-        out[i] = static_cast<T>(std::floor(q * containerMax / levels + 0.5));
-    }
+    const std::vector<double> q = quantizeToLevels(image, levels);
+    std::vector<T> out(q.size());
+    for (size_t i = 0; i < q.size(); ++i)
+        out[i] = static_cast<T>(std::floor(q[i] * containerMax / levels + 0.5));
     return out;
 }
 
@@ -92,6 +89,18 @@ void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image)
 }
 
 fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage& image) {
+    const std::vector<unsigned char> bytes = encodeFile(type, image, path);
+    // Unique per process and target, in the same folder so the rename is
+    // atomic; on the device before it is renamed and journalled, so a frame
+    // the journal calls finished survives a power cut.
+    const fs::path tmp = temporaryPathFor(path);
+    util::writeFileDurably(
+        tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
+    return tmp;
+}
+
+std::vector<unsigned char> encodeFile(FileType type, const EncodedImage& image,
+                                      const fs::path& path) {
     const TypeInfo& ti = info(type);
     const bool floatFile = type == FileType::EXR || type == FileType::HDR;
     const int bits = std::clamp(image.bitDepth, 1, hasDeepChannels(type) ? 16 : 8);
@@ -109,11 +118,11 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
         request.pixelType = PixelType::Half;
         request.pixels = image.values.data();
     } else if (deep) {
-        samples16 = quantize<uint16_t>(image.values, bits, 65535.0);
+        samples16 = quantize<uint16_t>(image, bits, 65535.0);
         request.pixelType = PixelType::UInt16;
         request.pixels = samples16.data();
     } else {
-        samples8 = quantize<uint8_t>(image.values, bits, 255.0);
+        samples8 = quantize<uint8_t>(image, bits, 255.0);
         request.pixelType = PixelType::UInt8;
         request.pixels = samples8.data();
     }
@@ -126,13 +135,7 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(fmt::format("cannot encode '{}': {}", path.string(), e.what()));
     }
-    // Unique per process and target, in the same folder so the rename is
-    // atomic; on the device before it is renamed and journalled, so a frame
-    // the journal calls finished survives a power cut.
-    const fs::path tmp = temporaryPathFor(path);
-    util::writeFileDurably(
-        tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
-    return tmp;
+    return bytes;
 }
 
 void commitTemporary(const fs::path& tmp, const fs::path& path) {

@@ -18,12 +18,17 @@ enum class FileType { PNG, TGA, TGA_RLE, PPM, EXR, HDR, JPEG, TIFF, BMP };
 // POV-Ray does: depths up to 8 are stored in 8-bit channels (a 5-bit value
 // v is written as v*255/31), deeper ones in 16-bit channels where the
 // format has them (PNG, PPM, TIFF) and as 8 bits elsewhere.
+// Dither (Dither_Method): how values are quantised to the file's levels
+// (image/dither.h).
+enum class Dither { None, FloydSteinberg, Bayer2, Bayer3, Bayer4 };
+
 struct EncodedImage {
     int width = 0;
     int height = 0;
     int channels = 3;
     int bitDepth = 8;
     std::vector<float> values;
+    Dither dither = Dither::None;
 };
 
 const char* extensionFor(FileType type);
@@ -46,6 +51,11 @@ void writeAtomic(const std::filesystem::path& path, FileType type, const Encoded
 std::filesystem::path writeTemporary(const std::filesystem::path& path, FileType type,
                                      const EncodedImage& image);
 void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
+// The bytes of the file writeTemporary writes (for +O-, standard output);
+// `path` names the image in messages.
+std::vector<unsigned char> encodeFile(FileType type, const EncodedImage& image,
+                                      const std::filesystem::path& path);
 
 // Reads any image OpenImageIO knows as floats in [0,1] (tests, tools).
 EncodedImage read(const std::filesystem::path& path);

@@ -439,11 +439,11 @@ const OptionSpec kOptions[] = {
     {"Dither", "", OptionType::Bool, "off",
      "Dither the colours to the output file's levels (Dither_Method), as povray does.",
      [](RenderOptions& o, const OptionInput& in) { o.dither = toBool(in); },
-     FR_WRITE(onOff(o.dither)),
-     [](const RenderOptions& o) -> const char* { return o.dither ? "dithered output (Dither)" : nullptr; }},
+     FR_WRITE(onOff(o.dither)), nullptr},
     {"Dither_Method", "", OptionType::String, "FS",
-     "How Dither dithers: FS Floyd-Steinberg error diffusion, B2, B3, B4 Bayer patterns of that "
-     "size.",
+     "How Dither dithers: B2, B3, B4 Bayer patterns of that size (povray's, pixel for pixel), FS "
+     "Floyd-Steinberg error diffusion (povray's own variant differs by one level in some "
+     "pixels).",
      [](RenderOptions& o, const OptionInput& in) {
          std::string v = trimQuotes(in.value);
          for (char& c : v) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -519,7 +519,10 @@ const OptionSpec kOptions[] = {
      [](RenderOptions& o, const OptionInput& in) { o.grayscaleOutput = toBool(in); },
      FR_WRITE(onOff(o.grayscaleOutput)),
      [](const RenderOptions& o) -> const char* {
-         return o.grayscaleOutput ? "grey output (Grayscale_Output)" : nullptr;
+         // povray: "Unsupported combination of options" for the others.
+         return o.grayscaleOutput && o.outputType != 'N' && o.outputType != 'P'
+                    ? "grey output to other files than PNG and PPM (povray refuses it too)"
+                    : nullptr;
      }},
     {"Height", "H", OptionType::Int, "600", "Image height in pixels.",
      [](RenderOptions& o, const OptionInput& in) { o.height = toPositiveInt(in.value); },
@@ -633,12 +636,10 @@ const OptionSpec kOptions[] = {
     {"Output_File_Name", "O", OptionType::Path, "scene name",
      "Output image file, or a folder (ending in /) to put it in. Frame numbers are appended in "
      "animations; the "
-     "file type's extension is added unless the name ends with it.",
+     "file type's extension is added unless the name ends with it. - (+O-): standard output, the "
+     "frames one after another (messages go to standard error).",
      [](RenderOptions& o, const OptionInput& in) { o.outputFile = trimQuotes(in.value); },
-     FR_WRITE(quoted(o.outputFile)),
-     [](const RenderOptions& o) -> const char* {
-         return o.outputFile == "-" ? "writing the image to standard output (+O-)" : nullptr;
-     }},
+     FR_WRITE(quoted(o.outputFile)), nullptr},
     {"Output_File_Type", "F", OptionType::FileType, "N",
      "File type: N png, P ppm, T tga, C compressed tga, E exr, H hdr, J jpeg, B bmp; optional bit "
      "depth (+FN16). "
