@@ -373,7 +373,8 @@ class Run {
     // The run log beside an animation's frames (anim/run_log.h); a log
     // that cannot be opened is a warning, never the end of the run.
     void openRunLog() {
-        if (!seq_.animated || o_.logLevel == LogLevel::Off) return;
+        // +O- writes no file beside the frames, this one neither.
+        if (!seq_.animated || o_.logLevel == LogLevel::Off || toStdout_) return;
         const fs::path folder = seq_.frames.front().output.parent_path();
         const fs::path path = (folder.empty() ? fs::path(".") : folder) / seq_.runLogName;
         try {
@@ -783,11 +784,9 @@ class Run {
             if (std::fwrite(job.encoded.data(), 1, job.encoded.size(), stdout) !=
                     job.encoded.size() ||
                 std::fflush(stdout) != 0) {
-                log.message(sdl::Stream::Fatal,
-                            fmt::format("error: frame {}: cannot write the image to standard "
-                                        "output: {}",
-                                        frame.number, std::strerror(errno)));
-                job.failed = true;
+                failJob(job, fmt::format("error: frame {}: cannot write the image to standard "
+                                         "output: {}",
+                                         frame.number, std::strerror(errno)));
             }
             job.encoded = {};
             job.commitSeconds = secondsSince(start);
