@@ -85,10 +85,6 @@ double defaultFileGamma(Keyword type, const std::string& name) {
     }
 }
 
-double srgbDecode(double v) {
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
 struct ImageSettings {
     Keyword type = Keyword::None;
     std::string name;
@@ -112,19 +108,6 @@ struct ImageSettings {
     bool bumpSizeGiven = false;
 };
 
-// The texture a material_map pixel picks before the list length is
-// applied (see the header comment for the rules measured).
-double materialIndex(const image::SourceImage& src, std::size_t p) {
-    if (src.isPalette()) return src.indices[p];
-    const image::EncodedImage& px = src.pixels;
-    const auto ch = static_cast<std::size_t>(px.channels);
-    const double byte = std::floor(static_cast<double>(px.values[p * ch]) * 255.0 + 0.5);
-    if (px.channels >= 3) return byte;
-    const float g = static_cast<float>(byte) / 255.0f;
-    const float grey = 0.297f * g + 0.589f * g + 0.114f * g;
-    return std::floor(static_cast<double>(grey) * 255.0);
-}
-
 }  // namespace
 
 const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, const Token& at) {
@@ -140,7 +123,7 @@ const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, 
     } catch (const std::runtime_error& e) {
         fail(at, e.what());
     }
-    if (img->pixels.width <= 0 || img->pixels.height <= 0)
+    if (img->width() <= 0 || img->height() <= 0)
         fail(at, fmt::format("image '{}' has no pixels", name));
     return *images_.emplace(key, std::move(img)).first->second;
 }
@@ -155,20 +138,17 @@ image::SourceImage Interpreter::functionSourceImage(const Token& at) {
         fail(sizeAt, fmt::format("function image resolution {} x {} has more than {} samples", w, h,
                                  frame_.limits.arrayElements));
     const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(at);
-    image::SourceImage src;
-    image::EncodedImage& img = src.pixels;
-    img.width = static_cast<int>(w);
-    img.height = static_cast<int>(h);
-    img.channels = 1;
-    img.bitDepth = 16;
-    img.values.resize(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
+    const int width = static_cast<int>(w), height = static_cast<int>(h);
+    auto pixels =
+        std::make_shared<util::PixelBuffer>(width, height, 1, util::PixelBuffer::Sample::U16);
     // As a height_field function (measured with pigment functions): pixel
     // (i, j), j = 0 the top row, holds f(i / (W - 1), j / (H - 1), 0) as
     // 16 bits, truncated and wrapped (1.1 reads back as 0.1).
-    for (int j = 0; j < img.height; ++j)
-        for (int i = 0; i < img.width; ++i) {
-            double args[3] = {static_cast<double>(i) / (img.width - 1),
-                              static_cast<double>(j) / (img.height - 1), 0.0};
+    for (int j = 0; j < height; ++j) {
+        auto* row = reinterpret_cast<std::uint16_t*>(pixels->row(j));
+        for (int i = 0; i < width; ++i) {
+            double args[3] = {static_cast<double>(i) / (width - 1),
+                              static_cast<double>(j) / (height - 1), 0.0};
             double value;
             try {
                 value = fn->eval(args);
@@ -176,10 +156,11 @@ image::SourceImage Interpreter::functionSourceImage(const Token& at) {
                 fail(at, e.what());
             }
             const auto level = static_cast<long long>(value * 65535.0);
-            const auto wrapped = static_cast<unsigned long long>(level) & 0xFFFFu;
-            img.values[static_cast<size_t>(j) * static_cast<size_t>(img.width) +
-                       static_cast<size_t>(i)] = static_cast<float>(wrapped) / 65535.0f;
+            row[i] = static_cast<std::uint16_t>(static_cast<unsigned long long>(level) & 0xFFFFu);
         }
+    }
+    image::SourceImage src;
+    src.pixels = std::move(pixels);
     return src;
 }
 
@@ -320,84 +301,41 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
 
     const image::SourceImage& src =
         functionImage ? *functionImage : loadSourceImage(s.name, s.nameAt);
-    const image::EncodedImage& px = src.pixels;
     for (const auto& a : s.amounts)
         if (a.index >= 0 && !src.isPalette())
             fail(a.at, fmt::format("Keyword '{}' cannot be used with non color-mapped image.",
                                    a.at.text));
 
-    auto texels = std::make_shared<scene::ImageTexels>();
-    texels->width = px.width;
-    texels->height = px.height;
-    const std::size_t count =
-        static_cast<std::size_t>(px.width) * static_cast<std::size_t>(px.height);
-    const int ch = px.channels;
-    const bool grey = ch < 3;
-    const bool hasAlpha = ch == 2 || ch == 4;
-    auto channel = [&](std::size_t p, int c) {
-        return static_cast<double>(
-            px.values[p * static_cast<std::size_t>(ch) + static_cast<std::size_t>(grey ? 0 : c)]);
-    };
-    auto alphaOf = [&](std::size_t p) {
-        return hasAlpha ? static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
-                                                        static_cast<std::size_t>(ch - 1)])
-                        : 1.0;
-    };
-
+    std::shared_ptr<const scene::ImageTexels> texels;
     if (use == ImageUse::Pigment) {
         // File values -> linear light -> the working gamma in force now.
-        const bool legacy = !scene_.globals.assumedGammaSet && version_ < 3.7 - 1e-9;
-        const double working = scene_.globals.assumedGammaSet ? scene_.globals.assumedGamma : 1.0;
-        const double fileGamma = s.gamma                 ? *s.gamma
-                                 : src.declaredGamma > 0 ? src.declaredGamma
-                                                         : defaultFileGamma(s.type, s.name);
-        auto decode = [&](double v) {
-            // A function image's values are working-space values whatever
-            // the assumed_gamma (measured).
-            if (legacy || functionImage) return v;
-            double linear = fileGamma == 0   ? srgbDecode(v)
-                            : fileGamma == 1 ? v
-                                             : std::pow(v, fileGamma);
-            return working == 1.0 ? linear : std::pow(linear, 1.0 / working);
-        };
+        scene::ImageTexels::ColorDecoding d;
+        // A function image's values are working-space values whatever the
+        // assumed_gamma (measured).
+        d.asStored = (!scene_.globals.assumedGammaSet && version_ < 3.7 - 1e-9) || functionImage;
+        d.workingGamma = scene_.globals.assumedGammaSet ? scene_.globals.assumedGamma : 1.0;
+        d.fileGamma = s.gamma                 ? *s.gamma
+                      : src.declaredGamma > 0 ? src.declaredGamma
+                                              : defaultFileGamma(s.type, s.name);
+        d.premultiplied = s.premultiplied;
         // Palette images: filter and transmit per palette entry.
-        std::array<double, 256> filter{}, transmit{};
-        double filterAll = 0, transmitAll = 0;
         for (const auto& a : s.amounts) {
-            auto& table = a.filter ? filter : transmit;
+            auto& table = a.filter ? d.paletteFilter : d.paletteTransmit;
             if (a.index >= 0) {
                 table[static_cast<std::size_t>(a.index)] = a.value;
             } else {
                 table.fill(a.value);
-                (a.filter ? filterAll : transmitAll) = a.value;
+                (a.filter ? d.filterAll : d.transmitAll) = a.value;
             }
         }
-        texels->colors.resize(count);
-        for (std::size_t p = 0; p < count; ++p) {
-            RGB rgb(decode(channel(p, 0)), decode(channel(p, 1)), decode(channel(p, 2)));
-            const double alpha = alphaOf(p);
-            if (s.premultiplied && alpha > 0) rgb *= 1.0 / alpha;
-            double f = filterAll, t = transmitAll;
-            if (src.isPalette()) {
-                f = filter[src.indices[p]];
-                t = transmit[src.indices[p]];
-            }
-            texels->colors[p] = Color(rgb, f, t + (1.0 - alpha));
-        }
+        texels = std::make_shared<const scene::ImageTexels>(src.pixels, d);
     } else {
-        texels->values.resize(count);
-        for (std::size_t p = 0; p < count; ++p) {
-            double v;
-            if (use == ImageUse::Bump && s.useIndex && src.isPalette())
-                v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
-            else if (use == ImageUse::Material)
-                v = materialIndex(src, p);
-            else if (s.useAlpha)
-                v = 1.0 - alphaOf(p);
-            else
-                v = 0.297 * channel(p, 0) + 0.589 * channel(p, 1) + 0.114 * channel(p, 2);
-            texels->values[p] = static_cast<float>(v);
-        }
+        using Scalar = scene::ImageTexels::Scalar;
+        const Scalar scalar = use == ImageUse::Bump && s.useIndex && src.isPalette() ? Scalar::Index
+                              : use == ImageUse::Material ? Scalar::MaterialIndex
+                              : s.useAlpha                ? Scalar::Alpha
+                                                          : Scalar::Grey;
+        texels = std::make_shared<const scene::ImageTexels>(src.pixels, scalar);
     }
     if (bumpSize && s.bumpSizeGiven) *bumpSize = s.bumpSize;
     return std::make_shared<const scene::ImageMap>(std::move(texels), s.mapping, s.once,

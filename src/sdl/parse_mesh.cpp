@@ -306,19 +306,23 @@ namespace {
 // povray 3.7's heights from an image's pixels (measured with trace()):
 // grey values as 16 bits (8-bit v as v * 257), colour pixels as red * 256 +
 // green for 8-bit images.
-std::vector<uint16_t> heightsFromImage(const image::EncodedImage& img) {
-    std::vector<uint16_t> out(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
-    const bool grey = img.channels < 3;
-    const bool deep = img.bitDepth > 8;
-    for (size_t p = 0; p < out.size(); ++p) {
-        const float* px = &img.values[p * static_cast<size_t>(img.channels)];
-        if (deep) {
-            out[p] = static_cast<uint16_t>(std::lround(std::clamp(px[0], 0.0f, 1.0f) * 65535.0f));
-        } else {
-            const long r = std::lround(std::clamp(px[0], 0.0f, 1.0f) * 255.0f);
-            const long g = grey ? r : std::lround(std::clamp(px[1], 0.0f, 1.0f) * 255.0f);
+std::vector<uint16_t> heightsFromImage(const util::PixelBuffer& img) {
+    std::vector<uint16_t> out(img.pixelCount());
+    if (img.isPalette()) {
+        // Palette images (GIF, palette PNG): the colour index is the
+        // height, as the high byte (seed 003: index 0 lowest, 255 highest).
+        for (size_t p = 0; p < out.size(); ++p) out[p] = static_cast<uint16_t>(img.index(p) * 256);
+        return out;
+    }
+    const bool grey = img.channels() < 3;
+    if (img.sample() == util::PixelBuffer::Sample::U8) {
+        for (size_t p = 0; p < out.size(); ++p) {
+            const uint32_t r = img.level(p, 0), g = grey ? r : img.level(p, 1);
             out[p] = static_cast<uint16_t>(r * 256 + g);
         }
+    } else {
+        // 16 bits and floats (clamped to [0,1], scaled to 16 bits).
+        for (size_t p = 0; p < out.size(); ++p) out[p] = static_cast<uint16_t>(img.level(p, 0));
     }
     return out;
 }
@@ -389,20 +393,11 @@ void Interpreter::parseHeightField(scene::Object& obj) {
         const std::string name = parsePathname();
         // The same per-frame image cache as image maps (parse_image_map.cpp).
         const image::SourceImage& source = loadSourceImage(name, nameAt);
-        const image::EncodedImage& img = source.pixels;
-        if (img.width < 2 || img.height < 2)
+        if (source.width() < 2 || source.height() < 2)
             fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
-        width = img.width;
-        height = img.height;
-        if (source.isPalette()) {
-            // Palette images (GIF): the colour index is the height, as the
-            // high byte (seed 003: index 0 lowest, 255 highest).
-            heights.resize(source.indices.size());
-            for (size_t p = 0; p < heights.size(); ++p)
-                heights[p] = static_cast<uint16_t>(source.indices[p] * 256);
-        } else {
-            heights = heightsFromImage(img);
-        }
+        width = source.width();
+        height = source.height();
+        heights = heightsFromImage(*source.pixels);
     }
     bool smooth = false;
     double waterLevel = 0;
