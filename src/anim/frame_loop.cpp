@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 #include <signal.h>
 #include <sys/resource.h>
-#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_group.h>
 #include <unistd.h>
@@ -33,9 +31,9 @@
 #include "anim/progress.h"
 #include "anim/statistics.h"
 #include "image/codecs.h"
+#include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
-#include "render/gamma.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -51,7 +49,7 @@ using options::TextStream;
 
 namespace {
 
-const fs::path kDefaultLibrary = "/usr/share/povray-3.7/include";
+const fs::path kDefaultLibrary = options::kStandardIncludeFolder;
 
 sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& seq,
                              const FrameSpec& f) {
@@ -101,70 +99,79 @@ void refuseAlphaWith(const scene::Scene& scene) {
         throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
 }
 
-image::EncodedImage encode(const render::FrameImage& img, const render::GammaEncoding& gamma,
-                           int bitDepth, const RenderWindow& window) {
-    image::EncodedImage out;
-    out.width = img.width;
-    out.height = img.height;
-    const bool alpha = !img.alpha.empty();
-    out.channels = alpha ? 4 : 3;
-    out.bitDepth = bitDepth;
-    out.values.resize(static_cast<size_t>(img.width) * img.height * out.channels);
-    // Rows in parallel: three pow() per pixel are tens of milliseconds a
-    // frame, which a still image would otherwise spend on one core.
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, img.height, 16), [&](const tbb::blocked_range<int>& rows) {
-            for (int y = rows.begin(); y < rows.end(); ++y)
-                for (int x = 0; x < img.width; ++x) {
-                    // povray writes the pixels outside the render window
-                    // black (and transparent).
-                    const bool inside =
-                        x >= window.x0 && x < window.x1 && y >= window.y0 && y < window.y1;
-                    const size_t pixel = static_cast<size_t>(y) * img.width + x;
-                    float* dst = &out.values[pixel * out.channels];
-                    const float a = alpha ? img.alpha[pixel] : 1.0f;
-                    for (int c = 0; c < 3; ++c) {
-                        const double v = img.rgb[pixel * 3 + c];
-                        // With alpha the colour sums what the visible
-                        // surfaces add; PNG and TGA hold it un-premultiplied
-                        // (measured: povray writes encode(colour / alpha)).
-                        dst[c] =
-                            !inside ? 0.0f
-                            : alpha
-                                ? (a > 0 ? static_cast<float>(gamma.encode(std::min(1.0, v / a)))
-                                         : 0.0f)
-                                : static_cast<float>(gamma.encode(v));
-                    }
-                    if (alpha) dst[3] = inside ? a : 0.0f;
-                }
-        });
-    return out;
+// Options that do not change what a frame looks like: which frames a run
+// renders (subsets, steps, shards), how it runs, and where its messages go.
+// Every other option is part of the journal's settings hash.
+bool settingsNeutral(std::string_view key) {
+    // clang-format off
+    static constexpr std::string_view kNeutral[] = {
+        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Continue_Trace",
+        "Create_Ini",           "Display",            "Display_Gamma",      "Field_Render",
+        "File_Restrictions",    "Frame_Step",         "Frames_In_Flight",   "Input_File_Name",
+        "Max_Parse_Iterations", "Odd_Field",          "Output_File_Name",   "Output_To_File",
+        "Pause_When_Done",      "Read_Path",          "Shard_Count",        "Shard_Index",
+        "Subset_End_Frame",     "Subset_Start_Frame", "Test_Abort",         "Test_Abort_Count",
+        "Verbose",              "Work_Threads",       "Write_Path"};
+    // clang-format on
+    for (const std::string_view n : kNeutral)
+        if (key == n) return true;
+    // The text streams and the shell-outs.
+    return key.ends_with("_Console") || key.ends_with("_File") || key.ends_with("_Command") ||
+           key.ends_with("_Return");
 }
 
 // What makes two runs' images comparable: a journal written with other
-// values is not trusted.
-std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq) {
+// values of any option that changes a frame (size, window, quality,
+// anti-aliasing, gamma, clocks, declares, library path...) is not trusted.
+// The scene and the files it reads are checked frame by frame (journal.h).
+std::uint64_t settingsHash(const options::RenderOptions& o) {
     std::error_code ec;
-    // Shards share the images but not the journal (each has its own), so
-    // the shard is not part of the settings.
-    std::string s = fmt::format(
-        "{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(), o.width,
-        o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
-        seq.window.x1, seq.window.y1, o.version, o.quality, o.includeHeader);
-    for (const auto& [k, v] : o.declares) s += fmt::format("|{}={}", k, v);
-    for (const auto& p : o.libraryPaths) s += fmt::format("|{}", p.string());
+    std::string s = fs::absolute(o.inputFile, ec).string();
+    for (const options::OptionSpec& spec : options::optionTable()) {
+        if (settingsNeutral(spec.iniKey)) continue;
+        s += fmt::format("|{}", spec.iniKey);
+        for (const std::string& value : spec.write(o)) s += "=" + value;
+    }
     return hashText(s);
 }
 
-// Temporary files left by a run that was killed mid-write: of the frames,
-// of sequence.json and of the journal (rewritten when a run resumes).
-void removeStaleTemporaries(const Sequence& seq) {
-    std::set<fs::path> folders;
-    std::set<std::string> names{seq.statisticsName};
-    for (const FrameSpec& f : seq.frames) {
-        folders.insert(f.output.parent_path().empty() ? fs::path(".") : f.output.parent_path());
-        names.insert(f.output.filename().string());
+// The journals of a sharded run of this sequence (beside its own), which a
+// run without shards takes over when resuming.
+std::vector<fs::path> shardJournals(const Sequence& seq) {
+    std::vector<fs::path> out;
+    if (seq.shardCount > 1) return out;
+    const std::string name = seq.journal.filename().string();  // ".NAME.frameray-journal"
+    const std::string suffix = ".frameray-journal";
+    if (!name.ends_with(suffix)) return out;
+    const std::string prefix = name.substr(0, name.size() - suffix.size()) + ".shard-";
+    const fs::path dir =
+        seq.journal.parent_path().empty() ? fs::path(".") : seq.journal.parent_path();
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string n = entry.path().filename().string();
+        if (n.starts_with(prefix) && n.ends_with(suffix)) out.push_back(entry.path());
     }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// A file as the journal names it: absolute, '..' and links resolved.
+std::string journalName(const fs::path& p) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(p, ec);
+    const fs::path canonical = fs::weakly_canonical(absolute, ec);
+    return (ec ? absolute.lexically_normal() : canonical).string();
+}
+
+// Temporary files left by a run that was killed mid-write: of the frames,
+// their logs, sequence.json and the journal (rewritten when a run resumes).
+void removeStaleTemporaries(const Sequence& seq) {
+    // Every frame of a sequence is in one folder; the journal beside them.
+    std::set<fs::path> folders;
+    const fs::path frameFolder = seq.frames.front().output.parent_path();
+    folders.insert(frameFolder.empty() ? fs::path(".") : frameFolder);
+    std::set<std::string> names{seq.statisticsName};
+    const fs::path imageExtension = seq.frames.front().output.extension();
     if (!seq.journal.empty()) {
         folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
                                                          : seq.journal.parent_path());
@@ -174,15 +181,17 @@ void removeStaleTemporaries(const Sequence& seq) {
         std::error_code ec;
         for (const auto& entry : fs::directory_iterator(dir, ec)) {
             const std::string name = entry.path().filename().string();
-            if (name.empty() || name[0] != '.') continue;
-            for (const std::string& target : names) {
-                long pid = 0;
-                if (!image::isTemporaryFor(name, target, pid)) continue;
-                if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
-                    continue;  // alive
-                fs::remove(entry.path(), ec);
-                break;
-            }
+            long pid = 0;
+            std::string target;
+            if (!image::parseTemporaryName(name, target, pid)) continue;
+            // A frame's log (NAME.log beside NAME.png) is replaced too.
+            const bool log = target.ends_with(".log") &&
+                             seq.frames.holdsImageNamed(
+                                 fs::path(target).replace_extension(imageExtension).string());
+            if (!names.count(target) && !seq.frames.holdsImageNamed(target) && !log) continue;
+            if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
+                continue;  // alive
+            fs::remove(entry.path(), ec);
         }
     }
 }
@@ -202,7 +211,12 @@ struct Job {
     size_t index = 0;     // position in the pipeline (order of stage 3)
     size_t position = 0;  // position in the sequence
     const FrameSpec* frame = nullptr;
-    Outcome stop;  // Kind::Stop
+    Outcome stop;    // Kind::Stop
+    FrameSpec spec;  // what `frame` points to
+    // What the frame's parse read (with the files' hashes) and wrote, for
+    // the journal.
+    FrameInputs inputs;
+    std::vector<std::string> written;
     std::unique_ptr<FrameLog> log;
     std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
     std::optional<scene::Scene> scene;
@@ -214,6 +228,11 @@ struct Job {
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
     bool failed = false;  // the log holds the fatal message
+    // The parse stopped on a file that an earlier frame of this run writes
+    // (a scene showing the previous frames' images, as the example
+    // advanced/desk does): stage 3 parses and renders it again once every
+    // earlier frame is written, as povray's one-frame-after-another order.
+    bool deferred = false;
     double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0,
            commitSeconds = 0;
 };
@@ -265,14 +284,16 @@ class Run {
     int execute() {
         if (o_.outputToFile && !seq_.frames.empty()) {
             std::error_code ec;
-            for (const FrameSpec& f : seq_.frames)
-                if (!f.output.parent_path().empty())
-                    fs::create_directories(f.output.parent_path(), ec);
-            if (!seq_.journal.parent_path().empty())
-                fs::create_directories(seq_.journal.parent_path(), ec);
+            // Every frame and the journal are in the same folder, created
+            // only when Output_File_Name names it as a folder ("dir/");
+            // main refuses a missing folder otherwise (checkOutputFolder).
+            if (const fs::path folder = seq_.frames.front().output.parent_path();
+                !folder.empty() && !o_.outputFile.empty() && o_.outputFile.back() == '/')
+                fs::create_directories(folder, ec);
             removeStaleTemporaries(seq_);
-            journal_ =
-                std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
+            journal_ = std::make_unique<Journal>(seq_.journal, settingsHash(o_), o_.continueTrace,
+                                                 shardJournals(seq_));
+            written_ = journal_->written();
             if (journal_->discardedStale())
                 say(TextStream::Warning,
                     fmt::format("frameray: the journal {} was written with other settings; "
@@ -420,7 +441,10 @@ class Run {
         job->kind = kind;
         job->index = jobs_.size();
         job->position = position;
-        if (position < seq_.frames.size()) job->frame = &seq_.frames[position];
+        if (position < seq_.frames.size()) {
+            job->spec = seq_.frames[position];
+            job->frame = &job->spec;
+        }
         // Only the oldest frame in flight prints as it goes; the others
         // hold their messages until it is out.
         job->log = std::make_unique<FrameLog>(streams_, job->index == head_);
@@ -429,10 +453,16 @@ class Run {
         return *jobs_.back();
     }
 
-    Job* stopJob(Outcome outcome) {
+    // A job that ends the run; `frame` (kept in the job) is the one whose
+    // Pre_Frame_Command decided it, if any.
+    Job* stopJob(Outcome outcome, const FrameSpec* frame = nullptr) {
         inputDone_ = true;
         Job& job = newJob(Job::Kind::Stop, seq_.frames.size());
         job.stop = std::move(outcome);
+        if (frame) {
+            job.spec = *frame;
+            job.stop.frame = &job.spec;
+        }
         return &job;
     }
 
@@ -441,12 +471,13 @@ class Run {
         while (!inputDone_ && !decided_ && next_ < seq_.frames.size() && rendersLeft_ > 0) {
             if (stopRequested()) return stopJob({Outcome::Kind::UserAbort, "", nullptr});
             const size_t position = next_++;
-            const FrameSpec& frame = seq_.frames[position];
+            const FrameSpec frame = seq_.frames[position];
             if (o_.continueTrace && journal_) {
                 bool kept = false;
                 {
                     std::lock_guard lock(journalMutex_);
-                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output);
+                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output,
+                                              hashes_);
                 }
                 if (kept) return &newJob(Job::Kind::Kept, position);
             }
@@ -462,30 +493,12 @@ class Run {
                 case HookAction::UserAbort:
                     return stopJob({Outcome::Kind::UserAbort, "", nullptr});
                 case HookAction::Fatal:
-                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", &frame});
+                    return stopJob({Outcome::Kind::Fatal, "Pre_Frame_Command failed", nullptr},
+                                   &frame);
             }
             Job& job = newJob(Job::Kind::Render, position);
             --rendersLeft_;
-            const auto start = Clock::now();
-            try {
-                job.interpreter = std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame),
-                                                                     cache_, *job.log);
-                job.scene.emplace(job.interpreter->parseFile(o_.inputFile));
-            } catch (const sdl::SdlError& e) {
-                job.log->message(sdl::Stream::Fatal, e.what());
-                job.failed = true;
-            } catch (const std::bad_alloc&) {
-                job.log->message(
-                    sdl::Stream::Fatal,
-                    fmt::format("error: frame {}: out of memory while parsing the scene",
-                                frame.number));
-                job.failed = true;
-            } catch (const std::exception& e) {
-                job.log->message(sdl::Stream::Fatal,
-                                 fmt::format("error: frame {}: {}", frame.number, e.what()));
-                job.failed = true;
-            }
-            job.parseSeconds = secondsSince(start);
+            parseJob(job, true);
             // A frame that failed to parse ends the run: later frames
             // could depend on what it should have written.
             if (job.failed) inputDone_ = true;
@@ -494,7 +507,68 @@ class Run {
         return nullptr;
     }
 
-    render::FrameSettings frameSettings(const render::GammaEncoding& gamma) const {
+    // Whether `message` names the output file of a frame before `position`.
+    bool namesEarlierOutput(const std::string& message, size_t position) const {
+        for (size_t i = 0; i < position; ++i) {
+            const std::string quoted =
+                fmt::format("'{}'", seq_.frames[i].output.filename().string());
+            if (message.find(quoted) != std::string::npos) return true;
+        }
+        return false;
+    }
+
+    // Parses the job's frame into job.scene; on an error the log holds it
+    // and job.failed is set, or job.deferred when `mayDefer` and the error
+    // names an earlier frame's output file.
+    void parseJob(Job& job, bool mayDefer) {
+        const FrameSpec& frame = *job.frame;
+        const auto start = Clock::now();
+        try {
+            job.interpreter =
+                std::make_unique<sdl::Interpreter>(contextFor(o_, seq_, frame), cache_, *job.log);
+            job.scene.emplace(job.interpreter->parseFile(o_.inputFile));
+        } catch (const sdl::SdlError& e) {
+            if (mayDefer && namesEarlierOutput(e.what(), job.position)) {
+                job.deferred = true;
+                job.interpreter.reset();
+                job.parseSeconds = secondsSince(start);
+                return;
+            }
+            job.log->message(sdl::Stream::Fatal, e.what());
+            job.failed = true;
+        } catch (const std::bad_alloc&) {
+            job.log->message(sdl::Stream::Fatal,
+                             fmt::format("error: frame {}: out of memory while parsing the scene",
+                                         frame.number));
+            job.failed = true;
+        } catch (const std::exception& e) {
+            job.log->message(sdl::Stream::Fatal,
+                             fmt::format("error: frame {}: {}", frame.number, e.what()));
+            job.failed = true;
+        }
+        if (!job.failed && journal_) noteInputs(job);
+        job.parseSeconds = secondsSince(start);
+    }
+
+    // Stage 1, right after the parse: the files the frame read, hashed now
+    // (each once per run), and those it wrote; files written by this or an
+    // earlier frame of the sequence are not inputs.
+    void noteInputs(Job& job) {
+        for (const fs::path& p : job.interpreter->filesWritten()) {
+            job.written.push_back(journalName(p));
+            written_.insert(job.written.back());
+        }
+        std::set<std::string> read;
+        for (const fs::path& p : job.interpreter->filesRead()) read.insert(journalName(p));
+        for (const std::string& p : read) {
+            if (written_.count(p)) continue;
+            // An input that cannot be hashed now never verifies later: 0
+            // stands for it.
+            job.inputs.emplace_back(p, hashes_.hash(p).value_or(0));
+        }
+    }
+
+    render::FrameSettings frameSettings(const image::GammaEncoding& gamma) const {
         render::FrameSettings f;
         f.width = o_.width;
         f.height = o_.height;
@@ -520,14 +594,18 @@ class Run {
 
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
-        if (job.kind != Job::Kind::Render || job.failed || decided_ || stopRequested()) return;
+        if (job.kind != Job::Kind::Render || job.failed || job.deferred || decided_ ||
+            stopRequested())
+            return;
         progress_.started(job.frame->number);
         try {
             auto start = Clock::now();
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
             start = Clock::now();
-            const auto gamma = render::GammaEncoding::forScene(*job.scene, o_.fileGamma);
+            const auto gamma = image::GammaEncoding::forScene(
+                job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
+                job.scene->languageVersion, o_.fileGamma);
             const render::FrameSettings settings = frameSettings(gamma);
             if (settings.alpha) refuseAlphaWith(*job.scene);
             const render::FrameImage image = render::renderFrame(world, settings, job.stats);
@@ -537,9 +615,10 @@ class Run {
             // parallel; stage 3 only renames and journals.
             if (o_.outputToFile && !decided_) {
                 start = Clock::now();
-                const fs::path temporary =
-                    image::writeTemporary(job.frame->output, seq_.fileType,
-                                          encode(image, gamma, o_.bitDepth, seq_.window));
+                const fs::path temporary = image::writeTemporary(
+                    job.frame->output, seq_.fileType,
+                    image::encodeFrame(image.width, image.height, image.rgb, image.alpha, gamma,
+                                       o_.bitDepth, seq_.window));
                 job.temporary = temporary;
                 const auto hash = hashFile(temporary, &job.fileSize);
                 if (!hash)
@@ -596,6 +675,15 @@ class Run {
         if (job.kind == Job::Kind::Stop) return decide(job.stop);
         const FrameSpec& frame = *job.frame;
         const size_t index = job.position + 1;
+        if (job.deferred) {
+            // Every earlier frame is written now: parse again, render here.
+            job.deferred = false;
+            job.log = std::make_unique<FrameLog>(streams_, true);
+            const double firstParse = job.parseSeconds;
+            parseJob(job, false);
+            job.parseSeconds += firstParse;
+            renderJob(job);
+        }
         if (job.kind == Job::Kind::Kept) {
             ++finished_;
             kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});
@@ -615,7 +703,7 @@ class Run {
                 if (journal_) {
                     std::lock_guard lock(journalMutex_);
                     journal_->record(frame.number, clockText(frame.clock), frame.output,
-                                     job.fileSize, job.fileHash);
+                                     job.fileSize, job.fileHash, job.inputs, job.written);
                 }
             } catch (const std::exception& e) {
                 log.message(sdl::Stream::Fatal,
@@ -645,6 +733,13 @@ class Run {
                 TextStream::Statistic,
                 fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n", frame.number,
                             seconds, job.stats.rays.camera, job.stats.rays.shadow));
+            if (job.stats.rays.radiosity)
+                log.message(
+                    TextStream::Statistic,
+                    fmt::format("frame {}: radiosity: {} rays, {} samples gathered ({} for "
+                                "radiosity rays), {} lookups answered from the cache\n",
+                                frame.number, job.stats.rays.radiosity, job.stats.radiosity.samples,
+                                job.stats.radiosity.deeper, job.stats.radiosity.reused));
         }
         // The image is complete and journalled already: a log that cannot
         // be written ends the run but keeps the frame.
@@ -791,6 +886,10 @@ class Run {
     Progress progress_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
+    FileHashes hashes_;  // input files' hashes, read once per run
+    // Files the sequence's frames wrote (stage 1 adds each frame's as it
+    // is parsed): state passed between frames, not inputs.
+    std::set<std::string> written_;
     std::mutex journalMutex_;
     std::atomic<const FrameSpec*> current_{nullptr};  // the oldest frame in flight
     std::atomic<size_t> finished_{0};

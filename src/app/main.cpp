@@ -2,8 +2,8 @@
 // switches. Wiring only: options -> sequence -> frame loop.
 #include <tbb/global_control.h>
 
+#include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,17 +13,24 @@
 #include "anim/sequence.h"
 #include "options/option_table.h"
 #include "options/options.h"
+#include "util/durable_file.h"
 
 int main(int argc, char** argv) {
     using namespace frameray;
     // First, before any thread exists: Ctrl-C is handled by a watcher.
     anim::installInterruptWatcher();
+    // A write past `ulimit -f` would kill the process with SIGXFSZ and no
+    // word; ignored, the write fails with EFBIG ("File too large") and the
+    // frame ends with that message, as a full disk does.
+    std::signal(SIGXFSZ, SIG_IGN);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     // --list-frames: print the frames the options ask for (number, clock,
     // file) and stop, without checking that the scene can be rendered.
     bool listFrames = false;
-    std::erase_if(args, [&](const std::string& a) { return a == "--list-frames" ? (listFrames = true) : false; });
+    std::erase_if(args, [&](const std::string& a) {
+        return a == "--list-frames" ? (listFrames = true) : false;
+    });
     for (const std::string& a : args)
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);
@@ -38,14 +45,20 @@ int main(int argc, char** argv) {
     try {
         // POV-Ray's order: defaults, the startup sources, then the
         // arguments (switches, Key=Value and INI files) in order.
-        std::vector<std::string> warnings = options::applyStartupOptions(opts, options::processEnvironment());
+        std::vector<std::string> warnings =
+            options::applyStartupOptions(opts, options::processEnvironment());
         for (const std::string& w : options::applyArguments(opts, args)) warnings.push_back(w);
-        for (const std::string& w : warnings) std::fprintf(stderr, "frameray: warning: %s\n", w.c_str());
-        if (opts.inputFile.empty()) throw options::OptionError("no scene file given (Input_File_Name or +I)");
+        for (const std::string& w : warnings)
+            std::fprintf(stderr, "frameray: warning: %s\n", w.c_str());
+        if (opts.inputFile.empty())
+            throw options::OptionError("no scene file given (Input_File_Name or +I)");
         if (!opts.createIni.empty()) {
-            std::ofstream ini(opts.createIni, std::ios::trunc);
-            ini << options::createIniText(opts);
-            if (!ini) throw options::OptionError("cannot write the Create_Ini file '" + opts.createIni + "'");
+            // Replaced, never written through a link planted under its name.
+            try {
+                util::replaceFileDurably(opts.createIni, options::createIniText(opts));
+            } catch (const std::exception& e) {
+                throw options::OptionError(std::string("Create_Ini: ") + e.what());
+            }
         }
         if (listFrames) {
             const anim::Sequence planned = anim::planSequence(opts);
@@ -55,12 +68,14 @@ int main(int argc, char** argv) {
         }
         std::error_code ec;
         if (!std::filesystem::is_regular_file(opts.inputFile, ec))
-            throw options::OptionError("cannot open scene file '" + opts.inputFile + "': no such file");
+            throw options::OptionError("cannot open scene file '" + opts.inputFile +
+                                       "': no such file");
         // Options whose effect is not built yet must not be silently
         // ignored; the option table says which values need what.
         if (const std::string missing = options::firstUnsupported(opts); !missing.empty())
             throw options::OptionError("not supported yet: " + missing);
         sequence = anim::planSequence(opts);
+        anim::checkOutputFolder(opts, sequence);
     } catch (const options::OptionError& e) {
         std::fprintf(stderr, "frameray: error: %s\n", e.what());
         return 2;
@@ -72,7 +87,7 @@ int main(int argc, char** argv) {
     const tbb::global_control stackSize(tbb::global_control::thread_stack_size, size_t(16) << 20);
     std::unique_ptr<tbb::global_control> threads;
     if (opts.workThreads > 0)
-        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                        static_cast<size_t>(opts.workThreads));
+        threads = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, static_cast<size_t>(opts.workThreads));
     return anim::runSequence(opts, sequence);
 }

@@ -50,7 +50,10 @@ std::vector<T> quantize(const std::vector<float>& values, int bits, double conta
     const double levels = std::ldexp(1.0, bits) - 1.0;
     std::vector<T> out(values.size());
     for (size_t i = 0; i < values.size(); ++i) {
-        const double v = std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
+        // NaN (a scene's NaN light, say) is written black, as povray does;
+        // converting it to an integer would be undefined.
+        const double v =
+            std::isnan(values[i]) ? 0.0 : std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
         const double q = std::floor(v * levels + 0.5);
         out[i] = static_cast<T>(std::floor(q * containerMax / levels + 0.5));
     }
@@ -72,13 +75,17 @@ fs::path temporaryPathFor(const fs::path& path) {
            fmt::format(".{}.{}.tmp", path.filename().string(), static_cast<long>(getpid()));
 }
 
-bool isTemporaryFor(const std::string& name, const std::string& target, long& pid) {
-    const std::string prefix = "." + target + ".";
-    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
-        name.compare(name.size() - 4, 4, ".tmp") != 0)
+bool parseTemporaryName(const std::string& name, std::string& target, long& pid) {
+    // ".TARGET.PID.tmp"
+    if (name.size() < 8 || name[0] != '.' || name.compare(name.size() - 4, 4, ".tmp") != 0)
         return false;
-    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    const std::string rest = name.substr(1, name.size() - 5);  // "TARGET.PID"
+    const auto dot = rest.rfind('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == rest.size()) return false;
+    const std::string digits = rest.substr(dot + 1);
+    if (digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    target = rest.substr(0, dot);
     pid = std::stol(digits);
     return true;
 }

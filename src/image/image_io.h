@@ -34,9 +34,10 @@ const char* extensionFor(FileType type);
 // The temporary name writeAtomic uses for `path` in this process: in the
 // same folder (so the rename is atomic), hidden, tagged with the process id.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
-// True when `name` (a file name) is such a temporary file for a file
-// named `target`; sets `pid` to the process that wrote it.
-bool isTemporaryFor(const std::string& name, const std::string& target, long& pid);
+// True when `name` (a file name) is such a temporary file; sets `target`
+// to the name of the file it stands for and `pid` to the process that
+// wrote it.
+bool parseTemporaryName(const std::string& name, std::string& target, long& pid);
 
 // Throws std::runtime_error with the path and reason on failure; the
 // destination is untouched then.

@@ -15,7 +15,19 @@
 
 namespace frameray::options {
 
-enum class OptionType { Bool, Int, Float, String, Path, PathList, Declare, FileType, Command, Return, Window };
+enum class OptionType {
+    Bool,
+    Int,
+    Float,
+    String,
+    Path,
+    PathList,
+    Declare,
+    FileType,
+    Command,
+    Return,
+    Window
+};
 
 // How a value reached the option: from an INI key (`Key=value`) or a
 // switch (`+Xvalue` / `-Xvalue`), where the sign matters for booleans.

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "options/ini_trust.h"
 #include "options/option_table.h"
 #include "util/spelling.h"
 
@@ -29,12 +30,15 @@ std::string lower(std::string_view s) {
     return out;
 }
 
-bool endsWithIni(std::string_view name) { return name.size() >= 4 && lower(name.substr(name.size() - 4)) == ".ini"; }
+bool endsWithIni(std::string_view name) {
+    return name.size() >= 4 && lower(name.substr(name.size() - 4)) == ".ini";
+}
 
 // Options that widen the restrictions on scenes (sdl/file_access.h): a
 // stranger's INI file, shipped with a scene, must not lift them.
 bool widensRestrictions(std::string_view key) {
-    return key == "Allow_Shell_Commands" || key == "File_Restrictions" || key == "Read_Path" || key == "Write_Path";
+    return key == "Allow_Shell_Commands" || key == "File_Restrictions" || key == "Read_Path" ||
+           key == "Write_Path";
 }
 
 struct Applier {
@@ -45,20 +49,33 @@ struct Applier {
     // widen the restrictions; the startup sources and arguments may.
     bool namedIniUntrusted = false;
     bool inUntrustedIni = false;
+    // While in an untrusted INI: the folders it may name paths in (README,
+    // Restrictions; options/ini_trust.h).
+    std::vector<fs::path> roots{};
 
     void apply(const OptionSpec& spec, const OptionInput& input, const std::string& where,
                std::string_view shownAs) {
         if (inUntrustedIni && widensRestrictions(spec.iniKey))
-            throw OptionError(fmt::format(
-                "{}: option '{}' widens the restrictions on scenes, so it is read only from the command line, "
-                "POVRAYOPT, a povray.ini outside the working folder or frameray.conf, not from an INI file "
-                "named on the command line",
-                where, shownAs));
+            throw OptionError(
+                fmt::format("{}: option '{}' widens the restrictions on scenes, so it is read only "
+                            "from the command line, "
+                            "POVRAYOPT, a povray.ini outside the working folder or frameray.conf, "
+                            "not from an INI file "
+                            "named on the command line",
+                            where, shownAs));
+        const std::vector<NamedPath> before =
+            inUntrustedIni ? namedPaths(options) : std::vector<NamedPath>{};
         try {
             spec.apply(options, input);
         } catch (const std::invalid_argument& e) {
-            throw OptionError(fmt::format("{}: bad value for option '{}': {}", where, shownAs, e.what()));
+            throw OptionError(
+                fmt::format("{}: bad value for option '{}': {}", where, shownAs, e.what()));
         }
+        if (inUntrustedIni)
+            if (const std::string refusal =
+                    untrustedPathRefusal(before, namedPaths(options), roots, where);
+                !refusal.empty())
+                throw OptionError(refusal);
         options.explicitlySet.emplace(spec.iniKey);
     }
 
@@ -76,8 +93,9 @@ struct Applier {
             std::vector<std::string_view> keys;
             for (const OptionSpec& o : optionTable()) keys.push_back(o.iniKey);
             const std::string best = util::closestSpelling(trim(key), keys, true);
-            throw OptionError(fmt::format("{}: unknown option '{}'{}", where, trim(key),
-                                          best.empty() ? "" : fmt::format("; did you mean '{}'?", best)));
+            throw OptionError(
+                fmt::format("{}: unknown option '{}'{}", where, trim(key),
+                            best.empty() ? "" : fmt::format("; did you mean '{}'?", best)));
         }
         apply(*spec, {trim(value), false, true}, where, trim(key));
     }
@@ -97,7 +115,8 @@ struct Applier {
     // INI file (optionally with [Section]) or the scene file.
     void applyFileName(std::string_view text, const std::string& where, const fs::path& base) {
         std::string name(text), section;
-        if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
+        if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+            name = name.substr(1, name.size() - 2);
         if (!name.empty() && name.back() == ']') {
             const auto open = name.find('[');
             if (open != std::string::npos) {
@@ -105,13 +124,29 @@ struct Applier {
                 name.resize(open);
             }
         }
-        if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
+        if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+            name = name.substr(1, name.size() - 2);
         if (endsWithIni(name)) {
+            const fs::path path = locateIni(name, base);
             const bool outer = inUntrustedIni;
-            inUntrustedIni = inUntrustedIni || namedIniUntrusted;
-            readIni(locateIni(name, base), section, where);
+            if (inUntrustedIni) {
+                // An INI file named by an untrusted one is read only from
+                // the same folders as any other path it names.
+                if (!insideTrustRoots(resolvedForTrust(path), roots))
+                    throw OptionError(
+                        untrustedPathRefusal({}, {{"INI file", path.string()}}, roots, where));
+            } else if (namedIniUntrusted) {
+                inUntrustedIni = true;
+                roots = trustRoots(path.parent_path());
+            }
+            readIni(path, section, where);
             inUntrustedIni = outer;
         } else {
+            if (inUntrustedIni)
+                if (const std::string refusal =
+                        untrustedPathRefusal({}, {{"Input_File_Name", name}}, roots, where);
+                    !refusal.empty())
+                    throw OptionError(refusal);
             options.inputFile = name;
             options.explicitlySet.emplace("Input_File_Name");
         }
@@ -147,17 +182,38 @@ struct Applier {
             }
         }
         if (!startsWithSwitch && blank == std::string_view::npos) {
+            checkIniWord(text, where);
             applyToken(text, where, base);
             return;
         }
-        for (const std::string& tok : splitOptionString(std::string(text))) applyToken(tok, where, base);
+        for (const std::string& tok : splitOptionString(std::string(text))) {
+            if (tok[0] != '+' && tok[0] != '-' && tok.find('=') == std::string::npos)
+                checkIniWord(tok, where);
+            applyToken(tok, where, base);
+        }
+    }
+
+    // A word on an INI line that is neither a switch nor Key=Value must be
+    // a file name (a scene or another INI file); povray refuses the rest
+    // ("Width 64", a key without its '=', a bare number).
+    static void checkIniWord(std::string_view word, const std::string& where) {
+        std::string_view name = word;
+        if (name.size() >= 2 && name.front() == '"' && name.back() == '"') return;
+        if (const OptionSpec* spec = findIniKey(name))
+            throw OptionError(fmt::format("{}: option '{}' needs '=' and a value ({}=...)", where,
+                                          name, spec->iniKey));
+        if (name.find('.') == std::string_view::npos)
+            throw OptionError(fmt::format("{}: '{}' is neither Key=Value, a switch nor a file name",
+                                          where, name));
     }
 
     void readIni(const fs::path& path, const std::string& section, const std::string& origin) {
         if (++depth > kMaxIniDepth)
-            throw OptionError(fmt::format("{}: INI files nested more than {} deep", origin, kMaxIniDepth));
+            throw OptionError(
+                fmt::format("{}: INI files nested more than {} deep", origin, kMaxIniDepth));
         std::ifstream in(path);
-        if (!in) throw OptionError(fmt::format("{}: cannot open INI file '{}'", origin, path.string()));
+        if (!in)
+            throw OptionError(fmt::format("{}: cannot open INI file '{}'", origin, path.string()));
         std::string line;
         int lineNo = 0;
         // Without a section, only lines before the first header apply; with
@@ -166,12 +222,16 @@ struct Applier {
         bool sectionFound = section.empty();
         while (std::getline(in, line)) {
             ++lineNo;
+            // A UTF-8 byte order mark (Windows editors write one) is not
+            // part of the first key.
+            if (lineNo == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
             const std::string where = fmt::format("{}:{}", path.string(), lineNo);
             std::string_view text = trim(line);
             if (text.empty() || text[0] == ';') continue;
             if (text[0] == '[') {
                 const auto close = text.find(']');
-                const std::string_view name = close == std::string_view::npos ? text.substr(1) : text.substr(1, close - 1);
+                const std::string_view name =
+                    close == std::string_view::npos ? text.substr(1) : text.substr(1, close - 1);
                 active = !section.empty() && lower(trim(name)) == lower(trim(section));
                 sectionFound = sectionFound || active;
                 continue;
@@ -192,8 +252,9 @@ struct Applier {
         // POV-Ray renders without complaint when the section is missing;
         // frameray says so.
         if (!sectionFound)
-            warnings.push_back(fmt::format("{}: INI file '{}' has no section [{}]; nothing read from it", origin,
-                                           path.string(), section));
+            warnings.push_back(
+                fmt::format("{}: INI file '{}' has no section [{}]; nothing read from it", origin,
+                            path.string(), section));
         --depth;
     }
 };
@@ -222,15 +283,16 @@ std::vector<std::string> splitOptionString(const std::string& text) {
     return out;
 }
 
-std::vector<std::string> applyArguments(RenderOptions& options, const std::vector<std::string>& args) {
+std::vector<std::string> applyArguments(RenderOptions& options,
+                                        const std::vector<std::string>& args) {
     Applier a{options, {}};
     a.namedIniUntrusted = true;
     for (const std::string& arg : args) a.applyToken(arg, "command line", fs::path());
     return a.warnings;
 }
 
-std::vector<std::string> applyIniFile(RenderOptions& options, const fs::path& path, const std::string& section,
-                                      const std::string& origin) {
+std::vector<std::string> applyIniFile(RenderOptions& options, const fs::path& path,
+                                      const std::string& section, const std::string& origin) {
     Applier a{options, {}};
     a.readIni(path, section, origin);
     return a.warnings;
@@ -246,7 +308,8 @@ StartupEnvironment processEnvironment() {
 
 fs::path findStartupIni(const StartupEnvironment& env) {
     std::vector<fs::path> candidates;
-    if (const char* povini = env.getenv("POVINI"); povini && *povini) candidates.emplace_back(povini);
+    if (const char* povini = env.getenv("POVINI"); povini && *povini)
+        candidates.emplace_back(povini);
     candidates.push_back(env.workingDir / "povray.ini");
     const char* home = env.getenv("HOME");
     if (home && *home) candidates.push_back(fs::path(home) / ".povray" / "3.7" / "povray.ini");
@@ -268,18 +331,22 @@ fs::path findConfigFile(const StartupEnvironment& env) {
     return !config.empty() && fs::is_regular_file(config, ec) ? config : fs::path();
 }
 
-std::vector<std::string> applyStartupOptions(RenderOptions& options, const StartupEnvironment& env) {
+std::vector<std::string> applyStartupOptions(RenderOptions& options,
+                                             const StartupEnvironment& env) {
     std::vector<std::string> warnings;
     Applier a{options, {}};
     // frameray.conf first: the user's standing policy, INI syntax.
-    if (const fs::path config = findConfigFile(env); !config.empty()) a.readIni(config, "", "frameray.conf");
+    if (const fs::path config = findConfigFile(env); !config.empty())
+        a.readIni(config, "", "frameray.conf");
     if (const char* opt = env.getenv("POVRAYOPT"); opt && *opt)
-        for (const std::string& tok : splitOptionString(opt)) a.applyToken(tok, "POVRAYOPT", fs::path());
+        for (const std::string& tok : splitOptionString(opt))
+            a.applyToken(tok, "POVRAYOPT", fs::path());
     const fs::path ini = findStartupIni(env);
     // ./povray.ini may have come with a scene: it cannot widen the
     // restrictions; the others are the user's own.
     std::error_code ec;
     a.inUntrustedIni = !ini.empty() && fs::equivalent(ini, env.workingDir / "povray.ini", ec);
+    if (a.inUntrustedIni) a.roots = trustRoots(env.workingDir);
     if (!ini.empty()) a.readIni(ini, "", "startup");
     a.inUntrustedIni = false;
     return a.warnings;

@@ -12,6 +12,10 @@
 
 namespace frameray::options {
 
+// The standard include files (Debian's povray-includes): always on the
+// library path, and readable by every scene.
+inline constexpr const char* kStandardIncludeFolder = "/usr/share/povray-3.7/include";
+
 // POV-Ray's text streams, in the order of their option names.
 enum class TextStream { Debug, Fatal, Render, Statistic, Warning, All };
 inline constexpr int kTextStreams = 6;

@@ -12,12 +12,6 @@ namespace {
 // POV-Ray's EPSILON, used by its fog and rainbow tests.
 constexpr double kEpsilon = 1e-10;
 
-// Reference data from POV-Ray 3.7: the weights of its greyscale(), which
-// turns a filter colour into the single transmit value of an alpha channel.
-double greyscale(const RGB& c) {
-    return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
-}
-
 // What a layer lets through: its colour where it filters, plus what it
 // transmits unchanged.
 RGB passedThrough(const Color& c) {
@@ -46,7 +40,7 @@ Color layeredSky(const scene::Scene& scene, const Vec3& direction) {
     const Color& bg = scene.background;
     color += bg.rgb * (1.0 - bg.transmit) * through;
     through *= passedThrough(bg);
-    return Color(color, 0.0, std::min(1.0, std::fabs(greyscale(through))));
+    return Color(color, 0.0, std::min(1.0, std::fabs(grey(through))));
 }
 
 // Sky sphere and background before version 3.7: the background colour,
@@ -191,8 +185,17 @@ Color AtmosphereView::throughFogs(const Vec3& origin, const Vec3& d, double dept
         attenuation *= (RGB(1.0 - fog.color.filter) + fog.color.rgb * fog.color.filter) * keep;
         added += fog.color.rgb * (1.0 - keep);
     }
-    return Color(added + attenuation * seen.rgb, seen.filter,
-                 seen.transmit * greyscale(attenuation));
+    return Color(added + attenuation * seen.rgb, seen.filter, seen.transmit * grey(attenuation));
+}
+
+double fogLightTransmittance(const scene::Scene& scene, const Vec3& origin,
+                             const Vec3& unitDirection, double depth) {
+    double keep = 1.0;
+    for (const scene::Fog& fog : scene.atmosphere.fogs) {
+        if (!(std::fabs(fog.distance) > kEpsilon)) continue;
+        keep *= std::max(fogTransmittance(fog, origin, unitDirection, depth), fog.color.transmit);
+    }
+    return keep;
 }
 
 Color AtmosphereView::miss(const scene::Ray& ray) const {

@@ -52,4 +52,12 @@ class AtmosphereView {
     bool volumetric_;
 };
 
+// How much of a light's colour crosses the scene's fogs over `depth`
+// along a unit direction: a light with media_attenuation is dimmed by the
+// fogs' transmittance alone, their colour adds nothing (measured: a white
+// plane lit through fog { distance 10 } from 10 units away gets exp(-1)
+// of the light, whatever the fog's colour).
+double fogLightTransmittance(const scene::Scene& scene, const Vec3& origin,
+                             const Vec3& unitDirection, double depth);
+
 }  // namespace frameray::render

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/mesh_camera.h"
+
 namespace frameray::render {
 
 namespace {
@@ -48,6 +50,13 @@ std::optional<scene::Ray> CameraRays::generate(double x, double y) const {
         ray->direction = camera_.normal->perturb(Vec3{cx, cy, 0}, unit);
     }
     return ray;
+}
+
+bool CameraRays::meshRays(double x, double y, std::vector<scene::Ray>& rays) const {
+    if (camera_.projection != scene::Projection::Mesh || !camera_.mesh) return false;
+    camera_.mesh->pixelRays(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)),
+                            static_cast<int>(width_), rays);
+    return true;
 }
 
 std::optional<scene::Ray> CameraRays::project(double cx, double cy) const {
@@ -124,6 +133,8 @@ std::optional<scene::Ray> CameraRays::project(double cx, double cy) const {
             const double ay = cy * angleRadians_;
             return scene::Ray{c.location + c.right * cx, d * std::cos(ay) + u * std::sin(ay)};
         }
+        case Projection::Mesh:  // rays per pixel, not per image point: meshRays()
+            return std::nullopt;
         case Projection::Spherical: {
             const double h = cx * angleRadians_;
             const double v = cy * verticalAngleRadians_;

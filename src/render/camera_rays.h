@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "scene/camera.h"
 #include "scene/ray.h"
@@ -22,6 +23,10 @@ class CameraRays {
     std::optional<scene::Ray> generate(double x, double y) const;
 
     const scene::Camera& camera() const { return camera_; }
+
+    // mesh_camera: the rays of the pixel holding image point (x, y) (none
+    // past the faces); false for every other projection.
+    bool meshRays(double x, double y, std::vector<scene::Ray>& rays) const;
 
   private:
     // The projection's ray, before a camera normal bends it; (cx, cy) is

@@ -7,6 +7,7 @@
 
 #include "render/lighting.h"
 #include "render/optics.h"
+#include "render/photons.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
@@ -80,12 +81,15 @@ void InteriorStack::remove(const void* key) {
     }
 }
 
-Tracer::Tracer(const World& world, int quality)
+Tracer::Tracer(const World& world, int quality, const Radiosity* radiosity)
     : world_(world),
       scene_(world.scene()),
       atmosphere_(world.scene(), quality >= 9),
       lighting_(LightingQuality::forQuality(quality)),
+      radiosityLighting_{lighting_.shadows, false},
       secondaryRays_(quality >= 8),
+      media_(quality >= 9),
+      radiosity_(radiosity),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
       opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
@@ -101,11 +105,14 @@ Tracer::Tracer(const World& world, int quality)
     }
 }
 
-RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit) const {
+RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit,
+                        RadiosityTask* radiosity) const {
     ++counts.camera;
     State state;
     state.inside = cameraInside_;
     state.transmit = transmit;
+    state.radiosity.task = radiosity;
+    state.radiosity.origin = scene_.camera.location;
     return trace(ray, 0.0, state, counts);
 }
 
@@ -113,7 +120,10 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     Hit hit;
     const InteriorStack::Region* medium = state.inside.innermost();
     const bool fades = medium && medium->interior && medium->interior->fades();
-    if (!world_.intersect(ray, tMin, scene::kInfinity, hit, state.kind)) {
+    const bool found = world_.intersect(ray, tMin, scene::kInfinity, hit, state.kind);
+    if (state.hitDistance)
+        *state.hitDistance = found ? hit.t * length(ray.direction) : scene::kInfinity;
+    if (!found) {
         if (state.transmit) {
             // Alpha output, seen straight or through surfaces: a 3.7
             // scene's sky (sky sphere over background, whose default is
@@ -128,14 +138,14 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
                                    ? atmosphere_.along(ray, kMissDepth / length(ray.direction), sky)
                                    : sky;
             *state.transmit = seen.transmit;
-            return seen.rgb;
+            return throughMedia(ray, 0.0, true, state, seen.rgb, counts);
         }
         // No fog for a ray that leaves the scene inside an object that is
         // not hollow (measured: the sky seen from inside an inverse plane).
         RGB sky = state.inside.allHollow() ? atmosphere_.miss(ray).rgb
                                            : atmosphere_.sky(normalize(ray.direction)).rgb;
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
-        return sky;
+        return throughMedia(ray, 0.0, true, state, sky, counts);
     }
     if (quickColours_) {
         const scene::Object& obj = *hit.object;
@@ -151,6 +161,7 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     } else {
         color = shade(ray, hit, state, counts);
     }
+    color = throughMedia(ray, hit.t, false, state, color, counts);
     // povray leaves out fog and rainbows along rays inside objects that
     // are not hollow (measured: a transmitting box 4 units deep in fog
     // shows the fog only in front of it and beyond it; inside a hollow
@@ -162,6 +173,32 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
         return seen.rgb;
     }
     return atmosphere_.along(ray, hit.t, Color(color)).rgb;
+}
+
+RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const State& state,
+                         const RGB& color, RayCounts& counts) const {
+    // Inside an object that is not hollow no media is sampled at all, not
+    // even that of the hollow containers around it (measured: a solid glass
+    // sphere inside a sphere of emitting media hides the media behind it).
+    if (!media_ || !state.inside.allHollow()) return color;
+    MediaSet set;
+    // Innermost first: the first media's sampling settings are used.
+    for (int i = state.inside.size() - 1; i >= 0; --i) {
+        const InteriorStack::Region& r = state.inside[i];
+        if (r.interior) set.add(r.interior->media);
+    }
+    set.add(scene_.atmosphere.media);
+    if (set.empty()) return color;
+    const double speed = length(ray.direction);
+    const scene::Ray unit{ray.origin, ray.direction * (1.0 / speed)};
+    const double depth = missed ? kMissDepth : t * speed;
+    const MediaResult m = integrateMedia(world_, lighting_, unit, depth, set, true,
+                                         counts.mediaSamples, counts.shadow);
+    if (state.transmit) {
+        const RGB& k = m.transmittance;
+        *state.transmit *= 0.297 * k.r + 0.589 * k.g + 0.114 * k.b;
+    }
+    return color * m.transmittance + m.light;
 }
 
 // +Q0/+Q1 (povray 3.7, measured): every surface in the colour of its
@@ -191,7 +228,8 @@ RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv
 // pigment at the point is `surface`, shaded with the normal n.
 RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
-                       const RGB& fade, RayCounts& counts) const {
+                       const RGB& fade, RayCounts& counts, const RGB* gathered,
+                       bool radiosityRay) const {
     const scene::Finish& fin = tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
@@ -203,7 +241,14 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     const double opacity = 1.0 - seeThrough;
     const RGB lit = pigment * opacity;
 
-    RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
+    // Under radiosity the gathered light takes the place of ambient light,
+    // reflected as diffuse light; povray 3.7 ignores `ambient` then, older
+    // scenes keep it as a glow (measured).
+    RGB color = radiosity_ ? fin.emission * lit
+                           : (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
+    if (radiosity_ && radiosity_->legacyAmbient())
+        color += fin.ambient * scene_.globals.ambientLight * lit;
+    if (gathered) color += *gathered * lit * fin.diffuse;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
     // crand: povray darkens each light's diffuse term by crand times a
@@ -215,6 +260,12 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
+    if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
+        // Caustics: the photons' light, diffused like a light's head-on
+        // (render/photons.h).
+        thread_local std::vector<PhotonNeighbour> scratch;
+        color += photons->irradiance(p, n, scratch) * lit * (fin.diffuse) * fade;
+    }
     for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
@@ -238,7 +289,9 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         }
         if (cosIncidence <= 0) continue;
         RGB lightColor =
-            lightArriving(world_, light, p, path, eps, lighting_, counts.shadow) * fade;
+            lightArriving(world_, light, p, path, eps,
+                          radiosityRay ? radiosityLighting_ : lighting_, counts.shadow) *
+            fade;
         if (lightColor.isBlack()) continue;
         if (irid)
             lightColor =
@@ -253,7 +306,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         }
         if (fromBehind) continue;
         // povray 3.7: shadowless lights give no highlights.
-        if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless) {
+        if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless && !radiosityRay) {
             // Metallic highlights take the pigment's colour, except where
             // the light grazes the surface.
             const RGB tint = metallicTint(fin.metallic, cosIncidence, pigment);
@@ -280,9 +333,13 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     // The hit primitive (for CSG, the child whose surface was crossed)
     // carries its complete transform and inherited texture.
     Vec3 geometric = obj.normalAt(p);
-    // Shade the side facing the viewer.
-    if (dot(geometric, viewDir) > 0) geometric = -geometric;
-    const scene::Texture& own = obj.texture ? *obj.texture : defaultTexture();
+    // Shade the side facing the viewer; the inner side takes the
+    // interior_texture when there is one.
+    const bool innerSide = dot(geometric, viewDir) > 0;
+    if (innerSide) geometric = -geometric;
+    const scene::Texture& own = innerSide && obj.interiorTexture ? *obj.interiorTexture
+                                : obj.texture                    ? *obj.texture
+                                                                 : defaultTexture();
     // uv_mapping's point, found only when a texture asks for it.
     const Vec3 uv =
         !obj.componentTextures.empty() || own.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
@@ -375,6 +432,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         child.kind = scene::RayKind::Reflection;
         child.inside = state.inside;
         child.band = state.band;
+        child.radiosity = state.radiosity;
         if (child.weight < adcBailout) return RGB(0.0);
         ++counts.reflection;
         return trace({p, reflected}, eps, child, counts);
@@ -388,12 +446,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     RGB color(0.0);
     RGB through(1.0);  // what the layers evaluated so far let through
     // The same as one number, for alpha output: povray counts filter by
-    // the pigment's grey (0.297 R + 0.589 G + 0.114 B), measured.
+    // the pigment's grey (util/color.h), measured.
     double throughGrey = 1.0;
     bool transmits = false;
     RGB reflectivity(0.0);
     Vec3 n = geometric;
     RGB pigment(0.0);
+    std::optional<RGB> radiosityHere;
     const size_t layerCount = 1 + top.layersBelow.size();
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
@@ -413,7 +472,18 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
                                   ? *quick
                                   : tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         pigment = surface.rgb;
-        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts);
+        // The radiosity light, gathered once for the point (with the
+        // unperturbed normal: radiosity's `normal` is off) for the layers
+        // that reflect diffuse light.
+        const RGB* gathered = nullptr;
+        if (radiosity_ && fin.diffuse > 0) {
+            if (!radiosityHere)
+                radiosityHere = radiosityLight(p, radiosity_->settings().normal ? n : geometric,
+                                               obj, eps, state, counts);
+            gathered = &*radiosityHere;
+        }
+        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts,
+                                     gathered, state.radiosity.ray);
         color += i == 0 ? local : through * local;
 
         if (spawns && fin.reflection.any()) {
@@ -440,12 +510,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
             reflectivity = RGB(0.0);
         }
 
-        transmits = surface.filter + surface.transmit > 0;
+        // Negative filter or transmit subtract what lies behind (measured:
+        // rgb 0.5 transmit -1 over a background B shows 1 - B), so the
+        // ray continues whenever either is non-zero.
+        transmits = surface.filter != 0 || surface.transmit != 0;
         if (!transmits) break;
         through = through * (pigment * surface.filter + RGB(surface.transmit));
-        throughGrey *=
-            surface.filter * (0.297 * pigment.r + 0.589 * pigment.g + 0.114 * pigment.b) +
-            surface.transmit;
+        throughGrey *= surface.filter * grey(pigment) + surface.transmit;
         if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
         if (through.isBlack() && i + 1 < layerCount) {
             transmits = false;
@@ -453,14 +524,17 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         }
     }
     if (!spawns || !transmits) return color;
-    if (state.weight * through.maxComponent() < adcBailout) return color;
+    const double throughWeight =
+        std::max({std::abs(through.r), std::abs(through.g), std::abs(through.b)});
+    if (state.weight * throughWeight < adcBailout) return color;
 
     const Crossing& c = crossingInfo();
     State child;
-    child.weight = state.weight * through.maxComponent();
+    child.weight = state.weight * throughWeight;
     child.kind = state.kind;
     child.inside = c.beyond;
     child.band = state.band;
+    child.radiosity = state.radiosity;
     double childTransmit = 0;
     if (state.transmit) child.transmit = &childTransmit;
     // What the continued ray reports, through this surface's layers.

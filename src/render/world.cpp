@@ -7,7 +7,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "render/atmosphere.h"
+#include "render/media.h"
 #include "render/optics.h"
+#include "render/photons.h"
 
 namespace frameray::render {
 
@@ -27,6 +30,9 @@ struct TraceContext {
     const scene::Object* blocker = nullptr;
     std::uint16_t blockerKind = 0;
     bool translucent = false;
+    // The light shoots refraction photons: refracting objects stop it
+    // (render/photons.h, Photons::photonShadow).
+    bool refractorsOpaque = false;
     scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
     std::uint64_t* tests = nullptr;                // the calling thread's counters, by kind
     // An exception must not unwind through Embree (it would be lost there
@@ -45,6 +51,17 @@ void guarded(TraceContext* ctx, Body body) {
     } catch (...) {
         ctx->error = std::current_exception();
     }
+}
+
+}  // namespace
+
+namespace {
+
+// lightPassing, except that with photons a refracting object lets nothing
+// through to a light that shoots refraction photons.
+RGB passing(const scene::Object& obj, const Vec3& p, bool refractorsOpaque) {
+    if (refractorsOpaque && obj.photons.refraction) return RGB(0.0);
+    return lightPassing(obj, p);
 }
 
 }  // namespace
@@ -136,7 +153,7 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
         const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
         scene::SurfaceHit h;
         if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
-        if (!lightPassing(*h.primitive, ctx->ray->at(h.t)).isBlack()) {
+        if (!passing(*h.primitive, ctx->ray->at(h.t), ctx->refractorsOpaque).isBlack()) {
             // Light may pass here: keep searching for an opaque crossing.
             ctx->translucent = true;
             return;
@@ -146,6 +163,21 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
         // Embree's convention for "occluded".
         RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
     });
+}
+
+// Embree traces float rays and asserts (aborting the process) unless their
+// origin and direction are finite and below about 1.8e18 in magnitude and
+// tfar is not NaN. A scene can make any of them (a light at
+// <pow(-8,1/3),1,1>, a camera at 1e20): such a ray skips Embree and meets
+// no bounded object. It could meet one only beyond kMaxRayDistance from a
+// finite origin, or at 1e17 from the origin of the scene, where float
+// bounds no longer separate anything.
+bool embreeCanTrace(const scene::Ray& ray, double tMax) {
+    constexpr double kLimit = 1e17;
+    const auto small = [](const Vec3& v) {
+        return std::fabs(v.x) <= kLimit && std::fabs(v.y) <= kLimit && std::fabs(v.z) <= kLimit;
+    };
+    return small(ray.origin) && small(ray.direction) && !std::isnan(tMax);
 }
 
 RTCRay toEmbreeRay(const scene::Ray& ray, double tMax) {
@@ -223,10 +255,13 @@ World::World(const scene::Scene& scene)
         hasBounded_ = true;
     }
     rtcCommitScene(bvh_);
+    // Photons are traced through the finished BVH.
+    photons_ = Photons::build(*this);
 }
 
 void World::add(const scene::Object* obj) {
-    if (obj->noImage && obj->noShadow && obj->noReflection) return;  // invisible to every ray kind
+    if (obj->noImage && obj->noShadow && obj->noReflection && obj->noRadiosity)
+        return;  // invisible to every ray kind
     // A plain union's first hit is its nearest child's: its children join
     // the BVH one by one (povray splits unions the same way), instead of
     // a union of thousands being searched child by child.
@@ -258,13 +293,15 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
     ctx.tMin = tMin;
-    ctx.tMax = tMax;
+    // povray sees nothing from kMaxRayDistance on (measured: a plane 0.99e7
+    // in front of the camera shows, one 1e7 away does not).
+    ctx.tMax = std::min(tMax, kMaxRayDistance / length(ray.direction));
     ctx.hitObject = nullptr;
     ctx.kind = kind;
     ctx.tests = counters();
-    if (hasBounded_) {
+    if (hasBounded_ && embreeCanTrace(ray, ctx.tMax)) {
         RTCRayHit rh{};
-        rh.ray = toEmbreeRay(ray, tMax);
+        rh.ray = toEmbreeRay(ray, ctx.tMax);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(bvh_, &ctx.embree, &rh);
         if (ctx.error) std::rethrow_exception(ctx.error);
@@ -285,7 +322,7 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
 }
 
 World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double tMax,
-                                     ThreadState& state) const {
+                                     ThreadState& state, bool refractorsOpaque) const {
     Occlusion found;
     std::uint64_t* tests = state.tests.data();
     for (size_t i = 0; i < unbounded_.size(); ++i) {
@@ -293,13 +330,13 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
         ++tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
         if (!obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) continue;
-        if (lightPassing(*h.primitive, ray.at(h.t)).isBlack()) {
+        if (passing(*h.primitive, ray.at(h.t), refractorsOpaque).isBlack()) {
             found.blocker = {obj, unboundedKinds_[i]};
             return found;
         }
         found.translucent = true;
     }
-    if (!hasBounded_) return found;
+    if (!hasBounded_ || !embreeCanTrace(ray, tMax)) return found;
     TraceContext ctx;
     rtcInitIntersectContext(&ctx.embree);
     ctx.ray = &ray;
@@ -308,6 +345,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
     ctx.hitObject = nullptr;
     ctx.kind = scene::RayKind::Shadow;
     ctx.tests = tests;
+    ctx.refractorsOpaque = refractorsOpaque;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     if (ctx.error) std::rethrow_exception(ctx.error);
@@ -317,13 +355,37 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
 }
 
 bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
-    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local());
+    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local(), false);
     return o.blocker.object || o.translucent;
 }
 
 RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
                         const scene::Light* light) const {
+    RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light);
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.fogs.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        const double speed = length(ray.direction);
+        passed *= fogLightTransmittance(scene_, ray.at(tMin), ray.direction * (1.0 / speed),
+                                        (tMax - tMin) * speed);
+    }
+    // media_attenuation: the scene's media dim the light on its way (povray
+    // leaves it out by default, and for a light without media_interaction;
+    // measured).
+    if (light && light->mediaAttenuation && light->mediaInteraction &&
+        !scene_.atmosphere.media.empty() && !passed.isBlack() && std::isfinite(tMax)) {
+        MediaSet set;
+        set.add(scene_.atmosphere.media);
+        const double speed = length(ray.direction);
+        const scene::Ray unit{ray.at(tMin), ray.direction * (1.0 / speed)};
+        passed *= mediaTransmittance(unit, (tMax - tMin) * speed, set);
+    }
+    return passed;
+}
+
+RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                         const scene::Light* light) const {
     ThreadState& state = tests_.local();
+    const bool refractorsOpaque = photons_ && light && light->photons.refraction;
     // povray's shadow cache: the object that last blocked this light is
     // tried first, since neighbouring points are usually shadowed by the
     // same object. A hit that lets no light through settles the ray.
@@ -335,12 +397,12 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         ++state.tests[cached->kind];
         scene::SurfaceHit h;
         if (cached->object->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h) &&
-            lightPassing(*h.primitive, ray.at(h.t)).isBlack())
+            passing(*h.primitive, ray.at(h.t), refractorsOpaque).isBlack())
             return RGB(0.0);
     }
     // Most shadow rays are either clear or blocked by something opaque:
     // one any-hit search settles both.
-    const Occlusion o = findOccluder(ray, tMin, tMax, state);
+    const Occlusion o = findOccluder(ray, tMin, tMax, state, refractorsOpaque);
     if (o.blocker.object) {
         if (cached) *cached = o.blocker;
         return RGB(0.0);
@@ -374,16 +436,47 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
         if (dot(obj.normalAt(p), ray.direction) < 0 && insideCount < inside.size())
             inside[insideCount++] = {in, t};
     };
+    // Hollow objects with media: the light is dimmed by the media between
+    // where the ray enters and leaves, or from its start when it starts
+    // inside (a media sample point), or to its end when the light is inside
+    // (measured: povray's shadow under a box of absorbing media).
+    std::array<Inside, 8> inMedia{};
+    size_t inMediaCount = 0;
+    auto mediaBetween = [&](const scene::Interior& in, double t0, double t1) {
+        MediaSet set;
+        set.add(in.media);
+        const scene::Ray unit{ray.at(t0), ray.direction * (1.0 / speed)};
+        passed *= mediaTransmittance(unit, (t1 - t0) * speed, set);
+    };
+    auto crossMedia = [&](const scene::Object& obj, const Vec3& p, double t) {
+        const scene::Interior* in = obj.interior.get();
+        if (!in || in->media.empty() || !obj.hollow) return;
+        for (size_t i = 0; i < inMediaCount; ++i) {
+            if (inMedia[i].interior != in) continue;
+            mediaBetween(*in, inMedia[i].from, t);
+            inMedia[i] = inMedia[--inMediaCount];
+            return;
+        }
+        if (dot(obj.normalAt(p), ray.direction) < 0) {
+            if (inMediaCount < inMedia.size()) inMedia[inMediaCount++] = {in, t};
+        } else {
+            mediaBetween(*in, tMin, t);
+        }
+    };
     while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
         const Vec3 p = ray.at(hit.t);
         crossFading(*hit.object, p, hit.t);
-        const RGB through = lightPassing(*hit.object, p);
+        crossMedia(*hit.object, p, hit.t);
+        const RGB through = passing(*hit.object, p, refractorsOpaque);
         if (through.isBlack()) return RGB(0.0);
         passed *= through * fakeCaustics(*hit.object, p, ray.direction);
         if (passed.isBlack()) return passed;
         const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         from = hit.t + std::max(selfHit, scale * 1e-9);
     }
+    if (std::isfinite(tMax))
+        for (size_t i = 0; i < inMediaCount; ++i)
+            mediaBetween(*inMedia[i].interior, inMedia[i].from, tMax);
     return passed;
 }
 

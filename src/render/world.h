@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,8 @@
 #include "scene/scene.h"
 
 namespace frameray::render {
+
+class Photons;
 
 // Intersection tests of one frame by the kind of top-level object tested
 // (a shape's name; a CSG tree counts once, under its operation), sorted by
@@ -29,6 +32,9 @@ using ShapeTestCounts = std::vector<std::pair<std::string, std::uint64_t>>;
 // opaque there (render-side, shared by shadow rays and their cache).
 RGB lightPassing(const scene::Object& obj, const Vec3& p);
 
+// As in povray, a ray sees no surface this far from its origin or farther.
+inline constexpr double kMaxRayDistance = 1e7;
+
 struct Hit {
     double t = scene::kInfinity;
     const scene::Object* object = nullptr;
@@ -41,8 +47,9 @@ class World {
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
-    // Closest hit with t in (tMin, tMax) among the surfaces `kind` rays
-    // see (camera rays skip no_image, reflected rays no_reflection).
+    // Closest hit with t in (tMin, min(tMax, kMaxRayDistance)) among the
+    // surfaces `kind` rays see (camera rays skip no_image, reflected rays
+    // no_reflection). Any ray may be asked, NaN or huge ones included.
     bool intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
                    scene::RayKind kind = scene::RayKind::Camera) const;
     // Whether anything that casts shadows lies in (tMin, tMax).
@@ -61,6 +68,10 @@ class World {
 
     const scene::Scene& scene() const { return scene_; }
 
+    // The scene's photon map (render/photons.h), shot when the World is
+    // built; null unless the scene turns photons on.
+    const Photons* photons() const { return photons_.get(); }
+
     // The tests made so far by every thread; call once rendering is over.
     ShapeTestCounts shapeTests() const;
 
@@ -73,6 +84,9 @@ class World {
     };
 
   private:
+    // shadowFilter without the scene's media.
+    RGB surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
+                      const scene::Light* light) const;
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);
@@ -84,6 +98,7 @@ class World {
     std::vector<const scene::Object*> unbounded_;
     std::vector<std::uint16_t> unboundedKinds_;
     bool hasBounded_ = false;
+    std::unique_ptr<const Photons> photons_;
     // A top-level object that blocked a shadow ray, with its statistics kind.
     struct Blocker {
         const scene::Object* object = nullptr;
@@ -101,8 +116,8 @@ class World {
         std::vector<Blocker> lastBlocker;  // indexed like scene().lights
     };
     // One any-hit search of (tMin, tMax) for a crossing that stops the light.
-    Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax,
-                           ThreadState& state) const;
+    Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax, ThreadState& state,
+                           bool refractorsOpaque) const;
 
     std::vector<std::string> kindNames_;
     mutable tbb::enumerable_thread_specific<ThreadState, tbb::cache_aligned_allocator<ThreadState>,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scene/color_map.h"
+#include "scene/media.h"
 #include "scene/texture.h"
 #include "util/color.h"
 #include "util/matrix.h"
@@ -71,6 +72,8 @@ struct Atmosphere {
     std::vector<Fog> fogs;
     std::optional<SkySphere> skySphere;  // povray keeps only the last one
     std::vector<Rainbow> rainbows;
+    // Scene-level media { }: fills the open air (and hollow objects).
+    MediaList media;
 };
 
 }  // namespace frameray::scene

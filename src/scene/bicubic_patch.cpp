@@ -94,16 +94,18 @@ Vec3 BicubicPatch::surfaceNormal(double u, double v) const {
 
 std::shared_ptr<const Shape> BicubicPatch::placedBy(const Transform& toWorld) const {
     if (flatness_ <= 0) return nullptr;  // the same triangles wherever it is
-    return std::make_shared<BicubicPatch>(points_, uSteps_, vSteps_, flatness_, toWorld);
+    return std::make_shared<BicubicPatch>(points_, uSteps_, vSteps_, flatness_, toWorld,
+                                          uvCorners_);
 }
 
 BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int vSteps,
-                           double flatness, const Transform& placement)
+                           double flatness, const Transform& placement, const UvCorners& uvCorners)
     : points_(points),
       uSteps_(uSteps),
       vSteps_(vSteps),
       flatness_(flatness),
-      placement_(placement) {
+      placement_(placement),
+      uvCorners_(uvCorners) {
     std::vector<Vec3> vertices, normals;
     std::vector<std::array<double, 2>> uvs;
     std::vector<MeshTriangle> tris;
@@ -118,7 +120,10 @@ BicubicPatch::BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int v
     auto addVertex = [&](double u, double v) {
         vertices.push_back(point(u, v));
         normals.push_back(cornerNormal(u, v));
-        uvs.push_back({u, v});
+        const UvCorners& c = uvCorners_;
+        const double w00 = (1 - u) * (1 - v), w10 = u * (1 - v), w11 = u * v, w01 = (1 - u) * v;
+        uvs.push_back({w00 * c[0][0] + w10 * c[1][0] + w11 * c[2][0] + w01 * c[3][0],
+                       w00 * c[0][1] + w10 * c[1][1] + w11 * c[2][1] + w01 * c[3][1]});
         return static_cast<uint32_t>(vertices.size() - 1);
     };
     auto addQuad = [&](uint32_t p00, uint32_t p10, uint32_t p01, uint32_t p11) {

@@ -23,10 +23,16 @@ namespace frameray::scene {
 
 class BicubicPatch final : public Shape {
   public:
+    // uv_vectors: the (u, v) that uv_mapping gives the corners (u, v) =
+    // (0, 0), (1, 0), (1, 1), (0, 1), blended bilinearly in between.
+    using UvCorners = std::array<std::array<double, 2>, 4>;
+    static constexpr UvCorners kUnitUvCorners = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+
     // points[4 * row + column]: the row runs along v, the column along u.
     // `placement` only decides where flatness measures distances.
     BicubicPatch(const std::array<Vec3, 16>& points, int uSteps, int vSteps, double flatness,
-                 const Transform& placement = Transform());
+                 const Transform& placement = Transform(),
+                 const UvCorners& uvCorners = kUnitUvCorners);
     std::shared_ptr<const Shape> placedBy(const Transform& toWorld) const override;
 
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override {
@@ -66,6 +72,7 @@ class BicubicPatch final : public Shape {
     int uSteps_, vSteps_;
     double flatness_;
     Transform placement_;
+    UvCorners uvCorners_;
     std::shared_ptr<const TriangleMesh> mesh_;
 };
 

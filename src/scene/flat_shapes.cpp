@@ -9,7 +9,10 @@ namespace frameray::scene {
 // --- Disc -----------------------------------------------------------------------
 
 Disc::Disc(const Vec3& center, const Vec3& normal, double radius, double holeRadius)
-    : center_(center), normal_(normalize(normal)), radius2_(radius * radius), hole2_(holeRadius * holeRadius) {}
+    : center_(center),
+      normal_(normalize(normal)),
+      radius2_(radius * radius),
+      hole2_(holeRadius * holeRadius) {}
 
 void Disc::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
     const double denom = dot(ray.direction, normal_);
@@ -28,7 +31,8 @@ Bounds Disc::bounds() const {
     // 0.001-high band of the box's front face below y = 0).
     const double r = std::sqrt(radius2_);
     const Vec3& n = normal_;
-    const Vec3 e = Vec3{r * std::sqrt(std::max(0.0, 1 - n.x * n.x)), r * std::sqrt(std::max(0.0, 1 - n.y * n.y)),
+    const Vec3 e = Vec3{r * std::sqrt(std::max(0.0, 1 - n.x * n.x)),
+                        r * std::sqrt(std::max(0.0, 1 - n.y * n.y)),
                         r * std::sqrt(std::max(0.0, 1 - n.z * n.z))} +
                    Vec3{std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)} * kThickness;
     return {center_ - e, center_ + e};
@@ -43,23 +47,7 @@ Triangle::Triangle(const Vec3& a, const Vec3& b, const Vec3& c) : a_(a), b_(b), 
 
 bool Triangle::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
     if (degenerate_) return false;
-    // Moller-Trumbore in double precision. Edges count as inside so two
-    // triangles sharing an edge leave no crack between them.
-    const Vec3 e1 = b_ - a_, e2 = c_ - a_;
-    const Vec3 pv = cross(ray.direction, e2);
-    const double det = dot(e1, pv);
-    if (det == 0) return false;
-    const double inv = 1 / det;
-    const Vec3 tv = ray.origin - a_;
-    const double u = dot(tv, pv) * inv;
-    if (u < 0 || u > 1) return false;
-    const Vec3 qv = cross(tv, e1);
-    const double v = dot(ray.direction, qv) * inv;
-    if (v < 0 || u + v > 1) return false;
-    const double hit = dot(e2, qv) * inv;
-    if (!(hit > tMin && hit < tMax)) return false;
-    t = hit;
-    return true;
+    return detail::hitTriangle(ray, a_, b_, c_, tMin, tMax, t);
 }
 
 void Triangle::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const {
@@ -93,8 +81,8 @@ void Triangle::weights(const Vec3& p, double& wb, double& wc) const {
 
 // --- SmoothTriangle ---------------------------------------------------------------
 
-SmoothTriangle::SmoothTriangle(const Vec3& a, const Vec3& na, const Vec3& b, const Vec3& nb, const Vec3& c,
-                               const Vec3& nc)
+SmoothTriangle::SmoothTriangle(const Vec3& a, const Vec3& na, const Vec3& b, const Vec3& nb,
+                               const Vec3& c, const Vec3& nc)
     : Triangle(a, b, c), na_(normalize(na)), nb_(normalize(nb)), nc_(normalize(nc)) {}
 
 Vec3 SmoothTriangle::normal(const Vec3& p) const {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "scene/shape_math.h"
+
 namespace frameray::scene {
 
 namespace {
@@ -90,26 +92,15 @@ HeightField::HeightField(int width, int height, std::vector<uint16_t> heights, b
 
 bool HeightField::hitCell(int i, int k, const Ray& ray, double tMin, double tMax, double hits[2],
                           int& count) const {
-    // Moller-Trumbore on the cell's two triangles, edges included so that
-    // neighbours leave no crack.
+    // The cell's two triangles (shape_math.h's test: edges included, so
+    // neighbours leave no crack).
     const Vec3 c00 = corner(i, k), c10 = corner(i + 1, k), c01 = corner(i, k + 1),
                c11 = corner(i + 1, k + 1);
     const Vec3 tri[2][3] = {{c00, c10, c01}, {c10, c11, c01}};
     count = 0;
     for (const auto& t : tri) {
-        const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
-        const Vec3 pv = cross(ray.direction, e2);
-        const double det = dot(e1, pv);
-        if (det == 0) continue;
-        const double inv = 1 / det;
-        const Vec3 tv = ray.origin - t[0];
-        const double u = dot(tv, pv) * inv;
-        if (u < 0 || u > 1) continue;
-        const Vec3 qv = cross(tv, e1);
-        const double v = dot(ray.direction, qv) * inv;
-        if (v < 0 || u + v > 1) continue;
-        const double h = dot(e2, qv) * inv;
-        if (!(h > tMin && h < tMax)) continue;
+        double h;
+        if (!detail::hitTriangle(ray, t[0], t[1], t[2], tMin, tMax, h)) continue;
         if (waterLevel_ > 0 && ray.origin.y + ray.direction.y * h < waterLevel_) continue;
         hits[count++] = h;
     }

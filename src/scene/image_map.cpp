@@ -133,9 +133,8 @@ double ImageTexels::value(std::size_t p) const {
             break;
         case Scalar::Grey:
         default: {
-            const bool grey = px.channels() < 3;
-            v = 0.297 * channel(p, 0) + 0.589 * channel(p, grey ? 0 : 1) +
-                0.114 * channel(p, grey ? 0 : 2);
+            const bool greyImage = px.channels() < 3;
+            v = grey(channel(p, 0), channel(p, greyImage ? 0 : 1), channel(p, greyImage ? 0 : 2));
         }
     }
     // Single precision, as the scalar has always been kept.
@@ -147,8 +146,7 @@ double materialIndex(const util::PixelBuffer& px, std::size_t p) {
     const double byte = std::floor(static_cast<double>(px.value(p, 0)) * 255.0 + 0.5);
     if (px.channels() >= 3) return byte;
     const float g = static_cast<float>(byte) / 255.0f;
-    const float grey = 0.297f * g + 0.589f * g + 0.114f * g;
-    return std::floor(static_cast<double>(grey) * 255.0);
+    return std::floor(static_cast<double>(greySingle(g, g, g)) * 255.0);
 }
 
 bool imageCoordinatesOk(const ImageMap& map, const Vec3& p, double& u, double& v) {

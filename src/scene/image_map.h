@@ -35,7 +35,7 @@ class ImageTexels {
   public:
     // What image_pattern, bump_map and material_map read from a texel.
     enum class Scalar : std::uint8_t {
-        Grey,          // 0.297 r + 0.589 g + 0.114 b of the file values (no gamma)
+        Grey,          // grey() (util/color.h) of the file values (no gamma)
         Alpha,         // 1 - alpha (use_alpha)
         Index,         // the palette index itself (bump_map use_index)
         MaterialIndex  // material_map's texture index (see materialIndex)
@@ -81,7 +81,7 @@ class ImageTexels {
 // The texture material_map picks at pixel p of `pixels` before the list
 // length is applied: the palette index of palette images, the 8-bit red
 // value of colour images and, for grey images, the grey value taken through
-// povray's single-precision 0.297/0.589/0.114 weighting times 255,
+// povray's single-precision grey weighting (greySingle) times 255,
 // truncated (so 111 gives 110: measured over all 256 grey levels).
 double materialIndex(const util::PixelBuffer& pixels, std::size_t p);
 

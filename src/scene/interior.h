@@ -4,6 +4,7 @@
 // inherited it) form one region: a ray inside one of them is inside all.
 #pragma once
 
+#include "scene/media.h"
 #include "util/color.h"
 
 namespace frameray::scene {
@@ -20,6 +21,10 @@ struct Interior {
     double fadePower = 0.0;
     RGB fadeColor{0.0};
     double caustics = 0.0;  // povray's fake caustics (render/optics.h, fakeCaustics)
+    // media { } blocks, in the object's space. povray 3.7 samples them
+    // only inside hollow objects (measured: a non-hollow container shows
+    // no media and casts no media shadow).
+    MediaList media;
 
     // povray fades whenever fade_distance > 0, even at the default power 0
     // (measured: 1 / (1 + (d / fade_distance)^0) = 0.5 of the light passes).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "scene/shape_math.h"
+
 namespace frameray::scene {
 
 namespace {
@@ -51,7 +53,9 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
         for (Vec3& n : normals_)
             if (dot(n, n) > 0) n = normalize(n);
     triangles_.reserve(triangles.size());
+    inputFaces_.reserve(triangles.size());
     for (const MeshTriangle& t : triangles) {
+        inputFaces_.push_back(t.vertex);
         const Vec3 &a = vertices_[t.vertex[0]], &b = vertices_[t.vertex[1]],
                    &c = vertices_[t.vertex[2]];
         const Vec3 n = cross(b - a, c - a);
@@ -166,23 +170,11 @@ void TriangleMesh::traverse(const Group& g, const Ray& ray, double tMin, Limit t
 
 bool TriangleMesh::hitTriangle(uint32_t tri, const Ray& ray, double tMin, double tMax,
                                double& t) const {
-    // Moller-Trumbore in double precision; edges count as inside so
-    // neighbouring triangles leave no crack.
     const MeshTriangle& m = triangles_[tri];
-    const Vec3& a = vertices_[m.vertex[0]];
-    const Vec3 e1 = vertices_[m.vertex[1]] - a, e2 = vertices_[m.vertex[2]] - a;
-    const Vec3 pv = cross(ray.direction, e2);
-    const double det = dot(e1, pv);
-    if (det == 0) return false;
-    const double inv = 1 / det;
-    const Vec3 tv = ray.origin - a;
-    const double u = dot(tv, pv) * inv;
-    if (u < 0 || u > 1) return false;
-    const Vec3 qv = cross(tv, e1);
-    const double v = dot(ray.direction, qv) * inv;
-    if (v < 0 || u + v > 1) return false;
-    const double hit = dot(e2, qv) * inv;
-    if (!(hit > tMin && hit < tMax)) return false;
+    double hit;
+    if (!detail::hitTriangle(ray, vertices_[m.vertex[0]], vertices_[m.vertex[1]],
+                             vertices_[m.vertex[2]], tMin, tMax, hit))
+        return false;
     if (minY_ > -kInfinity && ray.origin.y + ray.direction.y * hit < minY_) return false;
     t = hit;
     return true;

@@ -50,6 +50,13 @@ class TriangleMesh {
     void clipBelow(double y) { minY_ = y; }
 
     size_t triangleCount() const { return triangles_.size(); }
+    // The corners of every triangle as given, in input order, degenerate
+    // ones included (mesh_camera numbers the faces so).
+    size_t inputTriangleCount() const { return inputFaces_.size(); }
+    std::array<Vec3, 3> inputTriangle(size_t i) const {
+        const auto& f = inputFaces_[i];
+        return {vertices_[f[0]], vertices_[f[1]], vertices_[f[2]]};
+    }
     size_t groupCount() const { return groups_.size(); }
     // The texture index shared by the triangles of group g (-1: none).
     int32_t groupTexture(size_t g) const { return groups_[g].texture; }
@@ -96,7 +103,8 @@ class TriangleMesh {
 
     std::vector<Vec3> vertices_;
     std::vector<Vec3> normals_;
-    std::vector<MeshTriangle> triangles_;  // sorted by group, then in BVH order
+    std::vector<MeshTriangle> triangles_;              // sorted by group, then in BVH order
+    std::vector<std::array<uint32_t, 3>> inputFaces_;  // vertex indices, input order
     std::vector<std::array<double, 2>> uvs_;
     std::vector<Group> groups_;
     double minY_ = -kInfinity;

@@ -21,6 +21,8 @@ bool visibleTo(const Object& primitive, RayKind kind) {
             return !primitive.noReflection;
         case RayKind::Shadow:
             return !primitive.noShadow;
+        case RayKind::Radiosity:
+            return !primitive.noRadiosity;
         case RayKind::Any:
             return true;
     }
@@ -47,13 +49,27 @@ void Object::transformBy(const Transform& t) {
         if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
     }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
-    for (Light& light : lights) light.transformBy(t);
     for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
+    if (interiorTexture) {
+        auto moved = std::make_shared<Texture>(*interiorTexture);
+        moved->transformBy(t);
+        interiorTexture = std::move(moved);
+    }
     if (texture) {
         auto moved = std::make_shared<Texture>(*texture);
         moved->transformBy(t);
         texture = moved;
+    }
+    if (interior && !interior->media.empty()) {
+        // The media's densities move with the object.
+        auto moved = std::make_shared<Interior>(*interior);
+        for (auto& m : moved->media) {
+            auto media = std::make_shared<Media>(*m);
+            media->transformBy(t);
+            m = std::move(media);
+        }
+        interior = std::move(moved);
     }
     for (auto& component : componentTextures) {
         if (!component) continue;

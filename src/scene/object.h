@@ -15,6 +15,7 @@
 
 #include "scene/interior.h"
 #include "scene/lights.h"
+#include "scene/photon_settings.h"
 #include "scene/shapes.h"
 #include "scene/texture.h"
 
@@ -31,6 +32,7 @@ enum class RayKind {
     Camera,      // skips no_image surfaces (also rays refracted from camera rays)
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
+    Radiosity,   // skips no_radiosity surfaces
     Any,         // sees everything (bounding tests)
 };
 
@@ -59,6 +61,10 @@ struct Object {
     // Null: the nearest ancestor's texture, finally the default texture
     // (resolved once the object is placed in the scene, see csg.h).
     std::shared_ptr<const Texture> texture;
+    // interior_texture: the texture of the surface's inner side (seen where
+    // the outward normal faces away from the viewer). Null: the nearest
+    // ancestor's, finally `texture` (povray 3.7, measured).
+    std::shared_ptr<const Texture> interiorTexture;
     // A blob whose components carry textures: one per component (null: the
     // object's own texture), blended at each point by how much each
     // component adds to the field there (povray 3.7: weights |field_i| /
@@ -76,16 +82,18 @@ struct Object {
     bool noShadow = false;
     bool noImage = false;
     bool noReflection = false;
+    bool noRadiosity = false;  // radiosity rays pass through it
+    // radiosity { importance }: the share of `count` a sample on it shoots;
+    // 0: not given (1).
+    double radiosityImportance = 0;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
     bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
+    // Its part in photon mapping; a CSG node's block holds for the
+    // children that have none (csg::resolveInheritance).
+    ObjectPhotons photons;
 
-    // Light sources written inside this CSG node or light_group, in world
-    // space and moved with it; the parser hands them to the scene (or to
-    // the group) when the object is placed (sdl::placeObjectLights).
-    std::vector<Light> lights;
-    // Parse-time: this node is a light_group, and its global_lights value.
-    bool isLightGroup = false;
-    bool globalLights = false;
+    // (Light sources written inside a CSG node or light_group are the
+    // parser's until the object is placed: sdl::ObjectLights.)
     // Set on the primitives of a light_group once placed: the lights that
     // shade them. Null: the scene's lights.
     std::shared_ptr<const LightGroup> lightGroup;

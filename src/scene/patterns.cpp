@@ -338,14 +338,12 @@ int Pattern::indexAt(const Vec3& p) const {
 
 namespace {
 
-// pigment_pattern's grey: povray weighs the channels 0.297, 0.589, 0.114
-// in single precision, products and sums alike (measured to 1e-17), and
-// ignores filter and transmit; the grey is not clamped.
+// pigment_pattern's grey: povray weighs the channels in single precision,
+// products and sums alike (measured to 1e-17), and ignores filter and
+// transmit; the grey is not clamped.
 double pigmentGrey(const RGB& c) {
-    const float r = static_cast<float>(c.r) * 0.297f;
-    const float g = static_cast<float>(c.g) * 0.589f;
-    const float b = static_cast<float>(c.b) * 0.114f;
-    return static_cast<double>(r + g + b);
+    return static_cast<double>(
+        greySingle(static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b)));
 }
 
 // gradient and function patterns wrap values above one into [0, 1) before

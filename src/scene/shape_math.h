@@ -12,6 +12,29 @@
 
 namespace frameray::scene::detail {
 
+// The one ray-triangle test (Moller-Trumbore in double precision) of
+// triangles, meshes and height fields: the ray parameter in (tMin, tMax)
+// where the ray crosses triangle a b c, or false. Edges count as inside,
+// so triangles sharing an edge leave no crack between them.
+inline bool hitTriangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, double tMin,
+                        double tMax, double& t) {
+    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 pv = cross(ray.direction, e2);
+    const double det = dot(e1, pv);
+    if (det == 0) return false;
+    const double inv = 1 / det;
+    const Vec3 tv = ray.origin - a;
+    const double u = dot(tv, pv) * inv;
+    if (u < 0 || u > 1) return false;
+    const Vec3 qv = cross(tv, e1);
+    const double v = dot(ray.direction, qv) * inv;
+    if (v < 0 || u + v > 1) return false;
+    const double hit = dot(e2, qv) * inv;
+    if (!(hit > tMin && hit < tMax)) return false;
+    t = hit;
+    return true;
+}
+
 // Sorts the hits found, drops near-duplicates (a ray through a joint of two
 // pieces finds it twice) and appends those in (tMin, tMax) to ts.
 inline void appendDistinctHits(std::vector<double>& found, double tMin, double tMax,

@@ -52,6 +52,10 @@ class Pigment {
     void setList(std::vector<std::shared_ptr<const Pigment>> list) { list_ = std::move(list); }
     const std::vector<std::shared_ptr<const Pigment>>& list() const { return list_; }
     void setColorMap(ColorMap map);
+    // A pattern without a colour_map takes povray's default map for it,
+    // which may depend on items after the pattern keyword (mandel's
+    // exponent): the parser calls this once the pigment block is read.
+    void settleDefaultColorMap();
     void setPigmentMap(std::vector<MapEntry> map);
     // image_map (image_map.h): the image, seen through the pattern's chain.
     void setImageMap(std::shared_ptr<const ImageMap> map) {
@@ -92,6 +96,7 @@ class Pigment {
     std::vector<MapEntry> pigmentMap_;
     std::shared_ptr<const ImageMap> imageMap_;
     bool average_ = false;
+    bool defaultColorMap_ = false;  // colorMap_ is the pattern's default
     bool uvMapping_ = false;
     bool hasTransform_ = false;
     Transform transform_;
@@ -254,12 +259,13 @@ struct Texture {
     // unit normal n facing the viewer (slope and aoi read `surface`).
     // For a uv-mapped texture p is the surface's (u, v, 0), as uv is.
     Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv,
-                      const SurfaceInfo* surface = nullptr) const {
+                       const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
         if (normal->uvMapping) return normalize(normal->perturb(uv, n, surface));
         if (uvObjectTransform.isIdentity()) {
             const Vec3 tn = normalize(transform.inverse().normal(n));
-            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
+            return normalize(
+                transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
         }
         const Transform frame = transform.then(uvObjectTransform);
         const Vec3 tn = normalize(frame.inverse().normal(n));

@@ -46,7 +46,7 @@ void Interpreter::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& n
     expect(Sym::LBrace, "'{' starting an array initializer");
     const int size = array.dims[dim];
     int count = 0;
-    // POV-Ray allows a trailing comma before '}'.
+    // POV-Ray allows a trailing comma before '}' and omitted commas.
     while (!peek().is(Sym::RBrace)) {
         if (count == size)
             fail(peek(),
@@ -60,7 +60,7 @@ void Interpreter::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& n
             setArrayElement(array, nextIndex++, std::move(v), at);
         }
         ++count;
-        if (!accept(Sym::Comma)) break;
+        accept(Sym::Comma);  // optional in povray (`{ A, B C }`), silently
     }
     if (count < size)
         fail(open, fmt::format("too few elements in the array initializer: {} of {}", count, size));

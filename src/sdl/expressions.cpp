@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <numbers>
 
 #include "scene/noise.h"
@@ -91,6 +92,67 @@ int intNumber(double v) {
     return static_cast<int>(std::clamp<int64_t>(wholeNumber(v), -2147483647, 2147483647));
 }
 
+// Keywords other than the colour keywords that start a float or vector
+// expression: the built-in constants and the functions giving a number.
+constexpr Keyword kNumericStarts[] = {Keyword::kw_pi,
+                                      Keyword::kw_true,
+                                      Keyword::kw_yes,
+                                      Keyword::kw_on,
+                                      Keyword::kw_false,
+                                      Keyword::kw_no,
+                                      Keyword::kw_off,
+                                      Keyword::kw_x,
+                                      Keyword::kw_y,
+                                      Keyword::kw_z,
+                                      Keyword::kw_t,
+                                      Keyword::kw_u,
+                                      Keyword::kw_v,
+                                      Keyword::kw_clock,
+                                      Keyword::kw_clock_delta,
+                                      Keyword::kw_clock_on,
+                                      Keyword::kw_frame_number,
+                                      Keyword::kw_initial_clock,
+                                      Keyword::kw_final_clock,
+                                      Keyword::kw_initial_frame,
+                                      Keyword::kw_final_frame,
+                                      Keyword::kw_image_width,
+                                      Keyword::kw_image_height,
+                                      Keyword::kw_version,
+                                      Keyword::kw_now,
+                                      Keyword::kw_min,
+                                      Keyword::kw_max,
+                                      Keyword::kw_select,
+                                      Keyword::kw_vlength,
+                                      Keyword::kw_vdot,
+                                      Keyword::kw_vcross,
+                                      Keyword::kw_vturbulence,
+                                      Keyword::kw_vnormalize,
+                                      Keyword::kw_vrotate,
+                                      Keyword::kw_vaxis_rotate,
+                                      Keyword::kw_strlen,
+                                      Keyword::kw_asc,
+                                      Keyword::kw_strcmp,
+                                      Keyword::kw_val,
+                                      Keyword::kw_seed,
+                                      Keyword::kw_rand,
+                                      Keyword::kw_bitwise_and,
+                                      Keyword::kw_bitwise_or,
+                                      Keyword::kw_bitwise_xor,
+                                      Keyword::kw_dimensions,
+                                      Keyword::kw_dimension_size,
+                                      Keyword::kw_file_exists,
+                                      Keyword::kw_min_extent,
+                                      Keyword::kw_max_extent,
+                                      Keyword::kw_trace,
+                                      Keyword::kw_inside,
+                                      Keyword::kw_defined};
+
+bool startsNumericKeyword(Keyword kw) {
+    if (unaryFloatFunction(kw) || binaryFloatFunction(kw)) return true;
+    return std::find(std::begin(kNumericStarts), std::end(kNumericStarts), kw) !=
+           std::end(kNumericStarts);
+}
+
 // In single precision, as povray computes it (its last digit shows).
 double srgbToLinear(double v) {
     const float x = static_cast<float>(v);
@@ -171,6 +233,32 @@ std::string Interpreter::parseString() {
     Value v = parseExpression();
     if (auto* s = std::get_if<std::string>(&v)) return std::move(*s);
     fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
+}
+
+bool Interpreter::floatFollows() {
+    const Token& t = peek();
+    switch (t.kind) {
+        case TokenKind::Number:
+            return true;
+        case TokenKind::Symbol:
+            return t.is(Sym::LParen) || t.is(Sym::Plus) || t.is(Sym::Minus) || t.is(Sym::Bang) ||
+                   t.is(Sym::Less);
+        case TokenKind::Word:
+            break;
+        default:
+            return false;
+    }
+    if (t.kw != Keyword::None) return startsNumericKeyword(t.kw);
+    // povray commits to an expression at any numeric identifier (`bumps
+    // V.x`); a vector there without a component is then an error.
+    const Value* v = lookup(t);
+    return v && (std::holds_alternative<double>(*v) || std::holds_alternative<VectorValue>(*v) ||
+                 std::holds_alternative<FunctionPtr>(*v) || std::holds_alternative<SplinePtr>(*v) ||
+                 std::holds_alternative<ArrayPtr>(*v));
+}
+
+double Interpreter::parseOptionalFloat(double absent) {
+    return floatFollows() ? parseFloat() : absent;
 }
 
 Color Interpreter::parseColor() {
@@ -320,12 +408,15 @@ Value Interpreter::parseMultiplicative() {
         if (!isNumeric(left) || !isNumeric(right))
             fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
                                  valueKindName(right)));
-        // Division by zero gives POV-Ray's huge value rather than inf.
-        left = op.is(Sym::Star)
-                   ? combine(left, right, std::multiplies<double>())
-                   : combine(left, right, [](double a, double b) {
-                         return b == 0 ? (a == 0 ? 0.0 : std::copysign(1e10, a)) : a / b;
-                     });
+        // povray warns once per component divided by zero, and the result
+        // is +inf whatever the sign of the dividend (measured: -1/0 and
+        // 0/0 are inf too).
+        left = op.is(Sym::Star) ? combine(left, right, std::multiplies<double>())
+                                : combine(left, right, [&](double a, double b) {
+                                      if (b != 0) return a / b;
+                                      warn(op, "divide by zero; the result is inf");
+                                      return std::numeric_limits<double>::infinity();
+                                  });
     }
 }
 
@@ -382,7 +473,7 @@ Value Interpreter::parsePostfix() {
         if (slot < 0) fail(item, fmt::format("'{}' is not a vector component", item.text));
         if (slot == kGrayItem) {
             const VectorValue c = promote(v, 5);
-            v = grayOf(c.v[0], c.v[1], c.v[2]);
+            v = grey(c.v[0], c.v[1], c.v[2]);
             continue;
         }
         // Colours always carry all five components.
@@ -693,6 +784,32 @@ Value Interpreter::parsePrimary() {
     return parseBuiltinFunction(t);
 }
 
+// povray's domain checks of the float functions at parse time (compiled
+// user functions have none): sqrt, log and ln of a number out of their
+// domain stop the parse; acos and asin warn and take the nearest end of
+// theirs.
+double Interpreter::checkedArgument(const Token& fn, double a) {
+    switch (fn.kw) {
+        case Keyword::kw_sqrt:
+            if (a < 0) fail(fn, fmt::format("sqrt of a negative number ({})", a));
+            return a;
+        case Keyword::kw_ln:
+        case Keyword::kw_log:
+            if (a <= 0) fail(fn, fmt::format("{} of a number not above zero ({})", fn.text, a));
+            return a;
+        case Keyword::kw_acos:
+        case Keyword::kw_asin:
+            if (a > 1 || a < -1) {
+                warn(fn, fmt::format("domain error in {}: {} is outside -1 to 1; using {}", fn.text,
+                                     a, a > 1 ? 1 : -1));
+                return a > 1 ? 1.0 : -1.0;
+            }
+            return a;
+        default:
+            return a;
+    }
+}
+
 Value Interpreter::parseBuiltinFunction(const Token& fn) {
     auto f = [&](const Value& v) { return toFloat(v, fn); };
     auto vec = [&](const Value& v) { return toVector(v, fn, 3).xyz(); };
@@ -701,10 +818,13 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
         fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
     };
     if (const UnaryFloatFunction op = unaryFloatFunction(fn.kw))
-        return op(f(parseArguments(1, 1, fn)[0]));
+        return op(checkedArgument(fn, f(parseArguments(1, 1, fn)[0])));
     if (const BinaryFloatFunction op = binaryFloatFunction(fn.kw)) {
         auto a = parseArguments(2, 2, fn);
-        return op(f(a[0]), f(a[1]));
+        const double x = f(a[0]), y = f(a[1]);
+        if (fn.kw == Keyword::kw_atan2 && x == 0 && y == 0)
+            fail(fn, "domain error in atan2: atan2(0, 0) has no angle");
+        return op(x, y);
     }
 
     switch (fn.kw) {
@@ -907,7 +1027,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             if (!obj)
                 fail(fn,
                      fmt::format("'{}' needs an object, found a {}", fn.text, valueKindName(a[0])));
-            const scene::Bounds b = (*obj)->worldBounds();
+            const scene::Bounds b = (*obj)->object->worldBounds();
             return VectorValue::fromVec3(fn.kw == Keyword::kw_min_extent ? b.lo : b.hi);
         }
         case Keyword::kw_trace: {
@@ -929,8 +1049,9 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             expect(Sym::RParen, "')'");
             scene::SurfaceHit hit;
             Vec3 point, normal;
-            if (length(direction) > 0 && (*obj)->firstHit({start, direction}, 0.0, scene::kInfinity,
-                                                          scene::RayKind::Any, hit)) {
+            if (length(direction) > 0 &&
+                (*obj)->object->firstHit({start, direction}, 0.0, scene::kInfinity,
+                                         scene::RayKind::Any, hit)) {
                 point = start + direction * hit.t;
                 normal = hit.primitive->normalAt(point);
             }
@@ -942,7 +1063,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
             if (!obj)
                 fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
-            return double((*obj)->inside(vec(a[1])));
+            return double((*obj)->object->inside(vec(a[1])));
         }
         case Keyword::kw_datetime: {
             // Days since 2000-01-01 00:00 UTC, formatted by strftime (default

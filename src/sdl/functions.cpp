@@ -39,7 +39,7 @@ class VectorComponent final : public NativeFunction {
     int paramCount() const { return vector_->paramCount; }
     double eval(const double* args) const override {
         const std::array<double, 5> v = vector_->eval(args);
-        return slot_ == kGrayItem ? grayOf(v[0], v[1], v[2]) : v[static_cast<size_t>(slot_)];
+        return slot_ == kGrayItem ? grey(v[0], v[1], v[2]) : v[static_cast<size_t>(slot_)];
     }
 
   private:
@@ -569,10 +569,14 @@ Value Interpreter::parsePatternFunctionBody() {
 // A `function { ... }` of x, y, z that the renderer will evaluate (patterns,
 // isosurfaces, height fields): a body frameray cannot run yet stops here
 // rather than mid-render.
-std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Token& at) {
+std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Token& at,
+                                                                      bool colourAsGray) {
     const Value body = parseFunctionBody({"x", "y", "z"});
     const FunctionValue& fn = *std::get<FunctionPtr>(body);
     if (!fn.unsupported.empty()) unsupported(at, fn.unsupported);
+    if (fn.vector && fn.vector->isColor && colourAsGray && fn.vector->paramCount == 3)
+        return nativeBody("pigment function", 3,
+                          std::make_shared<VectorComponent>(fn.vector, kGrayItem));
     if (fn.vector)
         fail(at,
              fmt::format(

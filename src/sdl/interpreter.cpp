@@ -58,6 +58,8 @@ const char* valueKindName(const Value& v) {
         const char* operator()(const BlendMapPtr& m) const { return m->kindName(); }
         const char* operator()(const NormalPtr&) const { return "normal"; }
         const char* operator()(const MaterialPtr&) const { return "material"; }
+        const char* operator()(const MediaPtr&) const { return "media"; }
+        const char* operator()(const DensityPtr&) const { return "density"; }
     };
     return std::visit(Namer{}, v);
 }
@@ -70,6 +72,7 @@ Interpreter::Interpreter(const FrameContext& frame, TokenCache& cache, MessageSi
 
 scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
     inputFileName_ = sceneFile.filename().string();  // povray gives the bare name
+    filesRead_.push_back(sceneFile);
     auto file = cache_.get(sceneFile);
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
     return run(std::move(file));
@@ -120,7 +123,7 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file) {
                                                ": warning: declarations precede the first #version "
                                                "directive, which POV-Ray 3.7 expects first");
     // povray 3.7 warns about a missing assumed_gamma because the result
-    // depends on the scene's version (render/gamma.cpp applies the rule).
+    // depends on the scene's version (image/gamma.cpp applies the rule).
     if (!scene_.globals.assumedGammaSet) {
         const char* text =
             version_ >= 3.7 - 1e-9
@@ -169,10 +172,16 @@ void Interpreter::declare(const std::string& name, Value value, bool local, size
     const size_t visible = std::min(scopeCount, scopes_.size());
     if (local) {
         Scope& scope = scopes_[visible - 1];
-        if (auto found = scope.find(key); found != scope.end())
-            found->second = std::move(value);
-        else
+        if (auto found = scope.find(key); found == scope.end()) {
             scope.emplace(name, std::move(value));
+        } else if (const auto* alias = std::get_if<IdentifierAlias>(&found->second)) {
+            // A macro parameter passed by reference: povray's #local on it
+            // assigns the caller's identifier too.
+            const IdentifierAlias target = *alias;
+            scopes_[target.scope][target.name] = std::move(value);
+        } else {
+            found->second = std::move(value);
+        }
         return;
     }
     // #declare assigns the most local existing version, or creates a global;
@@ -354,6 +363,9 @@ void Interpreter::runDirective() {
     const NestingGuard nesting(*this, hash);
     ++cursors_.back().pos;
     const Token word = rawPeek();
+    // povray drops a '#' that a symbol follows, silently (the example
+    // language/image_size.pov has `look_at <0,2,0>#` before the camera's '}').
+    if (word.kind == TokenKind::Symbol) return;
     if (word.kind != TokenKind::Word || word.kw == Keyword::None)
         fail(word, fmt::format("expected a directive after '#', found {}", describeToken(word)));
     ++cursors_.back().pos;
@@ -572,7 +584,7 @@ void Interpreter::acceptSemicolonBeforeDirective() {
 Value Interpreter::parseRValue() {
     const Token start = peek();
     const NestingGuard nesting(*this, start);
-    if (isObjectStart(start)) return parseObject();
+    if (isObjectStart(start)) return std::make_shared<const ObjectValue>(parseObject());
     switch (start.kw) {
         case Keyword::kw_pigment:
             return parsePigment();
@@ -607,6 +619,10 @@ Value Interpreter::parseRValue() {
             return std::make_shared<const scene::Light>(parseLightSource());
         case Keyword::kw_fog:
             return std::make_shared<const scene::Fog>(parseFog());
+        case Keyword::kw_media:
+            return parseMedia();
+        case Keyword::kw_density:
+            return parseDensity();
         case Keyword::kw_sky_sphere:
             return std::make_shared<const scene::SkySphere>(parseSkySphere());
         default:
@@ -646,7 +662,12 @@ void Interpreter::directiveInclude(const Token& at) {
         fail(at,
              fmt::format("#include nested more than {} levels deep", frame_.limits.includeFiles));
     const fs::path path = findIncludeFile(name);
-    if (path.empty()) fail(at, fmt::format("cannot find include file '{}'", name));
+    if (path.empty()) {
+        const std::string why = whyNotFound(name);
+        fail(at, why.starts_with("no such file")
+                     ? fmt::format("cannot find include file '{}'", name)
+                     : fmt::format("cannot include '{}': {}", name, why));
+    }
     checkReadable(path, name, at);
     const SourceLoc callSite = loc(at);
     std::shared_ptr<const TokenizedFile> file;
@@ -911,13 +932,14 @@ void Interpreter::invokeMacro(const Token& nameToken, const Macro& macro) {
     Scope args;
     expectAfter(Sym::LParen, "'('", macro.name);
     size_t count = 0;
-    if (!peek().is(Sym::RParen)) {
-        do {
-            Value v = bareIdentifierArgument();
-            if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
-            if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
-            ++count;
-        } while (accept(Sym::Comma) && !peek().is(Sym::RParen));  // M(1, 2,) as povray
+    // The commas between arguments are optional in povray (`M(<1,0,0> .5)`),
+    // and a trailing one is ignored (`M(1, 2,)`).
+    while (!peek().is(Sym::RParen)) {
+        Value v = bareIdentifierArgument();
+        if (std::holds_alternative<std::monostate>(v)) v = parseRValue();
+        if (count < macro.params.size()) args[macro.params[count]] = std::move(v);
+        ++count;
+        accept(Sym::Comma);
     }
     expect(Sym::RParen, "')'");
     if (count != macro.params.size())

@@ -28,6 +28,7 @@
 
 namespace frameray::scene {
 struct MeshTriangle;
+struct MeshCamera;
 }
 namespace frameray::image {
 struct SourceImage;
@@ -43,10 +44,6 @@ struct VectorFunction;  // function_value.h
 // luminance of the colour), -1 for anything else (expressions.cpp).
 inline constexpr int kGrayItem = 5;
 int dotItemSlot(Keyword kw);
-// .gray of a colour's first three components.
-inline double grayOf(double r, double g, double b) {
-    return r * 0.297 + g * 0.589 + b * 0.114;
-}
 
 class Interpreter {
   public:
@@ -54,6 +51,11 @@ class Interpreter {
 
     // Parses a scene file into a Scene. Throws SdlError on the first error.
     scene::Scene parseFile(const std::filesystem::path& sceneFile);
+    // The files the parse read (the scene, includes, images, fonts, data
+    // read with #fopen) and wrote (#fopen write/append), in order, as
+    // found: what the frame was made from, for the resume journal.
+    const std::vector<std::filesystem::path>& filesRead() const { return filesRead_; }
+    const std::vector<std::filesystem::path>& filesWritten() const { return filesWritten_; }
     // Parses scene text (tests, one-liners); `name` is used in messages.
     scene::Scene parseText(const std::string& name, const std::string& text);
 
@@ -217,6 +219,9 @@ class Interpreter {
     void invokeMacro(const Token& nameToken, const Macro& macro);
     Value bareIdentifierArgument();  // monostate when the argument is not one
     std::filesystem::path findIncludeFile(const std::string& name) const;
+    // Why findIncludeFile found nothing: a folder of that name, or where
+    // it looked (file_io.cpp).
+    std::string whyNotFound(const std::string& name) const;
     // Fails at `at` when the frame's FileAccessPolicy refuses the file, or
     // when it is no regular file (file_io.cpp); `name` is how the scene
     // named it.
@@ -270,7 +275,10 @@ class Interpreter {
     Value parseFunctionBody(std::vector<std::string> params);
     Value parseInternalFunctionBody();
     Value parsePatternFunctionBody();
-    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at);
+    // `colourAsGray`: a pigment function gives its colour's gray, as a
+    // height_field function does in povray (measured).
+    std::shared_ptr<const CompiledFunction> parseXyzFunction(const Token& at,
+                                                             bool colourAsGray = false);
     void skipToClosingBrace(const Token& from, int depth);
     Value callSpline(const SplineValue& spline, const Token& at);
     Value callFunction(const FunctionValue& function, const Token& at);
@@ -306,6 +314,7 @@ class Interpreter {
     Value parseVectorLiteral();
     Value parseColorKeywords(const Token& first);
     Value parseBuiltinFunction(const Token& name);
+    double checkedArgument(const Token& fn, double a);  // povray's domain checks
     // `known` is what the identifier names when the caller already has it
     // (see PeekCache); looked up otherwise.
     Value identifierValue(const Token& name, const Value* known = nullptr);
@@ -316,14 +325,19 @@ class Interpreter {
     // --- scene statements (scene_parser.cpp) ---
     bool parseStatement();  // a top-level item; false at end of file
     bool isObjectStart(const Token& t) const;
-    ObjectPtr parseObject();  // sphere { }, box { }, object { }...
-    bool parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture);
+    ObjectValue parseObject();  // sphere { }, box { }, object { }...
+    bool parseObjectModifier(ObjectValue& obj, std::optional<scene::Texture>& texture);
     std::shared_ptr<const scene::Shape> parseShape(const Token& kind);  // after '{'
-    void parseCsgChildren(const Token& kind, scene::Object& csg);       // union/merge/... objects
-    void parseLightGroupMembers(scene::Object& group);  // light_group's lights, objects
+    // union/merge/... objects, and the lights among them.
+    std::shared_ptr<const ObjectLights> parseCsgChildren(const Token& kind, scene::Object& csg);
+    // light_group's lights and objects.
+    std::shared_ptr<const ObjectLights> parseLightGroupMembers(scene::Object& group);
     // torus, poly, cubic, quartic, blob (parse_polynomial_shapes.cpp).
     std::shared_ptr<const scene::Shape> parsePolynomialShape(const Token& kind);
     std::shared_ptr<const scene::Shape> parseBlob();
+    std::shared_ptr<const scene::Shape> parsePolygon(const Token& kind);  // parse_polygon.cpp
+    // parse_julia_fractal.cpp
+    std::shared_ptr<const scene::Shape> parseJuliaFractal(const Token& kind);
     std::vector<double> parseCoefficientVector(int count, const Token& kind);
     void applySturm(scene::Object& obj, const Token& at);  // after `sturm`
     // clipped_by { objects } / bounded_by { objects }, or the other list
@@ -334,23 +348,33 @@ class Interpreter {
     bool parseTransformation(Transform& transform);
     Transform parseTransformBlock();
     scene::Camera parseCamera();      // parse_camera.cpp
+    // After 'mesh_camera': its block (parse_mesh_camera.cpp).
+    std::shared_ptr<scene::MeshCamera> parseMeshCamera(const Token& at);
     scene::Light parseLightSource();  // parse_light.cpp
     void placeLight(scene::Light light);
     // Hands the light sources written inside a placed object's CSG nodes
     // to the scene, and a light_group's to the primitives of its group
     // (scene::LightGroup); returns the object with them settled.
-    scene::ObjectRef placeObjectLights(const scene::ObjectRef& obj,
+    scene::ObjectRef placeObjectLights(const scene::ObjectRef& obj, const ObjectLights* lights,
                                        const std::shared_ptr<const scene::LightGroup>& group,
                                        const std::optional<bool>& outermostGlobal);
     TexturePtr parseTexture(const scene::Texture* base);
-    PigmentPtr parsePigment();
+    // pigment { }; inside a texture or object it edits the pigment there (base).
+    PigmentPtr parsePigment(const scene::Pigment* base = nullptr);
+    // pigment { } and normal { } editing those of `tex`, in the space the
+    // texture's transformations lead to (texture_items.cpp).
+    PigmentPtr parseTexturePigment(const scene::Texture& tex);
+    std::shared_ptr<const scene::Normal> parseTextureNormal(const scene::Texture& tex);
     // Pattern keywords and their modifiers inside pigment { }; false when
     // the next token is none of them.
     bool parsePigmentPatternItem(scene::Pigment& pigment);
     PigmentPtr parsePigmentListEntry();  // a colour, pigment { } or pigment identifier
     scene::ColorMap parseColorMap();
     // --- patterns (pattern_parser.cpp) ---
-    std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base);  // normal { }
+    // normal { }; `settings` (when given) receives the block's settings even
+    // when it names no pattern (#default { normal { bump_size 2 } }).
+    std::shared_ptr<const scene::Normal> parseNormal(const scene::Normal* base,
+                                                     scene::Normal* settings = nullptr);
     void directiveDefault();
     void parseFractalHead(const Token& kind, scene::FractalSettings& f);
     void parseFractalItem(const Token& item, scene::FractalSettings& f);
@@ -371,7 +395,8 @@ class Interpreter {
     void parseSlopeArguments(scene::Pattern& pattern);   // after 'slope'
     void parsePavementItem(scene::PavementSettings& s);  // pavement modifiers
     void checkPavement(const scene::Pattern& pattern, const Token& at);
-    std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing);
+    std::shared_ptr<const scene::Normal> parseNormalBody(const scene::Normal* base, Sym closing,
+                                                         scene::Normal* settings = nullptr);
     // --- texture bodies and maps (parse_texture_maps.cpp) ---
     void parseTextureBody(scene::Texture& tex, Sym closing);  // items up to `closing`
     // texture { } texture { }...: one layered texture, the first block
@@ -383,7 +408,9 @@ class Interpreter {
     std::vector<scene::Normal::MapEntry> parseNormalMap();
     std::vector<scene::Normal::SlopeEntry> parseSlopeMap();
     Value parseBlendMapValue();  // a declared map
-    double parseMapValue();      // an entry's value, ending before a '<'
+    // An entry's value, ending before a '<'; 1 when an average map's entry
+    // leaves its weight out (`weightMayBeOmitted`: pigment, normal, texture maps).
+    double parseMapValue(bool weightMayBeOmitted = false);
 
     // After a map's '{': a declared map of that kind (consumed), or null.
     const BlendMapValue* blendMapIdentifier(BlendMapValue::Kind kind);
@@ -393,6 +420,11 @@ class Interpreter {
     void parseReflectionBlock(scene::Finish& finish);
     void parseIridescence(scene::Finish& finish);
     InteriorPtr parseInterior(const scene::Interior* base);
+    // media { } and density { } (parse_media.cpp).
+    MediaPtr parseMedia();
+    DensityPtr parseDensity();
+    DensityPtr parseDensityBody(Sym closing);
+    std::vector<scene::Pigment::MapEntry> parseDensityMap();
     // --- material (parse_material.cpp) ---
     MaterialPtr parseMaterial();
     // Whether the next token can start a float expression (for items whose
@@ -400,12 +432,19 @@ class Interpreter {
     bool floatFollows();
     double parseOptionalFloat(double absent);
     void parseGlobalSettings();
+    // --- radiosity (parse_radiosity.cpp), each at 'radiosity' ---
+    void parseRadiositySettings(const Token& start);  // in global_settings, after the keyword
+    void parseObjectRadiosity(scene::Object& obj);    // radiosity { importance } in an object
+    // --- photons blocks (parse_photons.cpp), each after 'photons' ---
+    void parseGlobalPhotons(scene::PhotonSettings& settings);
+    void parseObjectPhotons(scene::ObjectPhotons& photons, const Token& keyword);
+    void parseLightPhotons(scene::LightPhotons& photons);
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
     scene::Fog parseFog();              // fog { }, also as a declared value
     scene::SkySphere parseSkySphere();  // sky_sphere { }, also as a declared value
     void parseRainbow();
-    void addTransform(scene::Object& obj, scene::Texture* texture, const Transform& t) const;
+    void addTransform(ObjectValue& obj, scene::Texture* texture, const Transform& t) const;
 
     // --- text objects (parse_text.cpp) ---
     void parseTextObject(scene::Object& obj);  // after 'text {'
@@ -467,6 +506,10 @@ class Interpreter {
     // #default { texture | pigment | normal | finish }: where new textures,
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture_;
+    // What a normal without a base starts from: #default's normal settings,
+    // kept even without a pattern (measured: #default { normal { bump_size
+    // 1.5 } } makes normal { gradient x } and normal_map entries 1.5 deep).
+    scene::Normal defaultNormal_;
     bool defaultTextureSet_ = false;
     // The component textures of the blob parseBlob just read, for
     // parseObject to attach (empty when no component has one).
@@ -486,8 +529,11 @@ class Interpreter {
         bool warned = false;
     };
     std::unordered_map<std::string, Deprecation, NameHash, NameEqual> deprecated_;
-    std::vector<FilePtr> openFiles_;  // closed at the end of the parse
-    std::string inputFileName_;       // the scene file as named to the interpreter
+    // Files #fopen opened: closed at the end of the parse, or as soon as
+    // no identifier holds them.
+    std::vector<std::weak_ptr<FileHandle>> openFiles_;
+    std::string inputFileName_;  // the scene file as named to the interpreter
+    std::vector<std::filesystem::path> filesRead_, filesWritten_;
     // Text objects: the global_settings charset in force, and the fonts
     // read so far, by the name the scene gave (this frame's only).
     scene::TextCharset textCharset_ = scene::TextCharset::Ascii;

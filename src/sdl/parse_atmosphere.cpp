@@ -79,11 +79,7 @@ scene::Fog Interpreter::parseFog() {
                 continue;
             }
         }
-        const bool floatStart =
-            t.kind == TokenKind::Number || t.is(Sym::LParen) || t.is(Sym::Minus) ||
-            t.is(Sym::Plus) ||
-            (t.isIdentifier() && lookup(t.text) && std::holds_alternative<double>(*lookup(t.text)));
-        if (floatStart) {
+        if (floatFollows()) {
             warn(t, "Should use distance keyword.");
             fog.distance = parseFloat();
             continue;

@@ -5,6 +5,7 @@
 // (angle, look_at, transformations) is scene::finalizeCamera().
 #include <fmt/format.h>
 
+#include "scene/mesh_camera.h"
 #include "sdl/interpreter.h"
 
 namespace frameray::sdl {
@@ -37,7 +38,7 @@ std::optional<scene::Projection> projectionKeyword(Keyword kw) {
 }
 
 bool isUnsupportedCameraWord(const Token& t) {
-    return t.text == "mesh_camera" || t.text == "bokeh";
+    return t.text == "bokeh";
 }
 
 }  // namespace
@@ -47,7 +48,7 @@ scene::Camera Interpreter::parseCamera() {
     expect(Sym::LBrace, "'{' after 'camera'");
     scene::Camera cam;
     const Token first = peek();
-    if (first.isIdentifier() && !isUnsupportedCameraWord(first)) {
+    if (first.isIdentifier() && !isUnsupportedCameraWord(first) && first.text != "mesh_camera") {
         next();
         const Value v = identifierValue(first);
         const auto* cp = std::get_if<CameraPtr>(&v);
@@ -56,6 +57,7 @@ scene::Camera Interpreter::parseCamera() {
         cam = **cp;
         // povray 3.7 accepts only transformations after a camera identifier.
         scene::CameraEdits edits;
+        edits.sized = true;  // the declared camera has its final size
         for (;;) {
             if (accept(Sym::RBrace)) break;
             Transform step;
@@ -71,7 +73,12 @@ scene::Camera Interpreter::parseCamera() {
     }
     const Token typeToken = peek();
     if (isUnsupportedCameraWord(typeToken)) unsupported(typeToken, std::string(typeToken.text));
-    if (const auto projection = projectionKeyword(typeToken.kw)) {
+    std::shared_ptr<scene::MeshCamera> meshCamera;
+    if (typeToken.text == "mesh_camera") {
+        next();
+        meshCamera = parseMeshCamera(typeToken);
+        cam.projection = scene::Projection::Mesh;
+    } else if (const auto projection = projectionKeyword(typeToken.kw)) {
         next();
         cam.projection = *projection;
         if (*projection == scene::Projection::Cylinder1) {
@@ -113,9 +120,11 @@ scene::Camera Interpreter::parseCamera() {
                 break;
             case Keyword::kw_right:
                 cam.right = parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_up:
                 cam.up = parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_sky:
                 cam.sky = parseVec3();
@@ -172,6 +181,12 @@ scene::Camera Interpreter::parseCamera() {
     }
     if (edits.lookAt && length(cam.lookAt - cam.location) < 1e-10)
         fail(closing, "camera location and look_at point must be different");
+    if (meshCamera) {
+        // Only location's and direction's z count, as written (measured).
+        meshCamera->startOffset = cam.location.z;
+        meshCamera->reverse = cam.direction.z < 0;
+        cam.mesh = std::move(meshCamera);
+    }
     scene::finalizeCamera(cam, edits);
     return cam;
 }

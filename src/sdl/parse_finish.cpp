@@ -6,32 +6,6 @@
 
 namespace frameray::sdl {
 
-bool Interpreter::floatFollows() {
-    const Token t = peek();
-    if (t.kind == TokenKind::Number) return true;
-    if (t.is(Sym::LParen) || t.is(Sym::Plus) || t.is(Sym::Minus) || t.is(Sym::Bang)) return true;
-    switch (t.kw) {
-        case Keyword::kw_on:
-        case Keyword::kw_off:
-        case Keyword::kw_true:
-        case Keyword::kw_false:
-        case Keyword::kw_yes:
-        case Keyword::kw_no:
-            return true;
-        default:
-            break;
-    }
-    if (t.isIdentifier()) {
-        const Value* v = lookup(t.text);
-        return v && std::holds_alternative<double>(*v);
-    }
-    return false;
-}
-
-double Interpreter::parseOptionalFloat(double absent) {
-    return floatFollows() ? parseFloat() : absent;
-}
-
 void Interpreter::parseReflectionBlock(scene::Finish& f) {
     // reflection { [min,] max [fresnel B] [falloff F] [exponent E] [metallic M] }
     scene::Reflection& r = f.reflection;
@@ -207,6 +181,10 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
     }
     for (;;) {
         if (accept(Sym::RBrace)) break;
+        if (peek().is(Keyword::kw_media)) {
+            in.media.push_back(parseMedia());
+            continue;
+        }
         const Token t = next();
         switch (t.kw) {
             case Keyword::kw_ior:
@@ -230,9 +208,6 @@ InteriorPtr Interpreter::parseInterior(const scene::Interior* base) {
                 break;
             case Keyword::kw_caustics:
                 in.caustics = parseFloat();
-                break;
-            case Keyword::kw_media:
-                unsupported(t, "media");
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)

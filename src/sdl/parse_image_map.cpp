@@ -6,21 +6,21 @@
 //   - colours are decoded with the file's gamma - the `gamma` given, else
 //     the one a PNG declares, else sRGB for PNG, TGA, GIF, JPEG, IFF and
 //     sys files and linear for PPM, PGM, TIFF, EXR and HDR - and re-encoded
-//     in the scene's working gamma; a scene without assumed_gamma from
-//     before 3.7 uses the file values as they are;
+//     in the scene's working gamma; before 3.7 a file of unknown gamma
+//     (no `gamma`, no gAMA) gives its values as they are;
 //   - alpha becomes transmit (1 - alpha) on top of `transmit all`; the
 //     colour is taken as not premultiplied unless `premultiplied` says so;
 //   - `filter N` / `transmit N` set palette entries of palette images (GIF)
 //     and are errors on other images; `filter all` / `transmit all` set
 //     every texel, later items overriding earlier ones;
 //   - the scalar of image_pattern and bump_map is the grey value
-//     0.297 r + 0.589 g + 0.114 b of the file values (no gamma), or with
+//     (util/color.h) of the file values (no gamma), or with
 //     use_alpha 1 - alpha; bump_map's use_index takes the palette index
 //     itself (0, 1, 2 ..., not scaled to [0,1]);
 //   - material_map's scalar is the index of the texture: the palette index
 //     of palette images (GIF and palette PNG), the 8-bit red value of
 //     colour images and, for grey images, the grey value taken through
-//     povray's single-precision 0.297/0.589/0.114 weighting times 255,
+//     povray's single-precision grey weighting (greySingle) times 255,
 //     truncated (so 111 gives 110: measured over all 256 grey levels).
 #include <fmt/format.h>
 
@@ -310,9 +310,14 @@ std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
     if (use == ImageUse::Pigment) {
         // File values -> linear light -> the working gamma in force now.
         scene::ImageTexels::ColorDecoding d;
-        // A function image's values are working-space values whatever the
-        // assumed_gamma (measured).
-        d.asStored = (!scene_.globals.assumedGammaSet && version_ < 3.7 - 1e-9) || functionImage;
+        // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
+        // file (PNG gAMA) gives holds working-space values, whatever the
+        // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows
+        // the file value v as v^2.2 of linear light). A function image's
+        // values are working-space values whatever the assumed_gamma
+        // (measured).
+        const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
+        d.asStored = (!fileGammaKnown && version_ < 3.7 - 1e-9) || functionImage;
         d.workingGamma = scene_.globals.assumedGammaSet ? scene_.globals.assumedGamma : 1.0;
         d.fileGamma = s.gamma                 ? *s.gamma
                       : src.declaredGamma > 0 ? src.declaredGamma

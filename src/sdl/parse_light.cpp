@@ -51,15 +51,6 @@ scene::Light Interpreter::parseLightSource() {
         accept(Sym::Comma);
         light.color = parseColor().rgb;
     }
-    // An optional on/off after a flag keyword (media_interaction off).
-    auto optionalBool = [&]() {
-        const Token b = peek();
-        if (b.kind == TokenKind::Number || b.is(Keyword::kw_on) || b.is(Keyword::kw_off) ||
-            b.is(Keyword::kw_true) || b.is(Keyword::kw_false) || b.is(Keyword::kw_yes) ||
-            b.is(Keyword::kw_no))
-            return parseFloat() != 0;
-        return true;
-    };
     for (;;) {
         if (accept(Sym::RBrace)) break;
         const Token t = peek();
@@ -72,6 +63,9 @@ scene::Light Interpreter::parseLightSource() {
         switch (t.kw) {
             case Keyword::kw_shadowless:
                 light.shadowless = true;
+                break;
+            case Keyword::kw_photons:
+                parseLightPhotons(light.photons);
                 break;
             case Keyword::kw_spotlight:
                 light.kind = scene::LightKind::Spot;
@@ -101,10 +95,10 @@ scene::Light Interpreter::parseLightSource() {
                 light.fadePower = parseFloat();
                 break;
             case Keyword::kw_media_interaction:
-                light.mediaInteraction = optionalBool();
+                light.mediaInteraction = parseOptionalBool();
                 break;
             case Keyword::kw_media_attenuation:
-                light.mediaAttenuation = optionalBool();
+                light.mediaAttenuation = parseOptionalBool();
                 break;
             case Keyword::kw_area_light: {
                 light.isArea = true;
@@ -139,7 +133,7 @@ scene::Light Interpreter::parseLightSource() {
                     fail(at, fmt::format("expected an object in projected_through, found {}",
                                          describeToken(at)));
                 if (isObjectStart(at)) {
-                    projectedThrough = std::make_shared<scene::Object>(*parseObject());
+                    projectedThrough = std::make_shared<scene::Object>(*parseObject().object);
                 } else {
                     next();
                     const Value v = identifierValue(at);
@@ -147,7 +141,7 @@ scene::Light Interpreter::parseLightSource() {
                     if (!src)
                         fail(at,
                              fmt::format("'{}' is a {}, not an object", at.text, valueKindName(v)));
-                    projectedThrough = std::make_shared<scene::Object>(**src);
+                    projectedThrough = std::make_shared<scene::Object>(*(*src)->object);
                 }
                 expect(Sym::RBrace, "'}' closing 'projected_through'");
                 break;
@@ -161,7 +155,7 @@ scene::Light Interpreter::parseLightSource() {
                 expect(Sym::LBrace, "'{' after 'looks_like'");
                 const Token at = peek();
                 if (isObjectStart(at)) {
-                    looksLike = std::make_shared<scene::Object>(*parseObject());
+                    looksLike = std::make_shared<scene::Object>(*parseObject().object);
                     looksLike->transformBy(Transform::translate(light.position));
                     expect(Sym::RBrace, "'}' closing 'looks_like'");
                 } else if (at.isIdentifier()) {
@@ -176,13 +170,15 @@ scene::Light Interpreter::parseLightSource() {
                     if (!src)
                         fail(at,
                              fmt::format("'{}' is a {}, not an object", at.text, valueKindName(v)));
-                    looksLike = std::make_shared<scene::Object>(**src);
+                    looksLike = std::make_shared<scene::Object>(*(*src)->object);
                     looksLike->transformBy(Transform::translate(light.position));
                     std::optional<scene::Texture> texture;
                     if (looksLike->texture) texture = *looksLike->texture;
                     looksLike->texture.reset();
+                    // Lights inside the stand-in are not placed.
+                    ObjectValue draft{looksLike, nullptr};
                     while (!accept(Sym::RBrace)) {
-                        if (!parseObjectModifier(*looksLike, texture)) {
+                        if (!parseObjectModifier(draft, texture)) {
                             const Token bad = peek();
                             fail(bad,
                                  fmt::format(

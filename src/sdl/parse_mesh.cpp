@@ -88,12 +88,7 @@ bool Interpreter::parseMeshSetting(MeshParts& parts) {
 }
 
 bool Interpreter::parseOptionalBool() {
-    const Token n = peek();
-    if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Keyword::kw_on) ||
-        n.is(Keyword::kw_off) || n.is(Keyword::kw_true) || n.is(Keyword::kw_false) ||
-        n.isIdentifier())
-        return parseFloat() != 0;
-    return true;
+    return parseOptionalFloat(1.0) != 0;
 }
 
 // A triangle's texture inside mesh { }: texture { } (texture_list with
@@ -348,7 +343,7 @@ void Interpreter::parseHeightField(scene::Object& obj) {
                              h, frame_.limits.arrayElements));
         width = static_cast<int>(w);
         height = static_cast<int>(h);
-        const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(source);
+        const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(source, true);
         heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
         // Sample (i, j) sees x = i / (W - 1), y = j / (H - 1) (j = 0 is the
         // row at z = 1, as an image's top row); the value is kept as povray
@@ -380,15 +375,21 @@ void Interpreter::parseHeightField(scene::Object& obj) {
             case Keyword::kw_hdr:
             case Keyword::kw_sys:
             case Keyword::kw_gif:
+            case Keyword::kw_pot:
                 next();
                 break;
             case Keyword::kw_iff:
                 unsupported(source, "iff height fields");
             default:
+                // povray 3.7 takes a bare file name too, its type read from
+                // the file (the example advanced/crater/crater.pov); a
+                // literal only, not a string identifier (measured).
+                if (source.kind == TokenKind::String) break;
                 fail(source,
                      fmt::format("expected an image type or 'function' in height_field, found {}",
                                  describeToken(source)));
         }
+        const bool pot = source.is(Keyword::kw_pot);
         const Token nameAt = peek();
         const std::string name = parsePathname();
         // The same per-frame image cache as image maps (parse_image_map.cpp).
@@ -397,7 +398,27 @@ void Interpreter::parseHeightField(scene::Object& obj) {
             fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
         width = source.width();
         height = source.height();
-        heights = heightsFromImage(*source.pixels);
+        if (pot) {
+            // Fractint's continuous-potential file: a GIF twice as wide as
+            // the field, each row's left half the heights' high bytes and
+            // its right half their low bytes (seed 003: "a GIF file with a
+            // 16 bit palette").
+            if (!source.isPalette() || source.width() % 2 != 0)
+                fail(nameAt, "a pot file must be a GIF image of even width");
+            const util::PixelBuffer& px = *source.pixels;
+            width = source.width() / 2;
+            heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
+            for (int j = 0; j < height; ++j)
+                for (int i = 0; i < width; ++i) {
+                    const size_t row = static_cast<size_t>(j) * static_cast<size_t>(px.width());
+                    heights[static_cast<size_t>(j) * static_cast<size_t>(width) +
+                            static_cast<size_t>(i)] =
+                        static_cast<uint16_t>(px.index(row + static_cast<size_t>(i)) * 256 +
+                                              px.index(row + static_cast<size_t>(i + width)));
+                }
+        } else {
+            heights = heightsFromImage(*source.pixels);
+        }
     }
     bool smooth = false;
     double waterLevel = 0;
@@ -429,6 +450,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
     };
     int type = -1, uSteps = 0, vSteps = 0;
     double flatness = 0;
+    scene::BicubicPatch::UvCorners uvCorners = scene::BicubicPatch::kUnitUvCorners;
     const Token start = peek();
     for (;;) {
         const Token t = peek();
@@ -445,6 +467,13 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
         } else if (t.is(Keyword::kw_v_steps)) {
             next();
             vSteps = static_cast<int>(setting());
+        } else if (t.is(Keyword::kw_uv_vectors)) {
+            next();
+            for (auto& corner : uvCorners) {
+                accept(Sym::Comma);
+                const VectorValue uv = parseVector();
+                corner = {uv.v[0], uv.v[1]};
+            }
         } else {
             break;
         }
@@ -459,7 +488,8 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBicubicPatch() {
         accept(Sym::Comma);  // commas are optional, also before the first point (povray)
         points[i] = parseVec3();
     }
-    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness);
+    return std::make_shared<scene::BicubicPatch>(points, uSteps, vSteps, flatness, Transform(),
+                                                 uvCorners);
 }
 
 }  // namespace frameray::sdl

@@ -46,7 +46,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parsePolynomialShape(const Toke
     switch (kind.kw) {
         case Keyword::kw_torus: {
             const double major = parseFloat();
-            expect(Sym::Comma, "',' between the major and minor radius");
+            accept(Sym::Comma);  // optional, as in povray
             const double minor = parseFloat();
             return std::make_shared<scene::Torus>(major, minor, false);
         }
@@ -105,12 +105,13 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
                 continue;
             }
             if (at.is(Keyword::kw_pigment)) {
-                editTexture().pigment = parsePigment();
+                scene::Texture& tx = editTexture();
+                tx.pigment = parseTexturePigment(tx);
                 continue;
             }
             if (at.is(Keyword::kw_normal)) {
                 scene::Texture& tx = editTexture();
-                tx.normal = parseNormal(tx.normal.get());
+                tx.normal = parseTextureNormal(tx);
                 continue;
             }
             if (at.is(Keyword::kw_finish)) {
@@ -139,9 +140,9 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
             expect(Sym::LBrace, "'{' after 'sphere'");
             Component c;
             c.a = parseVec3();
-            expect(Sym::Comma, "',' between the centre and the radius");
+            accept(Sym::Comma);  // optional, as in povray
             c.radius = parseFloat();
-            expect(Sym::Comma, "',' between the radius and the strength");
+            accept(Sym::Comma);  // optional, as in povray
             c.strength = parseStrength();
             parseComponentModifiers(c, "sphere");
             components.push_back(c);
@@ -150,11 +151,11 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
             Component c;
             c.kind = Component::Kind::Cylinder;
             c.a = parseVec3();
-            expect(Sym::Comma, "',' between the ends");
+            accept(Sym::Comma);  // optional, as in povray
             c.b = parseVec3();
-            expect(Sym::Comma, "',' between the end and the radius");
+            accept(Sym::Comma);  // optional, as in povray
             c.radius = parseFloat();
-            expect(Sym::Comma, "',' between the radius and the strength");
+            accept(Sym::Comma);  // optional, as in povray
             c.strength = parseStrength();
             parseComponentModifiers(c, "cylinder");
             components.push_back(c);
@@ -162,9 +163,9 @@ std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
             // The 2.0 form: component Strength, Radius, <Centre>.
             Component c;
             c.strength = parseFloat();
-            expect(Sym::Comma, "',' between the strength and the radius");
+            accept(Sym::Comma);  // optional, as in povray
             c.radius = parseFloat();
-            expect(Sym::Comma, "',' between the radius and the centre");
+            accept(Sym::Comma);  // optional, as in povray
             c.a = parseVec3();
             components.push_back(c);
             textures.push_back(nullptr);

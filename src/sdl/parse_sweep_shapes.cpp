@@ -67,7 +67,10 @@ std::shared_ptr<const scene::Shape> Interpreter::parseSor(const Token& kind) {
         const Token at = peek();
         const VectorValue v = parseVector();
         points.push_back({v.v[0], v.v[1]});
-        if (i > 0 && !(points[i].v > points[i - 1].v))
+        // Only the points the curve passes through must rise; the first
+        // and last only steer its slope and may sit anywhere (measured:
+        // the example objects/sor1.pov repeats a height there).
+        if (i >= 2 && i <= count - 2 && !(points[i].v > points[i - 1].v))
             fail(at, "Incorrect point in surface of revolution: heights must increase");
     }
     bool open = false;
@@ -99,9 +102,9 @@ std::shared_ptr<const scene::Shape> Interpreter::parsePrism(const Token& kind) {
         }
     }
     const double h1 = parseFloat();
-    expect(Sym::Comma, "',' between the prism's heights");
+    accept(Sym::Comma);  // optional, as in povray
     const double h2 = parseFloat();
-    expect(Sym::Comma, "',' after the prism's heights");
+    accept(Sym::Comma);  // optional, as in povray
     const Token countAt = peek();
     const int count = static_cast<int>(parseFloat());
     const int minimum =
@@ -146,14 +149,14 @@ void Interpreter::parseContainedBy(bool& sphere, Vec3& boxLo, Vec3& boxHi, Vec3&
     expect(Sym::LBrace, "'{' after the container's kind");
     if (shape.is(Keyword::kw_box)) {
         const Vec3 a = parseVec3();
-        expect(Sym::Comma, "',' between the corners");
+        accept(Sym::Comma);  // optional, as in povray
         const Vec3 b = parseVec3();
         sphere = false;
         boxLo = vmin(a, b);
         boxHi = vmax(a, b);
     } else if (shape.is(Keyword::kw_sphere)) {
         center = parseVec3();
-        expect(Sym::Comma, "',' between the centre and the radius");
+        accept(Sym::Comma);  // optional, as in povray
         radius = std::fabs(parseFloat());
         sphere = true;
     } else {
@@ -246,7 +249,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseParametric(const Token& ki
         accept(Sym::Comma);  // povray takes a comma after each function
     }
     const VectorValue lo = parseVector();
-    expect(Sym::Comma, "',' between the parametric's (u, v) corners");
+    accept(Sym::Comma);  // optional, as in povray
     const VectorValue hi = parseVector();
     s.uMin = lo.v[0];
     s.vMin = lo.v[1];
@@ -327,7 +330,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseSphereSweep(const Token& k
         accept(Sym::Comma);
         scene::SweepPoint p;
         p.center = parseVec3();
-        expect(Sym::Comma, "',' between a sphere's centre and its radius");
+        accept(Sym::Comma);  // optional, as in povray
         p.radius = std::fabs(parseFloat());
         points.push_back(p);
     }

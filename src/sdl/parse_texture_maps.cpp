@@ -122,9 +122,9 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
                                    "texture of the map",
                                    item.text));
         if (item.is(Keyword::kw_pigment)) {
-            tex.pigment = parsePigment();
+            tex.pigment = parseTexturePigment(tex);
         } else if (item.is(Keyword::kw_normal)) {
-            tex.normal = parseNormal(tex.normal.get());
+            tex.normal = parseTextureNormal(tex);
         } else if (item.is(Keyword::kw_finish)) {
             tex.finish = *parseFinish(&tex.finish);
         } else if (parseTexturePatternItem(tex, draft)) {
@@ -247,7 +247,7 @@ std::vector<scene::TextureMap::Entry> Interpreter::parseTextureMap() {
     for (;;) {
         if (accept(Sym::RBrace)) break;
         expect(Sym::LBracket, "'[' or '}' in texture_map");
-        const double v = parseMapValue();
+        const double v = parseMapValue(true);
         accept(Sym::Comma);
         scene::Texture tex = defaultTexture_;
         parseTextureBody(tex, Sym::RBracket);
@@ -258,7 +258,19 @@ std::vector<scene::TextureMap::Entry> Interpreter::parseTextureMap() {
     return entries;
 }
 
-double Interpreter::parseMapValue() {
+double Interpreter::parseMapValue(bool weightMayBeOmitted) {
+    // Entries of an average map may leave their weight out, which then is 1
+    // (measured; the examples write `[pigment { Jade } finish { ... }]` and
+    // `[gradient y color_map { ... }]`). povray knows it is the map of an
+    // average; this takes any pigment, normal or texture map entry that
+    // starts with its body, one of the keywords below.
+    if (weightMayBeOmitted) {
+        const Token t = peek();
+        if (t.kind == TokenKind::Word && !t.isIdentifier() &&
+            (isPatternKeyword(t) || t.is(Keyword::kw_pigment) || t.is(Keyword::kw_normal) ||
+             t.is(Keyword::kw_finish) || t.is(Keyword::kw_texture) || t.is(Keyword::kw_image_map)))
+            return 1.0;
+    }
     // `[0 <1, 0, 0>]`: the value ends before the '<', as every expression
     // outside parentheses does.
     return parseFloat();
@@ -317,7 +329,7 @@ std::vector<scene::Normal::MapEntry> Interpreter::parseNormalMap() {
     for (;;) {
         if (accept(Sym::RBrace)) break;
         expect(Sym::LBracket, "'[' or '}' in normal_map");
-        const double v = parseMapValue();
+        const double v = parseMapValue(true);
         accept(Sym::Comma);
         const Token body = peek();
         std::shared_ptr<const scene::Normal> normal = parseNormalBody(nullptr, Sym::RBracket);
@@ -368,7 +380,7 @@ void Interpreter::directiveDefault() {
                 defaultTexture_.pigment = parsePigment();
                 break;
             case Keyword::kw_normal:
-                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get());
+                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get(), &defaultNormal_);
                 break;
             case Keyword::kw_finish:
                 defaultTexture_.finish = *parseFinish(&defaultTexture_.finish);

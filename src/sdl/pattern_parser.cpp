@@ -142,10 +142,12 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
 
 }  // namespace
 
-PigmentPtr Interpreter::parsePigment() {
+PigmentPtr Interpreter::parsePigment(const scene::Pigment* base) {
     next();  // pigment
     expect(Sym::LBrace, "'{' after 'pigment'");
-    auto result = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
+    // povray edits the pigment a texture already has (measured:
+    // texture { T pigment { scale 0.3 } } scales T's checker).
+    auto result = std::make_shared<scene::Pigment>(base ? *base : *defaultTexture_.pigment);
     parsePigmentBody(*result, Sym::RBrace);
     expect(Sym::RBrace, "'}' closing 'pigment'");
     return result;
@@ -162,9 +164,16 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
         const Token id = peek();
         if (!id.isIdentifier()) return false;
         const Value* v = lookup(std::string(id.text));
-        if (!v || !std::holds_alternative<PigmentPtr>(*v)) return false;
+        // A pigment identifier, or an element of an array of pigments
+        // (`pigment { Pigments[I] }`, the example portfolio).
+        if (!v || !(std::holds_alternative<PigmentPtr>(*v) || arrayHolds<PigmentPtr>(*v)))
+            return false;
         next();
-        result = *std::get<PigmentPtr>(*v);
+        const Value declared = identifierValue(id, v);
+        const auto* pigment = std::get_if<PigmentPtr>(&declared);
+        if (!pigment)
+            fail(id, fmt::format("expected a pigment, found a {}", valueKindName(declared)));
+        result = **pigment;
         return true;
     };
     if (copyIdentifier()) {
@@ -199,6 +208,7 @@ void Interpreter::parsePigmentBody(scene::Pigment& result, Sym closing) {
         fail(item, fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
     checkPavement(result.pattern(), peek());
+    result.settleDefaultColorMap();
 }
 
 PigmentPtr Interpreter::parsePigmentListEntry() {
@@ -266,13 +276,7 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         } catch (const std::runtime_error& e) {
             fail(at, e.what());
         }
-        if (accept(Keyword::kw_interpolate)) {
-            const Token n = peek();
-            const double mode = parseFloat();
-            if (mode < 0 || mode > 2)
-                fail(n, fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
-            pattern.densityInterpolation = static_cast<int>(mode);
-        }
+        // Its `interpolate` is a modifier (parsePigmentPatternItem).
     } else if (kind == scene::PatternKind::PigmentPattern) {
         expect(Sym::LBrace, "'{' after 'pigment_pattern'");
         auto inner = std::make_shared<scene::Pigment>(*defaultTexture_.pigment);
@@ -284,16 +288,16 @@ void Interpreter::parsePatternKeyword(scene::Pigment& pigment, bool inNormal) {
         // closing brace comes after the list entries (closeListPattern).
         expect(Sym::LBrace, "'{' after 'object'");
         const Token t = peek();
-        ObjectPtr obj;
+        scene::ObjectRef obj;
         if (t.isIdentifier()) {
             const Value* v = lookup(std::string(t.text));
             if (!v || !std::holds_alternative<ObjectPtr>(*v))
                 fail(t, fmt::format("expected an object in the object pattern, found {}",
                                     describeToken(t)));
             next();
-            obj = std::get<ObjectPtr>(*v);
+            obj = std::get<ObjectPtr>(*v)->object;
         } else {
-            obj = parseObject();
+            obj = parseObject().object;
         }
         pattern.object = std::move(obj);
     } else if (kind == scene::PatternKind::Marble || kind == scene::PatternKind::Wood) {
@@ -428,6 +432,10 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             std::vector<PigmentPtr> list;
             for (const Color& c : defaults)
                 list.push_back(std::make_shared<const scene::Pigment>(c));
+            // The object pattern takes colours, or pigment { } blocks when
+            // its first entry is one (the example advanced/abyss.pov), never
+            // a mix nor a bare pigment identifier (measured).
+            bool objectPigments = false;
             for (std::size_t i = 0; i < defaults.size(); ++i) {
                 if (i > 0) accept(Sym::Comma);
                 const Token n = peek();
@@ -435,13 +443,12 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
                     n.isIdentifier() && lookup(std::string(n.text)) &&
                     std::holds_alternative<PigmentPtr>(*lookup(std::string(n.text)));
                 if (!(n.is(Keyword::kw_pigment) || isPigmentId || startsColor(n))) break;
-                // povray's newer list patterns (object, square, triangular,
-                // cubic) take colours only in a pigment.
-                const bool coloursOnly = *kind != scene::PatternKind::Checker &&
-                                         *kind != scene::PatternKind::Hexagon &&
-                                         *kind != scene::PatternKind::Brick;
-                if (coloursOnly && (n.is(Keyword::kw_pigment) || isPigmentId))
-                    fail(n, fmt::format("the {} pattern takes colours, not pigments", item.text));
+                if (*kind == scene::PatternKind::Object) {
+                    if (i == 0) objectPigments = n.is(Keyword::kw_pigment);
+                    if (isPigmentId || n.is(Keyword::kw_pigment) != objectPigments)
+                        fail(n, fmt::format("No matching }} in 'object', {} found instead",
+                                            describeToken(n)));
+                }
                 list[i] = parsePigmentListEntry();
             }
             pigment.setList(std::move(list));
@@ -466,6 +473,19 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
             next();
             pigment.setAverage();
             return true;
+        case Keyword::kw_interpolate: {
+            // density_file's, anywhere among the modifiers (the example
+            // textures/patterns/densfile.pov writes it after a bump size).
+            if (pigment.pattern().kind != scene::PatternKind::DensityFile) return false;
+            next();
+            const Token n = peek();
+            const double mode = parseFloat();
+            if (mode < 0 || mode > 2)
+                fail(n, fmt::format("density_file interpolate must be 0, 1 or 2, found {}", mode));
+            editPattern(
+                [&](scene::Pattern& p) { p.densityInterpolation = static_cast<int>(mode); });
+            return true;
+        }
         case Keyword::kw_brick_size: {
             next();
             const Vec3 v = parseVec3();
@@ -519,12 +539,7 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
         }
         case Keyword::kw_poly_wave: {
             next();
-            double e = 1.0;
-            const Token n = peek();
-            if (n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
-                (n.isIdentifier() && lookup(std::string(n.text)) &&
-                 std::holds_alternative<double>(*lookup(std::string(n.text)))))
-                e = parseFloat();
+            const double e = parseOptionalFloat(1.0);
             editPattern([&](scene::Pattern& p) {
                 p.waveType = scene::WaveType::Poly;
                 p.exponent = e;
@@ -622,27 +637,33 @@ bool Interpreter::parsePigmentPatternItem(scene::Pigment& pigment) {
     }
 }
 
-std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base) {
+std::shared_ptr<const scene::Normal> Interpreter::parseNormal(const scene::Normal* base,
+                                                              scene::Normal* settings) {
     next();  // normal
     expect(Sym::LBrace, "'{' after 'normal'");
-    auto normal = parseNormalBody(base, Sym::RBrace);
+    auto normal = parseNormalBody(base, Sym::RBrace, settings);
     expect(Sym::RBrace, "'}' closing 'normal'");
     return normal;
 }
 
 std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::Normal* base,
-                                                                  Sym closing) {
+                                                                  Sym closing,
+                                                                  scene::Normal* settings) {
     const NestingGuard nesting(*this, peek());
-    scene::Normal normal = base ? *base : scene::Normal{};
+    scene::Normal normal = base ? *base : defaultNormal_;
     bool havePattern = base != nullptr;
     // A declared normal to start from.
     if (const Token first = peek(); first.isIdentifier()) {
         const Value* v = lookup(std::string(first.text));
-        if (v && std::holds_alternative<NormalPtr>(*v)) {
+        // A normal identifier, or an element of an array of normals.
+        if (v && (std::holds_alternative<NormalPtr>(*v) || arrayHolds<NormalPtr>(*v))) {
             next();
-            const NormalPtr& declared = std::get<NormalPtr>(*v);
-            normal = declared ? *declared : scene::Normal{};
-            havePattern = declared != nullptr;
+            const Value value = identifierValue(first, v);
+            const auto* declared = std::get_if<NormalPtr>(&value);
+            if (!declared)
+                fail(first, fmt::format("expected a normal, found a {}", valueKindName(value)));
+            normal = *declared ? **declared : scene::Normal{};
+            havePattern = *declared != nullptr;
         }
     }
     // As in a pigment: transformations after a uv-mapped identifier do
@@ -653,11 +674,11 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     // pigment is a scratch holder for the pattern and its chain.
     scene::Pigment holder;
     holder.setPattern(normal.pattern);
-    auto bumpSizeFollows = [&] {
-        const Token n = peek();
-        return n.kind == TokenKind::Number || n.is(Sym::LParen) || n.is(Sym::Minus) ||
-               (n.isIdentifier() && lookup(std::string(n.text)) &&
-                std::holds_alternative<double>(*lookup(std::string(n.text))));
+    // An optional bump size follows the pattern, after an optional comma
+    // (povray: `gradient x, 5.6`; the fractals write it so).
+    auto parseBumpSize = [&] {
+        accept(Sym::Comma);
+        if (floatFollows()) normal.amount = parseFloat();
     };
     while (!peek().is(closing)) {
         const Token item = peek();
@@ -683,7 +704,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
                 closeListPattern(holder.pattern());
                 if (normal.mapMode == scene::Normal::MapMode::List)
                     normal.mapMode = scene::Normal::MapMode::None;
-                if (bumpSizeFollows()) normal.amount = parseFloat();
+                parseBumpSize();
                 continue;
             }
             if (holder.pattern().isList()) {
@@ -707,13 +728,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
             }
             if (normal.mapMode == scene::Normal::MapMode::List)
                 normal.mapMode = scene::Normal::MapMode::None;
-            // An optional bump size follows the pattern; the fractals write
-            // it after a comma (mandel ITERATIONS, BUMP_SIZE).
-            if (holder.pattern().kind == scene::PatternKind::Fractal && accept(Sym::Comma)) {
-                normal.amount = parseFloat();
-                continue;
-            }
-            if (bumpSizeFollows()) normal.amount = parseFloat();
+            parseBumpSize();
             continue;
         }
         switch (item.kw) {
@@ -759,6 +774,7 @@ std::shared_ptr<const scene::Normal> Interpreter::parseNormalBody(const scene::N
     }
     normal.pattern = holder.pattern();
     checkPavement(normal.pattern, peek());
+    if (settings) *settings = normal;
     if (!havePattern) return nullptr;  // normal { } without a pattern: no perturbation
     return std::make_shared<const scene::Normal>(normal);
 }
@@ -1014,7 +1030,7 @@ std::vector<scene::Pigment::MapEntry> Interpreter::parsePigmentMap() {
     for (;;) {
         if (accept(Sym::RBrace)) break;
         expect(Sym::LBracket, "'[' or '}' in pigment_map");
-        const double v = parseMapValue();
+        const double v = parseMapValue(true);
         accept(Sym::Comma);
         // [v PIGMENT_BODY]: a colour, a pigment identifier, a pattern...
         auto entry = std::make_shared<scene::Pigment>();

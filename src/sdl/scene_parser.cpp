@@ -9,6 +9,7 @@
 
 #include "scene/csg.h"
 #include "scene/flat_shapes.h"
+#include "scene/mesh.h"
 #include "scene/quadric.h"
 #include "scene/revolved_shapes.h"
 #include "sdl/interpreter.h"
@@ -54,8 +55,8 @@ constexpr ObjectKeyword kObjectKeywords[] = {
     {Keyword::kw_height_field, true},
     {Keyword::kw_bicubic_patch, true},
     {Keyword::kw_text, true},
-    {Keyword::kw_julia_fractal, false},
-    {Keyword::kw_polygon, false},
+    {Keyword::kw_julia_fractal, true},
+    {Keyword::kw_polygon, true},
     {Keyword::kw_ovus, false},
     {Keyword::kw_light_group, true},
 };
@@ -64,6 +65,15 @@ const ObjectKeyword* findObjectKeyword(Keyword kw) {
     for (const auto& o : kObjectKeywords)
         if (o.kw == kw) return &o;
     return nullptr;
+}
+
+// A mesh object: its shape, or (triangles with their own textures) a union
+// of its texture groups.
+bool isMeshObject(const scene::Object& obj) {
+    if (obj.shape) return dynamic_cast<const scene::MeshShape*>(obj.shape.get()) != nullptr;
+    return !obj.children.empty() &&
+           std::all_of(obj.children.begin(), obj.children.end(),
+                       [](const scene::ObjectRef& c) { return c && isMeshObject(*c); });
 }
 
 }  // namespace
@@ -78,14 +88,15 @@ bool Interpreter::parseStatement() {
     if (isObjectStart(t)) {
         // Placing the object settles what its CSG children inherit; an
         // object without a texture takes the #default texture in force.
-        scene::ObjectRef obj = parseObject();
+        const ObjectValue parsed = parseObject();
+        scene::ObjectRef obj = parsed.object;
         if (defaultTextureSet_ && !obj->texture) {
             auto textured = std::make_shared<scene::Object>(*obj);
             textured->texture = std::make_shared<const scene::Texture>(defaultTexture_);
             obj = std::move(textured);
         }
-        scene_.objects.push_back(
-            placeObjectLights(scene::csg::resolveInheritance(obj), nullptr, std::nullopt));
+        scene_.objects.push_back(placeObjectLights(scene::csg::resolveInheritance(obj),
+                                                   parsed.lights.get(), nullptr, std::nullopt));
         return true;
     }
     switch (t.kw) {
@@ -114,7 +125,13 @@ bool Interpreter::parseStatement() {
         case Keyword::kw_rainbow:
             parseRainbow();
             return true;
+        case Keyword::kw_default:  // povray 3.7 takes `default { }` without '#', silently
+            next();
+            directiveDefault();
+            return true;
         case Keyword::kw_media:
+            scene_.atmosphere.media.push_back(parseMedia());
+            return true;
         case Keyword::kw_photons:
         case Keyword::kw_radiosity:
             unsupported(t, std::string(t.text));
@@ -131,14 +148,15 @@ bool Interpreter::parseStatement() {
 
 // --- objects -----------------------------------------------------------------
 
-ObjectPtr Interpreter::parseObject() {
+ObjectValue Interpreter::parseObject() {
     const NestingGuard nesting(*this, peek());
     const Token kind = next();
     const ObjectKeyword* ok = findObjectKeyword(kind.kw);
     if (!ok || !ok->supported) unsupported(kind, std::string(kind.text));
     expect(Sym::LBrace, fmt::format("'{{' after '{}'", kind.text).c_str());
 
-    auto obj = std::make_shared<scene::Object>();
+    ObjectValue result{std::make_shared<scene::Object>(), nullptr};
+    scene::Object* obj = result.object.get();
     // The texture being built by this object's modifiers; it becomes
     // obj->texture when the object is closed.
     std::optional<scene::Texture> texture;
@@ -147,7 +165,9 @@ ObjectPtr Interpreter::parseObject() {
             // object { OBJECT ... } wraps an object statement as povray does
             // (object { sphere { ... } translate x }).
             if (isObjectStart(peek()) && !peek().isIdentifier()) {
-                *obj = *parseObject();
+                const ObjectValue inner = parseObject();
+                *obj = *inner.object;
+                result.lights = inner.lights;
                 if (obj->texture) texture = *obj->texture;
                 obj->texture.reset();
                 break;
@@ -157,9 +177,20 @@ ObjectPtr Interpreter::parseObject() {
                 fail(id, fmt::format("expected an object identifier, found {}", describeToken(id)));
             const Value v = identifierValue(id);
             const auto* src = std::get_if<ObjectPtr>(&v);
+            if (const auto* light = std::get_if<LightPtr>(&v)) {
+                // object { LIGHT ... }: a light that moves as an object, an
+                // empty union holding it (povray 3.7 allows it anywhere an
+                // object goes).
+                obj->op = scene::CsgOp::Union;
+                auto lights = std::make_shared<ObjectLights>();
+                lights->lights.push_back(**light);
+                result.lights = std::move(lights);
+                break;
+            }
             if (!src)
                 fail(id, fmt::format("'{}' is a {}, not an object", id.text, valueKindName(v)));
-            *obj = **src;
+            *obj = *(*src)->object;
+            result.lights = (*src)->lights;
             if (obj->texture) texture = *obj->texture;
             obj->texture.reset();
             break;
@@ -168,15 +199,28 @@ ObjectPtr Interpreter::parseObject() {
         case Keyword::kw_merge:
         case Keyword::kw_intersection:
         case Keyword::kw_difference:
-            parseCsgChildren(kind, *obj);
+            result.lights = parseCsgChildren(kind, *obj);
             break;
         case Keyword::kw_light_group:
-            parseLightGroupMembers(*obj);
+            result.lights = parseLightGroupMembers(*obj);
             break;
         case Keyword::kw_text:
             parseTextObject(*obj);
             break;
         case Keyword::kw_mesh:
+            // mesh { DECLARED_MESH modifiers } copies the declared mesh as
+            // object { } would (povray 3.7; no triangles may follow).
+            if (const Token id = peek(); id.isIdentifier()) {
+                next();
+                const Value v = identifierValue(id);
+                const auto* src = std::get_if<ObjectPtr>(&v);
+                if (!src || !isMeshObject(*(*src)->object))
+                    fail(id, fmt::format("'{}' is not a mesh", id.text));
+                *obj = *(*src)->object;
+                if (obj->texture) texture = *obj->texture;
+                obj->texture.reset();
+                break;
+            }
             parseMesh(*obj);
             break;
         case Keyword::kw_mesh2:
@@ -201,10 +245,12 @@ ObjectPtr Interpreter::parseObject() {
         // Only a light_group statement itself takes global_lights (povray
         // refuses it in object { GROUP }).
         if (kind.is(Keyword::kw_light_group) && accept(Keyword::kw_global_lights)) {
-            obj->globalLights = parseOptionalBool();
+            auto lights = std::make_shared<ObjectLights>(*result.lights);
+            lights->globalLights = parseOptionalBool();
+            result.lights = std::move(lights);
             continue;
         }
-        if (!parseObjectModifier(*obj, texture)) {
+        if (!parseObjectModifier(result, texture)) {
             const Token t = peek();
             // povray reads a CSG's objects before its modifiers.
             if (obj->isCsg() && isObjectStart(t))
@@ -228,10 +274,11 @@ ObjectPtr Interpreter::parseObject() {
         interior.ior = obj->texture->finish.legacyIor;
         obj->interior = std::make_shared<const scene::Interior>(interior);
     }
-    return obj;
+    return result;
 }
 
-void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
+std::shared_ptr<const ObjectLights> Interpreter::parseCsgChildren(const Token& kind,
+                                                                  scene::Object& csg) {
     switch (kind.kw) {
         case Keyword::kw_merge:
             csg.op = scene::CsgOp::Merge;
@@ -246,15 +293,18 @@ void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
             csg.op = scene::CsgOp::Union;
             break;
     }
+    auto lights = std::make_shared<ObjectLights>();
     for (;;) {
         const Token at = peek();
         // Light sources may sit in any CSG; they move with it.
         if (at.is(Keyword::kw_light_source)) {
-            csg.lights.push_back(parseLightSource());
+            lights->lights.push_back(parseLightSource());
             continue;
         }
         if (!isObjectStart(at)) break;
-        csg.children.push_back(parseObject());
+        ObjectValue child = parseObject();
+        csg.children.push_back(std::move(child.object));
+        lights->children.push_back(std::move(child.lights));
         // povray's warning (its wording, for difference too); the triangle
         // still takes part, enclosing nothing.
         if (csg.op != scene::CsgOp::Union && csg.op != scene::CsgOp::Merge &&
@@ -262,61 +312,59 @@ void Interpreter::parseCsgChildren(const Token& kind, scene::Object& csg) {
             warn(at, "Patch objects not allowed in intersection.");
     }
     if (csg.children.size() < 2) warn(kind, "Should have at least 2 objects in csg.");
+    return lights->any() ? lights : nullptr;
 }
 
-void Interpreter::parseLightGroupMembers(scene::Object& group) {
+std::shared_ptr<const ObjectLights> Interpreter::parseLightGroupMembers(scene::Object& group) {
     // A union of its objects that its lights light alone.
     group.op = scene::CsgOp::Union;
-    group.isLightGroup = true;
+    auto lights = std::make_shared<ObjectLights>();
+    lights->isLightGroup = true;
     for (;;) {
         const Token at = peek();
-        if (at.is(Keyword::kw_light_source))
-            group.lights.push_back(parseLightSource());
-        else if (isObjectStart(at))
-            group.children.push_back(parseObject());
-        else
+        if (at.is(Keyword::kw_light_source)) {
+            lights->lights.push_back(parseLightSource());
+        } else if (isObjectStart(at)) {
+            ObjectValue child = parseObject();
+            group.children.push_back(std::move(child.object));
+            lights->children.push_back(std::move(child.lights));
+        } else {
             break;
+        }
     }
+    return lights;
 }
-
-namespace {
-
-// Whether a light source or a light_group lies anywhere in the tree.
-bool holdsLights(const scene::Object& obj) {
-    if (!obj.lights.empty() || obj.isLightGroup) return true;
-    for (const scene::ObjectRef& child : obj.children)
-        if (holdsLights(*child)) return true;
-    return false;
-}
-
-}  // namespace
 
 scene::ObjectRef Interpreter::placeObjectLights(
-    const scene::ObjectRef& obj, const std::shared_ptr<const scene::LightGroup>& group,
+    const scene::ObjectRef& obj, const ObjectLights* lights,
+    const std::shared_ptr<const scene::LightGroup>& group,
     const std::optional<bool>& outermostGlobal) {
-    if (!group && !holdsLights(*obj)) return obj;
+    if (!group && !lights) return obj;
     auto copy = std::make_shared<scene::Object>(*obj);
     std::shared_ptr<const scene::LightGroup> childGroup = group;
     std::optional<bool> childGlobal = outermostGlobal;
-    if (copy->isLightGroup) {
+    if (lights && lights->isLightGroup) {
         // A nested group's objects see its own lights only; whether they
         // also see the scene's is the outermost group's global_lights
         // (measured: an inner group's own setting changes nothing).
         auto lit = std::make_shared<scene::LightGroup>();
-        lit->lights = copy->lights;
-        lit->globalLights = outermostGlobal.value_or(copy->globalLights);
+        lit->lights = lights->lights;
+        lit->globalLights = outermostGlobal.value_or(lights->globalLights);
         for (const scene::Light& light : lit->lights)
             if (light.looksLike) scene_.objects.push_back(light.looksLike);
         childGroup = std::move(lit);
         childGlobal = childGroup->globalLights;
-    } else {
+    } else if (lights) {
         // Lights of a plain CSG node light the whole scene.
-        for (scene::Light& light : copy->lights) placeLight(std::move(light));
+        for (const scene::Light& light : lights->lights) placeLight(light);
     }
-    copy->lights.clear();
     if (copy->shape) copy->lightGroup = childGroup;
-    for (scene::ObjectRef& child : copy->children)
-        child = placeObjectLights(child, childGroup, childGlobal);
+    for (size_t i = 0; i < copy->children.size(); ++i) {
+        const ObjectLights* childLights =
+            lights && i < lights->children.size() ? lights->children[i].get() : nullptr;
+        copy->children[i] =
+            placeObjectLights(copy->children[i], childLights, childGroup, childGlobal);
+    }
     return copy;
 }
 
@@ -390,6 +438,10 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
             if (tri->isDegenerate()) warn(kind, "Degenerate triangle. Please remove.");
             return tri;
         }
+        case Keyword::kw_polygon:
+            return parsePolygon(kind);
+        case Keyword::kw_julia_fractal:
+            return parseJuliaFractal(kind);
         case Keyword::kw_smooth_triangle: {
             Vec3 v[3], n[3];
             for (int i = 0; i < 3; ++i) {
@@ -438,7 +490,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parseShape(const Token& kind) {
     }
 }
 
-void Interpreter::addTransform(scene::Object& obj, scene::Texture* texture,
+void Interpreter::addTransform(ObjectValue& obj, scene::Texture* texture,
                                const Transform& t) const {
     obj.transformBy(t);
     // A transformation after the texture moves the texture too (seed 003 B.3).
@@ -456,7 +508,7 @@ std::vector<scene::ObjectRef> Interpreter::parseObjectList(
         return alternativeList;
     }
     std::vector<scene::ObjectRef> list;
-    while (isObjectStart(peek())) list.push_back(parseObject());
+    while (isObjectStart(peek())) list.push_back(parseObject().object);
     if (list.empty()) {
         const Token t = peek();
         fail(t,
@@ -466,10 +518,11 @@ std::vector<scene::ObjectRef> Interpreter::parseObjectList(
     return list;
 }
 
-bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::Texture>& texture) {
+bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::Texture>& texture) {
+    scene::Object& obj = *draft.object;
     Transform t;
     if (parseTransformation(t)) {
-        addTransform(obj, texture ? &*texture : nullptr, t);
+        addTransform(draft, texture ? &*texture : nullptr, t);
         return true;
     }
     const Token tok = peek();
@@ -480,12 +533,14 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         return *texture;
     };
     switch (tok.kw) {
-        case Keyword::kw_pigment:
-            editTexture().pigment = parsePigment();
+        case Keyword::kw_pigment: {
+            scene::Texture& tx = editTexture();
+            tx.pigment = parseTexturePigment(tx);
             return true;
+        }
         case Keyword::kw_normal: {
             scene::Texture& tx = editTexture();
-            tx.normal = parseNormal(tx.normal.get());
+            tx.normal = parseTextureNormal(tx);
             return true;
         }
         case Keyword::kw_finish: {
@@ -502,6 +557,16 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
         }
         case Keyword::kw_interior:
             obj.interior = parseInterior(obj.interior.get());
+            return true;
+        case Keyword::kw_uv_mapping:
+            // An object's uv_mapping maps the texture that follows it
+            // (povray 3.7, measured: as `texture { uv_mapping ... }`).
+            next();
+            if (texture) fail(tok, "uv_mapping must be specified before texture.");
+            editTexture().uvMapping = true;
+            return true;
+        case Keyword::kw_interior_texture:  // a texture body, from the default texture
+            obj.interiorTexture = parseTexture(nullptr);
             return true;
         case Keyword::kw_material: {
             // Its texture replaces the object's; its interior too.
@@ -538,6 +603,13 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             next();
             obj.noReflection = true;
             return true;
+        case Keyword::kw_no_radiosity:
+            next();
+            obj.noRadiosity = true;
+            return true;
+        case Keyword::kw_radiosity:
+            parseObjectRadiosity(obj);
+            return true;
         case Keyword::kw_hierarchy:
             next();
             parseOptionalBool();
@@ -546,14 +618,20 @@ bool Interpreter::parseObjectModifier(scene::Object& obj, std::optional<scene::T
             next();
             applySturm(obj, tok);
             return true;
+        case Keyword::kw_photons:
+            next();
+            parseObjectPhotons(obj.photons, tok);
+            return true;
+        case Keyword::kw_split_union:
+            next();
+            if (!obj.isCsg() || obj.op != scene::CsgOp::Union)
+                fail(tok, "split_union found in non-union object.");
+            obj.photons.splitUnion = parseOptionalBool();
+            return true;
         case Keyword::kw_hollow:
             // Lets fog reach rays inside the object (see render::Tracer).
             next();
-            obj.hollow = true;
-            if (peek().kind == TokenKind::Number || peek().is(Keyword::kw_on) ||
-                peek().is(Keyword::kw_off) || peek().is(Keyword::kw_true) ||
-                peek().is(Keyword::kw_false))
-                obj.hollow = parseFloat() != 0;
+            obj.hollow = parseOptionalBool();
             return true;
         default:
             return false;
@@ -690,8 +768,16 @@ void Interpreter::parseGlobalSettings() {
                 textCharset_ = found->second;
                 break;
             }
+            case Keyword::kw_radiosity:
+                parseRadiositySettings(t);
+                break;
             case Keyword::kw_hf_gray_16:
-                if (peek().kind == TokenKind::Number) parseFloat();
+                parseOptionalBool();
+                break;
+            case Keyword::kw_photons:
+                // A second block replaces the first's values item by item.
+                if (!g.photons) g.photons.emplace();
+                parseGlobalPhotons(*g.photons);
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)

@@ -12,6 +12,7 @@
 #include "scene/lights.h"
 #include "scene/object.h"
 #include "scene/texture.h"
+#include "sdl/object_value.h"
 #include "sdl/token.h"
 
 namespace frameray::sdl {
@@ -41,7 +42,7 @@ struct Macro {
     SourceLoc loc;
 };
 
-using ObjectPtr = std::shared_ptr<scene::Object>;
+using ObjectPtr = std::shared_ptr<const ObjectValue>;  // object_value.h
 using PigmentPtr = std::shared_ptr<const scene::Pigment>;
 using FinishPtr = std::shared_ptr<const scene::Finish>;
 using TexturePtr = std::shared_ptr<const scene::Texture>;
@@ -61,6 +62,13 @@ struct MaterialValue {
     InteriorPtr interior;
 };
 using MaterialPtr = std::shared_ptr<const MaterialValue>;
+using MediaPtr = std::shared_ptr<const scene::Media>;
+// density { }: a pigment-like pattern, kept apart from pigments so that a
+// declared density is only accepted where a density is.
+struct DensityValue {
+    PigmentPtr pigment;
+};
+using DensityPtr = std::shared_ptr<const DensityValue>;
 
 struct ArrayValue;
 struct FileHandle;
@@ -84,10 +92,11 @@ struct IdentifierAlias {
     std::string name;
 };
 
-using Value = std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr,
-                           FinishPtr, TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr,
-                           ArrayPtr, FilePtr, SplinePtr, FunctionPtr, IdentifierAlias, FogPtr,
-                           SkySpherePtr, InteriorPtr, BlendMapPtr, NormalPtr, MaterialPtr>;
+using Value =
+    std::variant<std::monostate, double, VectorValue, std::string, ObjectPtr, PigmentPtr, FinishPtr,
+                 TexturePtr, CameraPtr, LightPtr, MacroPtr, TransformPtr, ArrayPtr, FilePtr,
+                 SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr, InteriorPtr,
+                 BlendMapPtr, NormalPtr, MaterialPtr, MediaPtr, DensityPtr>;
 
 // Arrays of up to five dimensions. Elements start unset (monostate); once
 // one is set, every other must have the same kind (seed: "all other
@@ -96,6 +105,19 @@ struct ArrayValue {
     std::vector<int> dims;
     std::vector<Value> elements;  // row-major
 };
+
+// Whether `v` is an array whose elements hold a T. Elements are all of one
+// kind, so the first one set tells (an array of arrays: its innermost).
+template <typename T>
+bool arrayHolds(const Value& v) {
+    const auto* array = std::get_if<ArrayPtr>(&v);
+    if (!array || !*array) return false;
+    for (const Value& e : (*array)->elements) {
+        if (std::holds_alternative<std::monostate>(e)) continue;
+        return std::holds_alternative<T>(e) || arrayHolds<T>(e);
+    }
+    return false;
+}
 
 // "float", "vector", "object"... for messages.
 const char* valueKindName(const Value& v);

@@ -11,8 +11,9 @@ resumed run (+C) once the cause is gone must give frames byte-identical to
 an uninterrupted run.
 
 1. A full disk, simulated portably with a file-size limit (RLIMIT_FSIZE,
-   SIGXFSZ ignored, so a write past it fails with EFBIG as a write to a
-   full disk fails with ENOSPC).
+   as `ulimit -f` sets it, SIGXFSZ left at its default: frameray ignores
+   the signal itself, so a write past the limit fails with EFBIG as a
+   write to a full disk fails with ENOSPC, instead of killing it).
    Frames 1-3 fit under the limit and must be kept.
 2. The output folder removed by a Pre_Frame_Command before a later frame.
 3. The output folder made read-only before a later frame (only when not
@@ -100,9 +101,11 @@ def main():
         journal = {}
         jpath = os.path.join(outdir, ".ball.frameray-journal")
         if os.path.exists(jpath):
+            # frame <number> <clock> <size> <hash> <inputs> <file name>
             for line in open(jpath).read().splitlines()[1:]:
                 parts = line.split()
-                journal[parts[5]] = int(parts[3])
+                if parts and parts[0] == "frame":
+                    journal[parts[6]] = int(parts[3])
         for n in os.listdir(outdir):
             if n.endswith(".tmp"):
                 fail("%s: temporary file %s left behind" % (name, n))
@@ -122,7 +125,7 @@ def main():
 
     # 1. Full disk (file-size limit).
     def limit_file_size():
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        signal.signal(signal.SIGXFSZ, signal.SIG_DFL)
         resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
 
     full = os.path.join(work, "full")

@@ -3,7 +3,7 @@
 # each in turn for SECONDS seconds (default 60: the CI mode), one job at a
 # time, from its committed seed corpus in tests/fuzz/corpus/TARGET/.
 #
-#   tests/fuzz/run_fuzzers.sh [SECONDS] [TARGET...]     (targets: lexer scene options)
+#   tests/fuzz/run_fuzzers.sh [SECONDS] [TARGET...]     (targets: lexer scene render options)
 #
 # New corpus entries go to build-fuzz/corpus/TARGET/ (not the sources).
 # A crash, hang (-timeout), leak or memory blow-up (-rss_limit_mb) stops
@@ -17,7 +17,7 @@ cd "$(dirname "$0")/../.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(lexer scene options)
+[ ${#targets[@]} -eq 0 ] && targets=(lexer scene render options)
 
 if ! command -v clang++ > /dev/null; then
     echo "run_fuzzers: clang++ is needed (Debian package clang)" >&2
@@ -43,15 +43,18 @@ for t in "${targets[@]}"; do
     corpus="build-fuzz/corpus/$t"
     artifacts="build-fuzz/artifacts/$t"
     mkdir -p "$corpus" "$artifacts"
+    # The render target reads scenes: it shares the scene seeds and dictionary.
+    seeds="$t"
+    [ "$t" = render ] && seeds=scene
     dict=()
-    [ -f "tests/fuzz/$t.dict" ] && dict=(-dict="tests/fuzz/$t.dict")
+    [ -f "tests/fuzz/$seeds.dict" ] && dict=(-dict="tests/fuzz/$seeds.dict")
     log="build-fuzz/fuzz_$t.log"
     echo "run_fuzzers: $t for ${seconds} s"
     start=$(date +%s)
     (cd build-fuzz && ./bin/fuzz_"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
         -max_len=65536 -print_final_stats=1 \
         -artifact_prefix="artifacts/$t/" "${dict[@]/#-dict=/-dict=../}" \
-        "corpus/$t" "../tests/fuzz/corpus/$t") > "$log" 2>&1
+        "corpus/$t" "../tests/fuzz/corpus/$seeds") > "$log" 2>&1
     rc=$?
     runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
     line="$(date -u +%FT%TZ) $t: ${runs:-?} executions in $(($(date +%s) - start)) s, exit $rc"

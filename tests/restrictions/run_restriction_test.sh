@@ -93,6 +93,95 @@ printf '; the user policy\nRead_Path=/etc\nAllow_Shell_Commands=on\n' > "$work/c
 CONFIG="$work/config" run ok config_read_path "$read_passwd" "Post_Scene_Command=touch $work/ran2"
 check_file yes "$work/ran2" config_read_path
 
+# The trust rule: an INI file beside the scene is as untrusted as the scene;
+# the same options on the command line are the user's own.
+printf 'Library_Path=%s\n' "$work/outside" > "$work/scenes/lib.ini"
+run refused ini_library_path '#include "outside.inc"' lib.ini
+run ok library_path_command_line '#include "outside.inc"' "Library_Path=$work/outside"
+printf 'Output_File_Name=%s/\n' "$work/outside/frames" > "$work/scenes/out.ini"
+run refused ini_output_folder '' out.ini
+check_file no "$work/outside/frames" ini_output_folder
+printf 'Debug_File=%s\n' "$work/outside/debug.txt" > "$work/scenes/debug.ini"
+run refused ini_debug_file '#debug "written"' debug.ini
+check_file no "$work/outside/debug.txt" ini_debug_file
+printf 'Create_Ini=%s\n' "$work/outside/created.ini" > "$work/scenes/create.ini"
+run refused ini_create_ini '' create.ini
+check_file no "$work/outside/created.ini" ini_create_ini
+printf 'Width=6\nHeight=4\nOutput_File_Name=frames/\nDebug_File=debug.txt\n' > "$work/scenes/inside.ini"
+run ok ini_inside_its_folder '#debug "written"' inside.ini
+check_file yes "$work/scenes/frames/ini_inside_its_folder.png" ini_inside_its_folder
+check_file yes "$work/scenes/debug.txt" ini_inside_its_folder
+
+# An output name whose folder does not exist is refused (povray refuses it
+# too); a name ending in '/' is a folder, created.
+run_plain() {  # run_plain NAME OPTIONS...: the status and stderr of a run
+    local name="$1"
+    shift
+    printf '#version 3.7;\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$work/scenes/$name.pov"
+    (cd "$work/scenes" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+        "$frameray" "$name.pov" +W8 +H8 -D -GR -GS "$@" > "$work/stdout" 2> "$work/stderr")
+}
+run_plain missing_folder "+O$work/no/such/dir/x.png"
+status=$?
+if [ $status -ne 2 ] || ! grep -q "does not exist" "$work/stderr" || [ -e "$work/no" ]; then
+    echo "restrictions: missing_folder: expected a refusal without creating folders (status $status):" >&2
+    cat "$work/stderr" >&2
+    failures=$((failures + 1))
+else
+    echo "restrictions: missing_folder: refused"
+fi
+run_plain created_folder "+O$work/made/here/" || { echo "restrictions: created_folder failed" >&2; failures=$((failures + 1)); }
+check_file yes "$work/made/here/created_folder.png" created_folder
+
+# Symbolic links planted where frameray writes (a scene folder unpacked
+# from a stranger's archive) are replaced or refused, never written
+# through: the frame log, the journal, a stream file, Create_Ini.
+echo 'precious' > "$work/outside/precious.txt"
+mkdir -p "$work/linked"
+ln -s "$work/outside/precious.txt" "$work/linked/links.log"
+ln -s "$work/outside/precious.txt" "$work/linked/.links.frameray-journal"
+ln -s "$work/outside/precious.txt" "$work/scenes/debug.out"
+ln -s "$work/outside/precious.txt" "$work/scenes/created.ini"
+printf '#version 3.7;\n#debug "scene text"\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$work/scenes/links.pov"
+(cd "$work/scenes" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+    "$frameray" links.pov +W8 +H8 -D -GR -GS "+O$work/linked/" > "$work/stdout" 2> "$work/stderr")
+if [ "$(cat "$work/outside/precious.txt")" != precious ] || [ -L "$work/linked/links.log" ] ||
+    [ -L "$work/linked/.links.frameray-journal" ]; then
+    echo "restrictions: links: the log or journal was written through a link" >&2
+    cat "$work/stderr" >&2
+    failures=$((failures + 1))
+else
+    echo "restrictions: links: log and journal replace the links"
+fi
+for option in Debug_File=on Create_Ini=created.ini; do
+    (cd "$work/scenes" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+        "$frameray" links.pov +W8 +H8 -D -GR -GS "+O$work/linked/" "$option" > "$work/stdout" 2> "$work/stderr")
+    status=$?
+    if [ "$(cat "$work/outside/precious.txt")" != precious ] ||
+        { [ $status -ne 0 ] && ! grep -q "symbolic link" "$work/stderr"; }; then
+        echo "restrictions: links: $option wrote through a link (status $status)" >&2
+        cat "$work/stderr" >&2
+        failures=$((failures + 1))
+    else
+        echo "restrictions: links: $option does not follow the link"
+    fi
+done
+
+# Shell commands: %o and %s are quoted for /bin/sh, so an output name
+# holding $(...) is a name, not a command.
+mkdir -p "$work/quoting"
+printf '#version 3.7;\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$work/quoting/q.pov"
+(cd "$work/quoting" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+    "$frameray" q.pov +W8 +H8 -D -GR -GS 'Output_File_Name=y$(touch injected).png' \
+    Allow_Shell_Commands=on 'Post_Frame_Command=ls -l %o > listed.txt' > "$work/stdout" 2> "$work/stderr")
+if [ -e "$work/quoting/injected" ] || ! grep -q 'y\$(touch injected).png' "$work/quoting/listed.txt"; then
+    echo "restrictions: quoting: the output name ran as a command" >&2
+    cat "$work/stderr" >&2
+    failures=$((failures + 1))
+else
+    echo "restrictions: quoting: %o is quoted"
+fi
+
 if [ $failures -ne 0 ]; then
     echo "restrictions: $failures check(s) failed" >&2
     exit 1

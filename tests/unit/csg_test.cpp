@@ -268,8 +268,11 @@ TEST(CsgSdl, PovrayErrorsAndWarnings) {
     EXPECT_NE(
         parseError("union { sphere { 0, 1 } translate x sphere { 0, 1 } }").find("No matching }"),
         std::string::npos);
-    EXPECT_NE(parseError("julia_fractal { <1, 0, 0, 0> }").find("not supported yet: julia_fractal"), std::string::npos);
-    EXPECT_NE(parseError("sphere { 0, 1 interior { media { } } }").find("not supported yet: media"),
+    EXPECT_NE(parseError("ovus { 1, 0.5 }").find("not supported yet: ovus"), std::string::npos);
+    // media is supported now (issue 25); method 1 still stops.
+    EXPECT_EQ(parseError("sphere { 0, 1 interior { media { } } }"), "");
+    EXPECT_NE(parseError("sphere { 0, 1 interior { media { method 1 } } }")
+                  .find("not supported yet: media method 1"),
               std::string::npos);
     Parsed one(
         "union { sphere { 0, 1 } }  triangle { 0, x, 2*x }  difference { sphere { 0, 1 } triangle "

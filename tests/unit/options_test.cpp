@@ -409,9 +409,9 @@ TEST(Options, CreateIniWritesWhatWasSet) {
     // +GWwarn.txt writes these keys, sorted as here, booleans On/Off,
     // file names quoted, commands not.
     const RenderOptions o =
-        parse({"s.pov", "+GIcreated.ini", "+KFF3", "+KC", "Declare=Foo=3", "+L/tmp", "+SR2",
-               "+A0.1", "+X100", "+GWwarn.txt", "+FN16", "Pre_Frame_Command=echo hi %o", "+J0.5",
-               "Jitter=off", "+W8", "+H6", "-D"});
+        parse({"s.pov", "+GIcreated.ini", "+KFF3", "+KC", "Declare=Foo=3",
+               "+L/usr/share/povray-3.7/include", "+SR2", "+A0.1", "+X100", "+GWwarn.txt", "+FN16",
+               "Pre_Frame_Command=echo hi %o", "+J0.5", "Jitter=off", "+W8", "+H6", "-D"});
     const std::string ini = createIniText(o);
     const std::string expected =
         "Antialias=On\n"
@@ -426,7 +426,7 @@ TEST(Options, CreateIniWritesWhatWasSet) {
         "Input_File_Name=\"s.pov\"\n"
         "Jitter_Amount=0.5\n"
         "Jitter=Off\n"
-        "Library_Path=\"/tmp\"\n"
+        "Library_Path=\"/usr/share/povray-3.7/include\"\n"
         "Output_File_Type=N\n"
         "Output_To_File=On\n"
         "Pre_Frame_Command=echo hi %o\n"
@@ -475,4 +475,90 @@ TEST(Options, ReadmeListsTheOptionTable) {
     EXPECT_NE(readme.find(optionsMarkdown()), std::string::npos)
         << "README.md's option table is out of date: paste the output of `frameray "
            "--options-markdown`";
+}
+
+// The trust rule (README, Restrictions): an INI file named on the command
+// line, or ./povray.ini, may come with a scene, so every file or folder it
+// names must be in its own folder or the working folder.
+TEST(Options, UntrustedIniNamesPathsOnlyInItsFolders) {
+    TempDir dir("frameray_options_trust");
+    fs::create_directories(dir.path / "scene");
+    const auto refused = [&](const std::string& text) {
+        const auto ini = dir.write("scene/t.ini", text);
+        RenderOptions o;
+        try {
+            applyArguments(o, {ini.string()});
+        } catch (const OptionError& e) {
+            return std::string(e.what()).find("not allowed outside the INI file's folder") !=
+                   std::string::npos;
+        }
+        return false;
+    };
+    EXPECT_TRUE(refused("Library_Path=/etc\n"));
+    EXPECT_TRUE(refused("+L/etc\n"));
+    EXPECT_TRUE(refused("Library_Path=../../..\n"));
+    EXPECT_TRUE(refused("Output_File_Name=/tmp/\n"));
+    EXPECT_TRUE(refused("Warning_File=/tmp/w.txt\n"));
+    EXPECT_TRUE(refused("+GS/tmp/s.txt\n"));
+    EXPECT_TRUE(refused("Create_Ini=/tmp/c.ini\n"));
+    EXPECT_TRUE(refused("Include_Header=/etc/passwd\n"));
+    EXPECT_TRUE(refused("/etc/other.ini\n"));
+    EXPECT_TRUE(refused("/home/someone/.profile\n"));  // a scene named on a line of its own
+    // In the INI's folder (or below it) and the working folder: fine.
+    EXPECT_FALSE(refused("Library_Path=" + (dir.path / "scene/inc").string() + "\n"));
+    EXPECT_FALSE(refused("Output_File_Name=" + (dir.path / "scene/frames/").string() + "\n"));
+    EXPECT_FALSE(refused("Output_File_Name=frames/\nDebug_File=on\nLibrary_Path=.\n"));
+    // Image, animation and quality options are the INI's to set.
+    EXPECT_FALSE(refused("Width=64\nHeight=48\n+KFF10 +A0.1\nQuality=4\n"));
+    // A symbolic link inside the scene's folder cannot lead out of it.
+    fs::create_directory_symlink("/etc", dir.path / "scene/etc");
+    EXPECT_TRUE(refused("Library_Path=" + (dir.path / "scene/etc").string() + "\n"));
+    // The same options from the command line are the user's own.
+    RenderOptions o;
+    applyArguments(o, {"Library_Path=/etc", "+O/tmp/", "Debug_File=/tmp/d.txt"});
+    EXPECT_EQ(o.libraryPaths.back(), fs::path("/etc"));
+}
+
+TEST(Options, WorkingFolderPovrayIniIsUntrusted) {
+    TempDir dir("frameray_options_trust_startup");
+    fs::create_directories(dir.path / "cwd");
+    std::map<std::string, std::string> env{{"HOME", (dir.path / "home").string()}};
+    StartupEnvironment e;
+    e.getenv = [&env](const char* n) -> const char* {
+        const auto it = env.find(n);
+        return it == env.end() ? nullptr : it->second.c_str();
+    };
+    e.workingDir = dir.path / "cwd";
+    e.systemIni = dir.path / "none.ini";
+    std::ofstream(dir.path / "cwd/povray.ini") << "Library_Path=/etc\n";
+    RenderOptions o;
+    EXPECT_THROW(applyStartupOptions(o, e), OptionError);
+    // $POVINI is the user's choice.
+    env["POVINI"] = dir.write("mine.ini", "Library_Path=/etc\n").string();
+    RenderOptions p;
+    applyStartupOptions(p, e);
+    EXPECT_EQ(p.libraryPaths.back(), fs::path("/etc"));
+}
+
+// povray refuses an INI line "Width 64"; frameray says what is wrong. A
+// UTF-8 byte order mark before the first key is skipped.
+TEST(Options, IniLinesWithoutEqualsAndByteOrderMarks) {
+    TempDir dir("frameray_options_ini_lines");
+    RenderOptions o;
+    try {
+        applyArguments(o, {dir.write("a.ini", "Height=9\nWidth 64\n").string()});
+        FAIL();
+    } catch (const OptionError& e) {
+        EXPECT_NE(std::string(e.what()).find("a.ini:2: option 'Width' needs '='"),
+                  std::string::npos);
+    }
+    EXPECT_THROW(applyArguments(o, {dir.write("b.ini", "Width\n").string()}), OptionError);
+    EXPECT_THROW(applyArguments(o, {dir.write("c.ini", "+W8 64\n").string()}), OptionError);
+    applyArguments(o, {dir.write("d.ini", "\xEF\xBB\xBFWidth=64\nHeight=48\n").string()});
+    EXPECT_EQ(o.width, 64);
+    EXPECT_EQ(o.height, 48);
+    // A scene or INI file name on a line of its own still works.
+    applyArguments(o, {dir.write("e.ini", "scene.pov\n+W5 d.ini\n").string()});
+    EXPECT_EQ(o.inputFile, "scene.pov");
+    EXPECT_EQ(o.width, 64);
 }

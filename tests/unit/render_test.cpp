@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "render/gamma.h"
+#include <cmath>
+
+#include "image/gamma.h"
 #include "render/renderer.h"
 #include "render/world.h"
 
@@ -10,13 +12,18 @@ TEST(Gamma, Povray37Rules) {
     scene::Scene s;
     s.globals.assumedGamma = 1.0;
     s.globals.assumedGammaSet = true;
-    const auto srgb = render::GammaEncoding::forScene(s, 0);
+    const auto srgb = image::GammaEncoding::forScene(s.globals.assumedGammaSet,
+                                                     s.globals.assumedGamma, s.languageVersion, 0);
     // Values read off povray 3.7's output: linear 0.2 -> 124/255, 0.01 -> 25/255.
     EXPECT_EQ(static_cast<int>(srgb.encode(0.2) * 255 + 0.5), 124);
     EXPECT_EQ(static_cast<int>(srgb.encode(0.01) * 255 + 0.5), 25);
     scene::Scene old;
     old.languageVersion = 3.6;
-    EXPECT_DOUBLE_EQ(render::GammaEncoding::forScene(old, 0).encode(0.5), 0.5);
+    EXPECT_DOUBLE_EQ(
+        image::GammaEncoding::forScene(old.globals.assumedGammaSet, old.globals.assumedGamma,
+                                       old.languageVersion, 0)
+            .encode(0.5),
+        0.5);
 }
 
 TEST(World, ClosestHitAndShadowsAcrossBvhAndPlanes) {
@@ -49,6 +56,40 @@ TEST(World, TransformedObjectAtLargeScale) {
     render::Hit hit;
     ASSERT_TRUE(w.intersect({{0, 0, 0}, {0, 0, 1}}, 0, scene::kInfinity, hit));
     EXPECT_NEAR(hit.t, 9e5, 1e-6);
+}
+
+// A scene can make NaN and huge rays (a light at <pow(-8,1/3),1,1>, a
+// camera at 1e20); Embree aborts on them, so they must not reach it.
+TEST(World, NanAndHugeRaysMeetNoBoundedObject) {
+    scene::Scene s;
+    auto sphere = std::make_shared<scene::Object>();
+    sphere->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 5}, 1);
+    s.objects = {sphere};
+    render::World w(s);
+    render::Hit hit;
+    const double nan = std::nan("");
+    EXPECT_FALSE(w.intersect({{nan, 0, 0}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_FALSE(w.intersect({{0, 0, 0}, {nan, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_FALSE(w.intersect({{0, 1e20, 0}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_FALSE(w.occluded({{0, 0, 0}, {0, 0, 1}}, 0, nan));
+    EXPECT_FALSE(w.occluded({{0, 0, -1e20}, {0, 0, 1}}, 0, scene::kInfinity));
+    EXPECT_FALSE(w.occluded({{0, 0, 0}, {0, 0, 1e30}}, 0, 1));
+}
+
+// povray sees nothing 1e7 or more from a ray's origin (measured with a
+// plane 0.99e7 and 1e7 in front of the camera), whatever the length of
+// the ray's direction vector.
+TEST(World, NothingIsSeenFromTenMillionUnitsOn) {
+    scene::Scene s;
+    auto plane = std::make_shared<scene::Object>();
+    plane->shape = std::make_shared<scene::Plane>(Vec3{0, 0, -1}, 0);
+    s.objects = {plane};
+    render::World w(s);
+    render::Hit hit;
+    EXPECT_TRUE(w.intersect({{0, 0, -0.99e7}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_TRUE(w.intersect({{0, 0, -0.99e7}, {0, 0, 4}}, 0, scene::kInfinity, hit));
+    EXPECT_FALSE(w.intersect({{0, 0, -1.01e7}, {0, 0, 1}}, 0, scene::kInfinity, hit));
+    EXPECT_FALSE(w.intersect({{0, 0, -1.01e7}, {0, 0, 0.25}}, 0, scene::kInfinity, hit));
 }
 
 TEST(Renderer, DeterministicAcrossRuns) {

@@ -2,11 +2,13 @@
 // value below was read off povray 3.7 (Debian 3.7.0.10) runs of a scene
 // that prints clock, frame_number, clock_delta, clock_on, initial_/final_
 // frame and clock, and the files it wrote.
+#include "anim/sequence.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
-#include "anim/sequence.h"
 #include "options/options.h"
 
 using namespace frameray;
@@ -20,7 +22,9 @@ options::RenderOptions withArgs(std::vector<std::string> args) {
     return o;
 }
 
-anim::Sequence plan(std::vector<std::string> args) { return anim::planSequence(withArgs(std::move(args))); }
+anim::Sequence plan(std::vector<std::string> args) {
+    return anim::planSequence(withArgs(std::move(args)));
+}
 
 std::vector<int> numbers(const anim::Sequence& s) {
     std::vector<int> out;
@@ -52,8 +56,14 @@ TEST(Sequence, SingleFrameHasNoNumber) {
 
 TEST(Sequence, WhenPovrayAnimates) {
     // Stills: nothing given, +KFI1 +KFF1, +KFI0, +KFF0, +KFI0 +KFF0.
-    for (const auto& args : std::vector<std::vector<std::string>>{
-             {}, {"+KFI1", "+KFF1"}, {"+KFI0"}, {"+KFF0"}, {"+KFI0", "+KFF0"}, {"+KFF1", "+KFI1"}, {"+KC"}, {"+KI0.5", "+KF2"}}) {
+    for (const auto& args : std::vector<std::vector<std::string>>{{},
+                                                                  {"+KFI1", "+KFF1"},
+                                                                  {"+KFI0"},
+                                                                  {"+KFF0"},
+                                                                  {"+KFI0", "+KFF0"},
+                                                                  {"+KFF1", "+KFI1"},
+                                                                  {"+KC"},
+                                                                  {"+KI0.5", "+KF2"}}) {
         const auto s = plan(args);
         EXPECT_FALSE(s.animated) << ::testing::PrintToString(args);
         EXPECT_EQ(names(s), std::vector<std::string>{"s.png"});
@@ -155,7 +165,8 @@ TEST(Sequence, Subsets) {
     EXPECT_EQ(numbers(plan({"+KFF10", "+SF0.35", "+EF0.75"})), (std::vector<int>{3, 4, 5, 6, 7}));
     EXPECT_EQ(plan({"+KFF10", "+SF0.05"}).frames.size(), 10u);
     EXPECT_EQ(numbers(plan({"+KFF10", "+SF1.0", "+EF0.999"})).back(), 9);
-    EXPECT_EQ(numbers(plan({"+KFI5", "+KFF15", "+SF0.5", "+EF0.8"})), (std::vector<int>{5, 6, 7, 8}));
+    EXPECT_EQ(numbers(plan({"+KFI5", "+KFF15", "+SF0.5", "+EF0.8"})),
+              (std::vector<int>{5, 6, 7, 8}));
     EXPECT_EQ(numbers(plan({"+KFI5", "+KFF15", "+SF0.33", "+EF0.55"})), (std::vector<int>{5, 6}));
     // Cyclic: the count includes the extra frame.
     EXPECT_EQ(numbers(plan({"+KFF10", "+KC", "+EF0.95"})).back(), 10);
@@ -194,8 +205,10 @@ TEST(Sequence, FieldRenderKeepsFramesAndClocks) {
 
 TEST(Sequence, OutputNames) {
     // The extension is dropped only when it is the type's own (case matters).
-    EXPECT_EQ(names(plan({"+KFF3", "+Oout.tga"})), (std::vector<std::string>{"out.tga1.png", "out.tga2.png", "out.tga3.png"}));
-    EXPECT_EQ(names(plan({"+KFF3", "+Oout"})), (std::vector<std::string>{"out1.png", "out2.png", "out3.png"}));
+    EXPECT_EQ(names(plan({"+KFF3", "+Oout.tga"})),
+              (std::vector<std::string>{"out.tga1.png", "out.tga2.png", "out.tga3.png"}));
+    EXPECT_EQ(names(plan({"+KFF3", "+Oout"})),
+              (std::vector<std::string>{"out1.png", "out2.png", "out3.png"}));
     EXPECT_EQ(plan({"+KFF3", "+Oout.jpg", "+FT"}).frames[0].output, "out.jpg1.tga");
     EXPECT_EQ(plan({"+Oout.tga"}).frames[0].output, "out.tga.png");
     EXPECT_EQ(plan({"+Oout.x.y"}).frames[0].output, "out.x.y.png");
@@ -205,7 +218,8 @@ TEST(Sequence, OutputNames) {
     // A folder only with a trailing slash.
     EXPECT_EQ(plan({"+Osub/"}).frames[0].output, "sub/s.png");
     EXPECT_EQ(plan({"+Osub"}).frames[0].output, "sub.png");
-    EXPECT_EQ(names(plan({"+Osub/x.png", "+KFF2"})), (std::vector<std::string>{"sub/x1.png", "sub/x2.png"}));
+    EXPECT_EQ(names(plan({"+Osub/x.png", "+KFF2"})),
+              (std::vector<std::string>{"sub/x1.png", "sub/x2.png"}));
     // A frame number longer than the padding shortens the base name.
     EXPECT_EQ(names(plan({"+KFF15", "+SF99", "+EF101", "+Oabcdef"})),
               (std::vector<std::string>{"abcdef99.png", "abcde100.png", "abcde101.png"}));
@@ -254,4 +268,69 @@ TEST(Sequence, RenderWindow) {
     // povray: "Invalid start column or row" / "Invalid end column or row".
     EXPECT_THROW(plan({"+W7", "+H5", "+SR6"}), options::OptionError);
     EXPECT_THROW(plan({"+W7", "+H5", "+SC2", "+EC9"}), options::OptionError);
+}
+
+// Frames are computed when asked for: two thousand million of them plan in
+// no time and no memory (the frame list used to be built up front and ran
+// out of memory), and a subset or shard of them is exact.
+TEST(Sequence, HugeAnimationsArePlannedLazily) {
+    const auto all = plan({"+KFI1", "+KFF2000000000"});
+    ASSERT_EQ(all.frames.size(), 2000000000u);
+    EXPECT_EQ(all.frames.front().output, "s0000000001.png");
+    EXPECT_EQ(all.frames[1234567].number, 1234568);
+    EXPECT_DOUBLE_EQ(all.frames.back().clock, 1.0);
+    EXPECT_EQ(all.frames.back().output, "s2000000000.png");
+    EXPECT_EQ(all.finalFrame, 2000000000);
+
+    const auto tail = plan({"+KFI1", "+KFF2000000000", "+SF1999999998", "+STP2"});
+    EXPECT_EQ(numbers(tail), (std::vector<int>{1999999998, 2000000000}));
+
+    // Shard 2 of 3 of frames 1..2e9: 3, 6, ..., 1999999998.
+    const auto shard = plan({"+KFI1", "+KFF2000000000", "+SHC3", "+SHI2"});
+    ASSERT_EQ(shard.frames.size(), 666666666u);
+    EXPECT_EQ(shard.frames.front().number, 3);
+    EXPECT_EQ(shard.frames[1].number, 6);
+    EXPECT_EQ(shard.frames.back().number, 1999999998);
+    EXPECT_EQ(shard.framesInAllShards, 2000000000u);
+
+    // Cyclic at the largest frame number: final_frame does not overflow.
+    const auto cyclic = plan({"+KFI2147483640", "+KFF2147483647", "+KC"});
+    EXPECT_EQ(cyclic.frames.size(), 8u);
+    EXPECT_EQ(cyclic.frames.back().number, 2147483647);
+}
+
+TEST(Sequence, ShardsAreTheSameFramesAsOneRun) {
+    const auto whole = plan({"+KFI3", "+KFF40", "+SF5", "+EF33", "+STP3"});
+    std::vector<int> merged;
+    for (int i = 0; i < 4; ++i) {
+        const auto part = plan(
+            {"+KFI3", "+KFF40", "+SF5", "+EF33", "+STP3", "+SHC4", "+SHI" + std::to_string(i)});
+        for (size_t j = 0; j < part.frames.size(); ++j) {
+            const size_t position = j * 4 + static_cast<size_t>(i);
+            EXPECT_EQ(part.frames[j].number, whole.frames[position].number);
+            EXPECT_EQ(part.frames[j].output, whole.frames[position].output);
+            EXPECT_EQ(part.frames[j].clock, whole.frames[position].clock);
+            merged.push_back(part.frames[j].number);
+        }
+    }
+    std::sort(merged.begin(), merged.end());
+    EXPECT_EQ(merged, numbers(whole));
+    // More shards than frames: the last ones are empty.
+    EXPECT_TRUE(plan({"+SHC2", "+SHI1"}).frames.empty());
+    EXPECT_EQ(plan({"+SHC2", "+SHI0"}).frames.size(), 1u);
+}
+
+TEST(Sequence, KnowsItsImageNames) {
+    const auto seq = plan({"+KFI3", "+KFF40", "+STP3", "+SHC2", "+SHI1", "+Oout/f"});
+    // Frames 3 6 9 ... 39; shard 1 of 2: 6 12 18 ...
+    EXPECT_TRUE(seq.frames.holdsImageNamed("f06.png"));
+    EXPECT_TRUE(seq.frames.holdsImageNamed("f36.png"));
+    EXPECT_FALSE(seq.frames.holdsImageNamed("f03.png"));  // shard 0's
+    EXPECT_FALSE(seq.frames.holdsImageNamed("f07.png"));  // not a frame
+    EXPECT_FALSE(seq.frames.holdsImageNamed("f42.png"));  // past the end
+    EXPECT_FALSE(seq.frames.holdsImageNamed("g06.png"));
+    EXPECT_FALSE(seq.frames.holdsImageNamed("f6.png"));
+    EXPECT_FALSE(seq.frames.holdsImageNamed("f+6.png"));
+    EXPECT_TRUE(plan({}).frames.holdsImageNamed("s.png"));
+    EXPECT_FALSE(plan({}).frames.holdsImageNamed("t.png"));
 }

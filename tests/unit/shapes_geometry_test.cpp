@@ -1,10 +1,11 @@
-// Cylinders, cones, discs, triangles and quadrics: exact hits, normals,
+// Cylinders, cones, discs, triangles, quadrics and julia fractals: exact hits, normals,
 // inside answers and bounds in object space.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "scene/flat_shapes.h"
+#include "scene/julia_fractal.h"
 #include "scene/quadric.h"
 #include "scene/revolved_shapes.h"
 
@@ -164,7 +165,8 @@ TEST(SmoothTriangle, NormalsBlendByBarycentricWeights) {
     expectVec(tri.normal({1, 0, 0}), normalize(Vec3{1, 0, -1}));
     expectVec(tri.normal({0, 0, 0}), {0, 0, -1});
     // Middle of the b-c edge: half of each.
-    expectVec(tri.normal({0.5, 0.5, 0}), normalize(Vec3{0.5 / std::sqrt(2), 0.5 / std::sqrt(2), -1 / std::sqrt(2)}));
+    expectVec(tri.normal({0.5, 0.5, 0}),
+              normalize(Vec3{0.5 / std::sqrt(2), 0.5 / std::sqrt(2), -1 / std::sqrt(2)}));
     double t;
     ASSERT_TRUE(tri.firstHit({{0.25, 0.25, 1}, {0, 0, -1}}, 0, kInfinity, t));
     EXPECT_DOUBLE_EQ(t, 1);
@@ -210,4 +212,38 @@ TEST(Quadric, MixedTermsAndEllipsoidBounds) {
     expectVec(n.bounds().hi, {3, 1, 3}, 1e-9);
     EXPECT_FALSE(n.insideBounds().isFinite());
     EXPECT_TRUE(n.inside({10, 0, 0}));
+}
+
+TEST(JuliaFractal, ZeroParameterIsTheUnitBall) {
+    // With c = 0 the square of a quaternion inside the unit ball stays
+    // inside it, and the bailout radius is 1 + |c| = 1: the set is the ball.
+    const JuliaFractal j({0, 0, 0, 0}, JuliaFractal::Algebra::Quaternion,
+                         JuliaFractal::Function::Sqr, 20, 20);
+    EXPECT_TRUE(j.inside(Vec3(0.5, 0.3, -0.2)));
+    EXPECT_FALSE(j.inside(Vec3(1.05, 0, 0)));
+    const auto ts = hits(j, Ray{Vec3(-3, 0, 0), Vec3(1, 0, 0)});
+    ASSERT_EQ(ts.size(), 2u);
+    EXPECT_NEAR(ts[0], 2, 1e-9);
+    EXPECT_NEAR(ts[1], 4, 1e-9);
+    // The normal: the gradient of |q(N)|^2 (= |p|^(2^(N+1)) here; few
+    // iterations keep the finite differences tame).
+    const JuliaFractal few({0, 0, 0, 0}, JuliaFractal::Algebra::Quaternion,
+                           JuliaFractal::Function::Sqr, 3, 20);
+    expectVec(few.normal(Vec3(0.6, 0.8, 0)), Vec3(0.6, 0.8, 0), 1e-5);
+    EXPECT_DOUBLE_EQ(j.bounds().hi.x, 1.0);
+}
+
+TEST(JuliaFractal, HypercomplexSquareAndQuaternionCube) {
+    // Hypercomplex: the bailout radius is 4 whatever c; 0.5 squares to
+    // 0.25 (+ c = 0.25 - 0.3 ...) and stays small, 3 runs away.
+    const JuliaFractal h({-0.3, 0.1, 0, 0}, JuliaFractal::Algebra::Hypercomplex,
+                         JuliaFractal::Function::Sqr, 10, 20);
+    EXPECT_DOUBLE_EQ(h.bounds().hi.x, 4.0);
+    EXPECT_TRUE(h.inside(Vec3(0.5, 0, 0)));
+    EXPECT_FALSE(h.inside(Vec3(3, 0, 0)));
+    // Cube with c = 0: again the unit ball (|q^3| = |q|^3).
+    const JuliaFractal cube({0, 0, 0, 0}, JuliaFractal::Algebra::Quaternion,
+                            JuliaFractal::Function::Cube, 8, 20);
+    EXPECT_TRUE(cube.inside(Vec3(0, 0.7, 0.7)));
+    EXPECT_FALSE(cube.inside(Vec3(0, 0.75, 0.75)));
 }

@@ -117,6 +117,20 @@ for y in range(32):
         hf_idx.append(min(250, int(v)))
 write_gif('mesh_hf_heights.gif', 32, 32, hf_idx, hf_palette)
 
+# A 32 x 32 Fractint continuous-potential (pot) file for mesh_hf_pot.pov:
+# a GIF 64 wide whose row halves hold the 16-bit heights' high bytes (left)
+# and low bytes (right): a smooth dome with fine ripples only the low byte
+# resolves.
+pot_idx = []
+for y in range(32):
+    row = []
+    for x in range(32):
+        d = math.hypot(x - 14.5, y - 16.5) / 20.0
+        v = max(0.0, 1.0 - d * d) * 50000 + 600 * math.sin(x * 0.9) * math.cos(y * 0.7) + 1000
+        row.append(max(0, min(65535, int(v))))
+    pot_idx += [h >> 8 for h in row] + [h & 0xFF for h in row]
+write_gif('mesh_hf_heights.pot', 64, 32, pot_idx, hf_palette)
+
 # 16 x 16 x 16 8-bit df3 density for tex_density_file.pov: a soft blob
 # plus a tilted ripple (header: three big-endian 16-bit sizes).
 n = 16

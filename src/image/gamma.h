@@ -2,12 +2,10 @@
 // rules (assumed_gamma, File_Gamma, the pre-3.7 compatibility mode).
 #pragma once
 
-#include "scene/scene.h"
-
-namespace frameray::render {
+namespace frameray::image {
 
 class GammaEncoding {
-public:
+  public:
     enum class Curve { Identity, Power, SRGB };
 
     // The 3.7 rules: a scene with assumed_gamma works in that gamma and the
@@ -15,7 +13,8 @@ public:
     // that declares #version 3.7 or later is linear (assumed_gamma 1); an
     // older scene without it has gamma handling turned off.
     // `fileGamma` <= 0 means sRGB.
-    static GammaEncoding forScene(const scene::Scene& scene, double fileGamma);
+    static GammaEncoding forScene(bool assumedGammaSet, double assumedGamma, double languageVersion,
+                                  double fileGamma);
 
     // Maps a working-space value in [0,1] (already clipped) to [0,1] file space.
     double encode(double working) const;
@@ -24,10 +23,10 @@ public:
     // as for pre-3.7 scenes without assumed_gamma).
     double toLinear(double working) const;
 
-private:
+  private:
     double assumedGamma_ = 1.0;
     Curve curve_ = Curve::SRGB;
     double fileGamma_ = 2.2;
 };
 
-}  // namespace frameray::render
+}  // namespace frameray::image

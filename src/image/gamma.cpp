@@ -1,18 +1,19 @@
-#include "render/gamma.h"
+#include "image/gamma.h"
 
 #include <cmath>
 
-namespace frameray::render {
+namespace frameray::image {
 
-GammaEncoding GammaEncoding::forScene(const scene::Scene& scene, double fileGamma) {
+GammaEncoding GammaEncoding::forScene(bool assumedGammaSet, double assumedGamma,
+                                      double languageVersion, double fileGamma) {
     GammaEncoding g;
     if (fileGamma > 0) {
         g.curve_ = GammaEncoding::Curve::Power;
         g.fileGamma_ = fileGamma;
     }
-    if (scene.globals.assumedGammaSet) {
-        g.assumedGamma_ = scene.globals.assumedGamma;
-    } else if (scene.languageVersion < 3.7 - 1e-9) {
+    if (assumedGammaSet) {
+        g.assumedGamma_ = assumedGamma;
+    } else if (languageVersion < 3.7 - 1e-9) {
         g.curve_ = GammaEncoding::Curve::Identity;
     }
     return g;
@@ -31,4 +32,4 @@ double GammaEncoding::encode(double v) const {
     return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
-}  // namespace frameray::render
+}  // namespace frameray::image

@@ -1,0 +1,58 @@
+#include "scene/media.h"
+
+#include <cmath>
+
+namespace frameray::scene {
+
+RGB Media::densityAt(const Vec3& p) const {
+    RGB d(1.0);
+    for (const auto& density : densities) {
+        d *= density->at(p).rgb;
+        if (d.isBlack()) break;
+    }
+    return d;
+}
+
+double Media::phase(double c) const {
+    // Measured with povray 3.7 (a slab lit by one parallel light at angles
+    // from 0 to 180 degrees, extinction 0): the Mie and Rayleigh shapes of
+    // the literature, each with povray's own overall scale; Henyey-
+    // Greenstein normalised to an average of 1 over the sphere.
+    const double x = 0.5 * (1.0 + c);
+    switch (scatteringType) {
+        case ScatteringType::MieHazy: {
+            const double x2 = x * x, x4 = x2 * x2;
+            return 0.57665 * (1.0 + 9.0 * x4 * x4);
+        }
+        case ScatteringType::MieMurky: {
+            double x32 = x;
+            for (int i = 0; i < 5; ++i) x32 *= x32;
+            return 0.49571 * (1.0 + 50.0 * x32);
+        }
+        case ScatteringType::Rayleigh:
+            return 0.79935 * (1.0 + c * c);
+        case ScatteringType::HenyeyGreenstein: {
+            const double g = eccentricity;
+            const double d = 1.0 + g * g - 2.0 * g * c;
+            return d > 0 ? (1.0 - g * g) / (d * std::sqrt(d)) : 0.0;
+        }
+        default:
+            return 1.0;
+    }
+}
+
+void Media::transformBy(const Transform& t) {
+    for (auto& density : densities) {
+        auto moved = std::make_shared<Pigment>(*density);
+        moved->transform(t);
+        density = std::move(moved);
+    }
+}
+
+Pigment defaultDensity() {
+    Pigment p(Color(RGB(1.0)));
+    p.setColorMap(ColorMap::grayscale());
+    return p;
+}
+
+}  // namespace frameray::scene

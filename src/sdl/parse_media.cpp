@@ -1,0 +1,210 @@
+// media { } and density { } (POV-Ray 3.7): the sampling settings, the three
+// effects (absorption, emission, scattering with its phase function) and
+// the density patterns, which reuse the pigment pattern parser: a density
+// is a pigment whose colour is the density per channel.
+#include <fmt/format.h>
+
+#include "sdl/interpreter.h"
+
+namespace frameray::sdl {
+
+namespace {
+
+// scattering { TYPE, ... }: the types povray 3.7 knows.
+scene::ScatteringType scatteringType(int type) {
+    switch (type) {
+        case 1:
+            return scene::ScatteringType::Isotropic;
+        case 2:
+            return scene::ScatteringType::MieHazy;
+        case 3:
+            return scene::ScatteringType::MieMurky;
+        case 4:
+            return scene::ScatteringType::Rayleigh;
+        case 5:
+            return scene::ScatteringType::HenyeyGreenstein;
+        default:
+            return scene::ScatteringType::None;
+    }
+}
+
+// What may start a constant density (a colour expression).
+bool startsDensityColor(const Token& t) {
+    static constexpr Keyword kColor[] = {
+        Keyword::kw_color, Keyword::kw_colour, Keyword::kw_rgb,     Keyword::kw_rgbf,
+        Keyword::kw_rgbt,  Keyword::kw_rgbft,  Keyword::kw_srgb,    Keyword::kw_srgbf,
+        Keyword::kw_srgbt, Keyword::kw_srgbft, Keyword::kw_red,     Keyword::kw_green,
+        Keyword::kw_blue,  Keyword::kw_filter, Keyword::kw_transmit};
+    if (t.isIdentifier() || t.is(Sym::Less) || t.kind == TokenKind::Number || t.is(Sym::LParen))
+        return true;
+    for (const Keyword k : kColor)
+        if (t.is(k)) return true;
+    return false;
+}
+
+}  // namespace
+
+DensityPtr Interpreter::parseDensity() {
+    next();  // density
+    expect(Sym::LBrace, "'{' after 'density'");
+    DensityPtr d = parseDensityBody(Sym::RBrace);
+    expect(Sym::RBrace, "'}' closing 'density'");
+    return d;
+}
+
+DensityPtr Interpreter::parseDensityBody(Sym closing) {
+    auto pigment = std::make_shared<scene::Pigment>(scene::defaultDensity());
+    const Token first = peek();
+    if (first.isIdentifier()) {
+        const Value* v = lookup(first);
+        if (v && std::holds_alternative<DensityPtr>(*v)) {
+            next();
+            *pigment = *std::get<DensityPtr>(*v)->pigment;
+        }
+    }
+    while (!peek().is(closing)) {
+        const Token item = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            pigment->transform(step);
+            continue;
+        }
+        if (item.is(Keyword::kw_density_map)) {
+            pigment->setPigmentMap(parseDensityMap());
+            continue;
+        }
+        if (item.is(Keyword::kw_pigment_map) || item.is(Keyword::kw_uv_mapping) ||
+            item.is(Keyword::kw_image_map))
+            fail(item, fmt::format("'{}' is not allowed in a density", item.text));
+        if (parsePigmentPatternItem(*pigment)) continue;
+        if (startsDensityColor(item)) {
+            pigment->setSolid(parseColor());
+            continue;
+        }
+        if (item.kind == TokenKind::Word && item.kw != Keyword::None)
+            unsupported(item, fmt::format("'{}' in density", item.text));
+        fail(item, fmt::format("expected a density item or '}}', found {}", describeToken(item)));
+    }
+    return std::make_shared<const DensityValue>(DensityValue{pigment});
+}
+
+std::vector<scene::Pigment::MapEntry> Interpreter::parseDensityMap() {
+    next();  // density_map
+    expect(Sym::LBrace, "'{' after 'density_map'");
+    std::vector<scene::Pigment::MapEntry> entries;
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        expect(Sym::LBracket, "'[' or '}' in density_map");
+        const double value = parseMapValue();
+        accept(Sym::Comma);
+        // An entry is a density's body: a density identifier, a pattern or
+        // a colour, with modifiers.
+        PigmentPtr pigment = parseDensityBody(Sym::RBracket)->pigment;
+        expect(Sym::RBracket, "']' after a density_map entry");
+        entries.push_back({value, std::move(pigment)});
+    }
+    return entries;
+}
+
+MediaPtr Interpreter::parseMedia() {
+    next();  // media
+    expect(Sym::LBrace, "'{' after 'media'");
+    scene::Media m;
+    const Token first = peek();
+    if (first.isIdentifier()) {
+        const Value* v = lookup(first);
+        if (v && std::holds_alternative<MediaPtr>(*v)) {
+            next();
+            m = *std::get<MediaPtr>(*v);
+        }
+    }
+    for (;;) {
+        if (accept(Sym::RBrace)) break;
+        const Token t = peek();
+        Transform step;
+        if (parseTransformation(step)) {
+            m.transformBy(step);
+            continue;
+        }
+        if (t.is(Keyword::kw_density)) {
+            m.densities.push_back(parseDensity()->pigment);
+            continue;
+        }
+        next();
+        switch (t.kw) {
+            case Keyword::kw_method: {
+                const int method = static_cast<int>(parseFloat());
+                if (method < 1 || method > 3) fail(t, "Unknown media sampling method.");
+                if (method != 3) unsupported(t, fmt::format("media method {}", method));
+                m.method = method;
+                break;
+            }
+            case Keyword::kw_intervals:
+                m.intervals = static_cast<int>(parseFloat());
+                if (m.intervals < 1) fail(t, "At least one interval is needed in media.");
+                break;
+            case Keyword::kw_samples:
+                m.samplesMin = static_cast<int>(parseFloat());
+                m.samplesMax = m.samplesMin;
+                if (accept(Sym::Comma)) m.samplesMax = static_cast<int>(parseFloat());
+                if (m.samplesMin < 1)
+                    fail(t, "At least one sample per interval is needed in media.");
+                break;
+            case Keyword::kw_confidence:
+                m.confidence = parseFloat();
+                break;
+            case Keyword::kw_variance:
+                m.variance = parseFloat();
+                break;
+            case Keyword::kw_ratio:
+                m.ratio = parseFloat();
+                break;
+            case Keyword::kw_aa_level:
+                m.aaLevel = static_cast<int>(parseFloat());
+                if (m.aaLevel < 1) fail(t, "aa_level in media must be at least one.");
+                break;
+            case Keyword::kw_aa_threshold:
+                m.aaThreshold = parseFloat();
+                break;
+            case Keyword::kw_jitter:
+                m.jitter = parseFloat();
+                break;
+            case Keyword::kw_absorption:
+                m.absorption = parseColor().rgb;
+                break;
+            case Keyword::kw_emission:
+                m.emission = parseColor().rgb;
+                break;
+            case Keyword::kw_scattering: {
+                expect(Sym::LBrace, "'{' after 'scattering'");
+                const Token type = peek();
+                const int number = static_cast<int>(parseFloat());
+                m.scatteringType = scatteringType(number);
+                if (m.scatteringType == scene::ScatteringType::None)
+                    fail(type, "Unknown media scattering type.");
+                accept(Sym::Comma);
+                m.scattering = parseColor().rgb;
+                for (;;) {
+                    if (accept(Sym::RBrace)) break;
+                    const Token s = next();
+                    if (s.is(Keyword::kw_eccentricity))
+                        m.eccentricity = parseFloat();
+                    else if (s.is(Keyword::kw_extinction))
+                        m.extinction = parseFloat();
+                    else
+                        fail(s, fmt::format("expected eccentricity, extinction or '}}' in "
+                                            "scattering, found {}",
+                                            describeToken(s)));
+                }
+                break;
+            }
+            default:
+                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+                    unsupported(t, fmt::format("'{}' in media", t.text));
+                fail(t, fmt::format("expected a media item or '}}', found {}", describeToken(t)));
+        }
+    }
+    return std::make_shared<const scene::Media>(std::move(m));
+}
+
+}  // namespace frameray::sdl
