@@ -24,8 +24,9 @@ RunStreams::RunStreams(const options::RenderOptions& o) {
         if (i == static_cast<int>(TextStream::Fatal)) streams_[i].console = true;
         if (o.streams[i].file.empty()) continue;
         // Never through a link planted under the stream file's name.
-        const int fd = util::createNoFollow(o.streams[i].file);
-        streams_[i].file = ::fdopen(fd, "w");
+        // Append_File (+GP): povray appends to the stream files then.
+        const int fd = util::createNoFollow(o.streams[i].file, o.appendFile);
+        streams_[i].file = ::fdopen(fd, o.appendFile ? "a" : "w");
         if (!streams_[i].file) {
             ::close(fd);
             throw std::runtime_error(

@@ -29,6 +29,7 @@
 #include "anim/journal.h"
 #include "anim/memory_budget.h"
 #include "anim/progress.h"
+#include "anim/run_log.h"
 #include "anim/statistics.h"
 #include "image/codecs.h"
 #include "image/frame_encoding.h"
@@ -44,6 +45,7 @@
 namespace frameray::anim {
 
 namespace fs = std::filesystem;
+using options::LogLevel;
 using options::ShellHook;
 using options::TextStream;
 
@@ -108,6 +110,7 @@ bool settingsNeutral(std::string_view key) {
         "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Continue_Trace",
         "Create_Ini",           "Display",            "Display_Gamma",      "Field_Render",
         "File_Restrictions",    "Frame_Step",         "Frames_In_Flight",   "Input_File_Name",
+        "Log_Format",           "Log_Level",
         "Max_Parse_Iterations", "Odd_Field",          "Output_File_Name",   "Output_To_File",
         "Pause_When_Done",      "Read_Path",          "Shard_Count",        "Shard_Index",
         "Subset_End_Frame",     "Subset_Start_Frame", "Test_Abort",         "Test_Abort_Count",
@@ -130,7 +133,7 @@ std::uint64_t settingsHash(const options::RenderOptions& o) {
     for (const options::OptionSpec& spec : options::optionTable()) {
         if (settingsNeutral(spec.iniKey)) continue;
         s += fmt::format("|{}", spec.iniKey);
-        for (const std::string& value : spec.write(o)) s += "=" + value;
+        for (const std::string& value : options::optionValues(spec, o)) s += "=" + value;
     }
     return hashText(s);
 }
@@ -228,6 +231,7 @@ struct Job {
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
     bool failed = false;  // the log holds the fatal message
+    std::string failure;  // ... and this is it (for the run log)
     // The parse stopped on a file that an earlier frame of this run writes
     // (a scene showing the previous frames' images, as the example
     // advanced/desk does): stage 3 parses and renders it again once every
@@ -282,6 +286,25 @@ class Run {
     Run& operator=(const Run&) = delete;
 
     int execute() {
+        const int code = executeRun();
+        logEvent(LogLevel::Info, "run_end",
+                 {{"outcome", code == 0   ? "finished"
+                              : code == 2 ? "interrupted"
+                                          : "failed"},
+                  {"exit_code", code},
+                  {"frames_finished", finished_.load()},
+                  {"frames_kept", kept_.size()},
+                  {"wall_seconds", wallSeconds_},
+                  {"cpu_seconds", cpuSecondsUsed_}});
+        if (runLog_)
+            if (const std::string error = runLog_->close(); !error.empty())
+                say(TextStream::Warning,
+                    fmt::format("frameray: warning: the run log is incomplete: {}\n", error));
+        return code;
+    }
+
+  private:
+    int executeRun() {
         if (o_.outputToFile && !seq_.frames.empty()) {
             std::error_code ec;
             // Every frame and the journal are in the same folder, created
@@ -294,11 +317,14 @@ class Run {
             journal_ = std::make_unique<Journal>(seq_.journal, settingsHash(o_), o_.continueTrace,
                                                  shardJournals(seq_));
             written_ = journal_->written();
-            if (journal_->discardedStale())
+            openRunLog();
+            if (journal_->discardedStale()) {
+                logEvent(LogLevel::Warn, "journal_stale", {{"journal", seq_.journal.string()}});
                 say(TextStream::Warning,
                     fmt::format("frameray: the journal {} was written with other settings; "
                                 "rendering every frame again\n",
                                 seq_.journal.string()));
+            }
         }
         setEmergencyStop([this] { emergencyStop(); });
 
@@ -339,7 +365,41 @@ class Run {
         return finish();
     }
 
-  private:
+    // The run log beside an animation's frames (anim/run_log.h); a log
+    // that cannot be opened is a warning, never the end of the run.
+    void openRunLog() {
+        if (!seq_.animated || o_.logLevel == LogLevel::Off) return;
+        const fs::path folder = seq_.frames.front().output.parent_path();
+        const fs::path path = (folder.empty() ? fs::path(".") : folder) / seq_.runLogName;
+        try {
+            runLog_ = std::make_unique<RunLog>(path, o_.logLevel, o_.logFormat,
+                                               o_.verbose ? &progress_ : nullptr);
+        } catch (const std::exception& e) {
+            say(TextStream::Warning, fmt::format("frameray: warning: no run log: {}\n", e.what()));
+            return;
+        }
+        logEvent(LogLevel::Info, "run_start",
+                 {{"scene", seq_.sceneName},
+                  {"frames", seq_.frames.size()},
+                  {"frames_in_all_shards", seq_.framesInAllShards},
+                  {"shard", seq_.shardIndex},
+                  {"shard_count", seq_.shardCount},
+                  {"continue_trace", o_.continueTrace ? 1 : 0},
+                  {"pid", static_cast<long long>(getpid())}});
+    }
+
+    void logEvent(LogLevel level, std::string_view kind,
+                  std::initializer_list<LogField> fields) const {
+        if (runLog_) runLog_->event(level, kind, fields);
+    }
+
+    // The frame failed: its log gets the fatal message, the run log an event.
+    static void failJob(Job& job, const std::string& message) {
+        job.log->message(sdl::Stream::Fatal, message);
+        job.failed = true;
+        job.failure = message;
+    }
+
     size_t framesInFlight() const {
         // Shell-outs between frames keep POV-Ray's strict order: frame N's
         // Post_Frame_Command before frame N+1's Pre_Frame_Command.
@@ -355,6 +415,8 @@ class Run {
         inFlight_ = framesInFlight();
         runStart_ = Clock::now();
         cpuStart_ = cpuSeconds();
+        logEvent(LogLevel::Info, "pipeline",
+                 {{"threads", threads_}, {"frames_in_flight", inFlight_}});
         // Frames in flight are bounded by memory too: the first frame
         // renders alone (its tiles still use every core) and its growth
         // of the process is the estimate for the others.
@@ -366,6 +428,10 @@ class Run {
             frameMemory_ = peak > before ? peak - before : 0;
             memoryBudget_ = availableBytes();
             inFlight_ = framesWithin(inFlight_, frameMemory_, memoryBudget_);
+            logEvent(LogLevel::Info, "memory_limit",
+                     {{"frame_memory_bytes", frameMemory_},
+                      {"memory_budget_bytes", memoryBudget_},
+                      {"frames_in_flight", inFlight_}});
         }
         if (!measureFirst || (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
             pipelinePhase(inFlight_, std::numeric_limits<size_t>::max());
@@ -534,20 +600,21 @@ class Run {
                 job.parseSeconds = secondsSince(start);
                 return;
             }
-            job.log->message(sdl::Stream::Fatal, e.what());
-            job.failed = true;
+            failJob(job, e.what());
         } catch (const std::bad_alloc&) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: out of memory while parsing the scene",
-                                         frame.number));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: out of memory while parsing the scene",
+                                     frame.number));
         } catch (const std::exception& e) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: {}", frame.number, e.what()));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: {}", frame.number, e.what()));
         }
         if (!job.failed && journal_) noteInputs(job);
         job.parseSeconds = secondsSince(start);
+        if (!job.failed)
+            logEvent(LogLevel::Debug, "parse_done",
+                     {{"frame", frame.number},
+                      {"clock", frame.clock},
+                      {"seconds", job.parseSeconds},
+                      {"deferred", job.deferred ? 1 : 0}});
     }
 
     // Stage 1, right after the parse: the files the frame read, hashed now
@@ -602,6 +669,7 @@ class Run {
             auto start = Clock::now();
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
+            if (world.photons()) job.stats.photons = world.photons()->stats();
             start = Clock::now();
             const auto gamma = image::GammaEncoding::forScene(
                 job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
@@ -627,19 +695,22 @@ class Run {
                 job.fileHash = *hash;
                 job.writeSeconds = secondsSince(start);
             }
+            logEvent(LogLevel::Debug, "render_done",
+                     {{"frame", job.frame->number},
+                      {"clock", job.frame->clock},
+                      {"prepare_seconds", job.prepareSeconds},
+                      {"render_seconds", job.renderSeconds},
+                      {"encode_seconds", job.writeSeconds},
+                      {"camera_rays", job.stats.rays.camera},
+                      {"shadow_rays", job.stats.rays.shadow}});
         } catch (const sdl::SdlError& e) {
-            job.log->message(sdl::Stream::Fatal, e.what());
-            job.failed = true;
+            failJob(job, e.what());
         } catch (const std::bad_alloc&) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: out of memory while building or "
-                                         "rendering the frame",
-                                         job.frame->number));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: out of memory while building or "
+                                     "rendering the frame",
+                                     job.frame->number));
         } catch (const std::exception& e) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: {}", job.frame->number, e.what()));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: {}", job.frame->number, e.what()));
         }
         job.scene.reset();
         job.interpreter.reset();
@@ -688,6 +759,10 @@ class Run {
             ++finished_;
             kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});
             progress_.finished(frame.number, true);
+            logEvent(LogLevel::Info, "kept",
+                     {{"frame", frame.number},
+                      {"clock", frame.clock},
+                      {"file", frame.output.filename().string()}});
             if (o_.verbose)
                 say(TextStream::Render,
                     fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
@@ -706,14 +781,14 @@ class Run {
                                      job.fileSize, job.fileHash, job.inputs, job.written);
                 }
             } catch (const std::exception& e) {
-                log.message(sdl::Stream::Fatal,
-                            fmt::format("error: frame {}: {}", frame.number, e.what()));
-                job.failed = true;
+                failJob(job, fmt::format("error: frame {}: {}", frame.number, e.what()));
             }
             job.commitSeconds = secondsSince(start);
             job.writeSeconds += job.commitSeconds;
         }
         if (job.failed) {
+            logEvent(LogLevel::Error, "failed",
+                     {{"frame", frame.number}, {"clock", frame.clock}, {"reason", job.failure}});
             if (o_.outputToFile) saveLog(log, frame);
             return decide({Outcome::Kind::Fatal, "", &frame});
         }
@@ -721,11 +796,22 @@ class Run {
         records_.push_back({frame.number, frame.clock, frame.output.filename().string(),
                             job.stats.rays, std::move(job.shapeTests), job.parseSeconds,
                             job.prepareSeconds, job.renderSeconds, job.writeSeconds,
-                            job.commitSeconds});
+                            job.commitSeconds, job.stats.photons});
         const double seconds =
             job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
         const std::string where =
             o_.outputToFile ? frame.output.string() : std::string("(no file)");
+        logEvent(LogLevel::Info, "written",
+                 {{"frame", frame.number},
+                  {"clock", frame.clock},
+                  {"file", o_.outputToFile ? frame.output.filename().string() : std::string()},
+                  {"bytes", job.fileSize},
+                  {"parse_seconds", job.parseSeconds},
+                  {"prepare_seconds", job.prepareSeconds},
+                  {"render_seconds", job.renderSeconds},
+                  {"write_seconds", job.writeSeconds},
+                  {"camera_rays", job.stats.rays.camera},
+                  {"shadow_rays", job.stats.rays.shadow}});
         if (o_.verbose) {
             log.message(TextStream::Render, fmt::format("frame {} ({} of {}): {}\n", frame.number,
                                                         index, seq_.frames.size(), where));
@@ -856,6 +942,7 @@ class Run {
 
     int userAbort() {
         acknowledgeStop();
+        logEvent(LogLevel::Warn, "interrupted", {{"frames_finished", finished_.load()}});
         say(TextStream::Fatal, stopMessage());
         runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
         return 2;
@@ -886,7 +973,8 @@ class Run {
     Progress progress_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
-    FileHashes hashes_;  // input files' hashes, read once per run
+    std::unique_ptr<RunLog> runLog_;  // null: no run log
+    FileHashes hashes_;               // input files' hashes, read once per run
     // Files the sequence's frames wrote (stage 1 adds each frame's as it
     // is parsed): state passed between frames, not inputs.
     std::set<std::string> written_;

@@ -167,6 +167,7 @@ Sequence planSequence(const options::RenderOptions& o) {
     Sequence seq;
     seq.fileType = fileTypeFor(o.outputType);
     seq.sceneName = fs::path(o.inputFile).stem().string();
+    seq.runLogName = seq.sceneName + ".frameray.log";
 
     // Render window.
     seq.window.x0 = windowStart(o.startColumn, o.width);
@@ -259,6 +260,7 @@ Sequence planSequence(const options::RenderOptions& o) {
         seq.journal = firstOut.parent_path() /
                       fmt::format(".{}.{}.frameray-journal", firstOut.stem().string(), tag);
         seq.statisticsName = fmt::format("sequence.{}.json", tag);
+        seq.runLogName = fmt::format("{}.{}.frameray.log", seq.sceneName, tag);
     }
     return seq;
 }

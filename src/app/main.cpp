@@ -11,6 +11,7 @@
 #include "anim/frame_loop.h"
 #include "anim/interrupt.h"
 #include "anim/sequence.h"
+#include "app/version.h"
 #include "options/option_table.h"
 #include "options/options.h"
 #include "util/durable_file.h"
@@ -34,6 +35,9 @@ int main(int argc, char** argv) {
     for (const std::string& a : args)
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);
+            return 0;
+        } else if (a == "--version" || a == "-version" || a == "--V") {  // povray's spellings
+            std::fputs(app::versionText().c_str(), stdout);
             return 0;
         } else if (a == "--options-markdown") {
             std::fputs(options::optionsMarkdown().c_str(), stdout);
@@ -66,10 +70,12 @@ int main(int argc, char** argv) {
                 std::printf("%d %.17g %s\n", f.number, f.clock, f.output.c_str());
             return 0;
         }
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(opts.inputFile, ec))
+        // As povray: the working folder, then the library path (+L).
+        const std::filesystem::path scene = options::findSceneFile(opts);
+        if (scene.empty())
             throw options::OptionError("cannot open scene file '" + opts.inputFile +
                                        "': no such file");
+        opts.inputFile = scene.string();
         // Options whose effect is not built yet must not be silently
         // ignored; the option table says which values need what.
         if (const std::string missing = options::firstUnsupported(opts); !missing.empty())

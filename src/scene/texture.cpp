@@ -185,7 +185,7 @@ void Texture::stackOn(Texture& upper) const {
 }
 
 void TextureMap::transformBy(const Transform& t) {
-    holder.transform(t);
+    pattern.addTransform(t);
     for (auto& e : entries) {
         auto tex = std::make_shared<Texture>(*e.texture);
         tex->transformBy(t);

@@ -169,15 +169,15 @@ struct Texture;
 // A patterned texture: `texture_map { [v texture body] .. }`, a list
 // pattern's textures (`checker texture {..} texture {..}`, `tiles`), or
 // `average` over a texture_map, or a `material_map` (an image whose pixels
-// pick the textures). The pattern lives in a holder pigment (its pattern
-// with its chain of transformations and warps).
+// pick the textures). The pattern carries its chain of transformations and
+// warps.
 struct TextureMap {
     enum class Mode { Values, List, Average, Material };
     struct Entry {
         double value;  // map value; the weight under `average`
         std::shared_ptr<const Texture> texture;
     };
-    Pigment holder;
+    Pattern pattern;
     Mode mode = Mode::Values;
     std::vector<Entry> entries;
     // material_map: the image whose scalar texels are texture indices.
@@ -201,7 +201,7 @@ struct TextureMap {
     void transformBy(const Transform& t);
 
     // Where the entries are evaluated for texture point p (mapEntryPoint).
-    Vec3 entryPoint(const Vec3& p) const { return mapEntryPoint(holder.pattern(), p); }
+    Vec3 entryPoint(const Vec3& p) const { return mapEntryPoint(pattern, p); }
 };
 
 struct Texture {
@@ -278,7 +278,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
     if (entries.empty()) return;
     switch (mode) {
         case Mode::List: {
-            const auto i = static_cast<std::size_t>(std::max(0, holder.pattern().index(q)));
+            const auto i = static_cast<std::size_t>(std::max(0, pattern.index(q)));
             visit(*entries[std::min(i, entries.size() - 1)].texture, 1.0);
             return;
         }
@@ -295,7 +295,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
             // shows (measured); interpolated indices are truncated.
             double u = 0, w = 0;
             double index = 0;
-            if (material && material->imageCoordinates(holder.pattern().patternPoint(q), u, w))
+            if (material && material->imageCoordinates(pattern.patternPoint(q), u, w))
                 index = std::floor(material->valueAtImagePoint(u, w));
             visit(*entries[materialEntry(index, entries.size())].texture, 1.0);
             return;
@@ -303,7 +303,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
         case Mode::Values:
             break;
     }
-    const double v = holder.pattern().value(q, surface);
+    const double v = pattern.value(q, surface);
     if (v <= entries.front().value) return visit(*entries.front().texture, 1.0);
     std::size_t hi = 1;
     while (hi < entries.size() && entries[hi].value <= v) ++hi;

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "util/file_paths.h"
+
 namespace frameray::sdl {
 
 // The folders a restricted policy opens, as the options give them.
@@ -98,11 +100,8 @@ class FileAccessPolicy {
     std::vector<std::filesystem::path> writeFolders_;
 };
 
-// `path` made absolute (from the working folder) with '..', '.' and
-// symbolic links of its existing part resolved.
-std::filesystem::path resolvedPath(const std::filesystem::path& path);
-
-// Whether `path` is `folder` or inside it; both already resolved.
-bool isInsideFolder(const std::filesystem::path& path, const std::filesystem::path& folder);
+// resolvedPath and isInsideFolder (util/file_paths.h) judge the paths.
+using frameray::isInsideFolder;
+using frameray::resolvedPath;
 
 }  // namespace frameray::sdl

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
@@ -186,7 +186,7 @@ void writeBinary(FileWriter& out, const BinaryFormat& f, double value) {
 
 }  // namespace
 
-void Interpreter::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
+void Reader::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty())
         fail(at, refusal);
     filesRead_.push_back(path);
@@ -198,12 +198,12 @@ void Interpreter::checkReadable(const fs::path& path, const std::string& name, c
              fmt::format("cannot read '{}': not a regular file (a folder, device or pipe)", name));
 }
 
-void Interpreter::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
+void Reader::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty())
         fail(at, refusal);
 }
 
-std::string Interpreter::whyNotFound(const std::string& name) const {
+std::string Reader::whyNotFound(const std::string& name) const {
     std::error_code ec;
     const fs::path p(name);
     std::vector<fs::path> dirs;
@@ -221,13 +221,13 @@ std::string Interpreter::whyNotFound(const std::string& name) const {
                              "scene's folder";
 }
 
-void Interpreter::directiveFopen(const Token& at) {
+void Reader::directiveFopen(const Token& at) {
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
     // povray: "Expected 'undeclared identifier', file identifier found".
     // Opening another file under an open file's name would also leave the
     // first open until the end of the parse.
-    if (const Value* v = find(id); v && std::holds_alternative<FilePtr>(*v))
+    if (const Value* v = lookup(id); v && std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("'{}' is an open file identifier: #fclose {} before opening "
                                   "another file with it",
                                   id, id));
@@ -276,29 +276,28 @@ void Interpreter::directiveFopen(const Token& at) {
                                    describeToken(mode)));
     }
     openFiles_.push_back(handle);
-    declare(id, FilePtr(handle), false);
+    symbols_.declare(id, FilePtr(handle), false);
 }
 
-void Interpreter::directiveFclose(const Token& at) {
+void Reader::directiveFclose(const Token& at) {
     (void)at;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     // Closing a file that reached its end (and so was undefined) is fine.
     if (!v) return;
     if (!std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("'{}' is a {}, not a file identifier", id, valueKindName(*v)));
     std::get<FilePtr>(*v)->out.close();
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-        if (it->erase(id)) break;
+    symbols_.undefine(id);
     std::erase_if(openFiles_, [](const std::weak_ptr<FileHandle>& f) { return f.expired(); });
 }
 
-void Interpreter::directiveRead(const Token& at) {
+void Reader::directiveRead(const Token& at) {
     expect(Sym::LParen, "'('");
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     if (!v)
         fail(idToken,
              fmt::format(
@@ -316,7 +315,7 @@ void Interpreter::directiveRead(const Token& at) {
         ArrayPtr array;
         size_t index = 0;
         if (peek().is(Sym::LBracket)) {
-            Value* a = find(name);
+            Value* a = symbols_.find(name);
             if (!a || !std::holds_alternative<ArrayPtr>(*a))
                 fail(target, fmt::format("'{}' is not an array", name));
             array = std::get<ArrayPtr>(*a);
@@ -331,24 +330,22 @@ void Interpreter::directiveRead(const Token& at) {
         if (array)
             setArrayElement(*array, index, std::move(item), target);
         else
-            declare(name, std::move(item), false);
+            symbols_.declare(name, std::move(item), false);
     }
     expect(Sym::RParen, "')'");
     // At the end of the data the file identifier becomes undefined, which
     // is how scenes loop: #while (defined(F)) #read (F, X) ... #end
     skipSeparators(*file, file->pos);
-    if (file->pos >= file->content.size())
-        for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-            if (it->erase(id)) break;
+    if (file->pos >= file->content.size()) symbols_.undefine(id);
 }
 
-void Interpreter::directiveWrite(const Token& at) {
+void Reader::directiveWrite(const Token& at) {
     expect(Sym::LParen, "'('");
     // Inside the parentheses directives run as anywhere else.
     cursors_.back().inDirective = false;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     if (!v || !std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("expected a file identifier opened for writing, found '{}'", id));
     const FilePtr file = std::get<FilePtr>(*v);
@@ -394,7 +391,7 @@ void Interpreter::directiveWrite(const Token& at) {
         fail(at, fmt::format("cannot write to '{}': {}", file->name, std::strerror(error)));
 }
 
-void Interpreter::closeAllFiles() {
+void Reader::closeAllFiles() {
     for (const auto& weak : openFiles_)
         if (const FilePtr f = weak.lock()) f->out.close();
     openFiles_.clear();

@@ -11,7 +11,7 @@
 // gradient x 1 } } shows the unscaled gradient). Both follow from editing
 // in texture space: the transformation is added before the block and taken
 // back after it.
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -25,23 +25,24 @@ bool inTextureSpace(const scene::Texture& tex) {
 
 }  // namespace
 
-PigmentPtr Interpreter::parseTexturePigment(const scene::Texture& tex) {
-    if (!inTextureSpace(tex)) return parsePigment(tex.pigment.get());
-    scene::Pigment base = tex.pigment ? *tex.pigment : *defaultTexture_.pigment;
+PigmentPtr parseTexturePigment(BuildContext& c, const scene::Texture& tex) {
+    if (!inTextureSpace(tex)) return parsePigment(c, tex.pigment.get());
+    scene::Pigment base = tex.pigment ? *tex.pigment : *c.defaultTexture.pigment;
     base.transform(tex.transform);
-    auto edited = std::make_shared<scene::Pigment>(*parsePigment(&base));
+    auto edited = std::make_shared<scene::Pigment>(*parsePigment(c, &base));
     edited->transform(tex.transform.inverse());
     return edited;
 }
 
-std::shared_ptr<const scene::Normal> Interpreter::parseTextureNormal(const scene::Texture& tex) {
-    if (!inTextureSpace(tex)) return parseNormal(tex.normal.get());
+std::shared_ptr<const scene::Normal> parseTextureNormal(BuildContext& c,
+                                                        const scene::Texture& tex) {
+    if (!inTextureSpace(tex)) return parseNormal(c, tex.normal.get());
     std::optional<scene::Normal> base;
     if (tex.normal) {
         base = *tex.normal;
         base->transformBy(tex.transform);
     }
-    const auto parsed = parseNormal(base ? &*base : nullptr);
+    const auto parsed = parseNormal(c, base ? &*base : nullptr);
     if (!parsed) return nullptr;
     auto edited = std::make_shared<scene::Normal>(*parsed);
     edited->transformBy(tex.transform.inverse());

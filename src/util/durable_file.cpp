@@ -86,15 +86,15 @@ void replaceFileDurably(const fs::path& path, std::string_view bytes) {
     renameDurably(temporary, path);
 }
 
-int createNoFollow(const fs::path& path) {
+int createNoFollow(const fs::path& path, bool append) {
     // Not truncated before the check: a FIFO or device keeps its contents.
     const int fd =
         ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
     if (fd < 0) fail("write", path, errno);
     struct stat st {};
     int error = ::fstat(fd, &st) != 0 ? errno : !S_ISREG(st.st_mode) ? EINVAL : 0;
-    if (error == 0 && ::ftruncate(fd, 0) != 0) error = errno;
-    if (error == 0 && ::fcntl(fd, F_SETFL, 0) != 0) error = errno;
+    if (error == 0 && !append && ::ftruncate(fd, 0) != 0) error = errno;
+    if (error == 0 && ::fcntl(fd, F_SETFL, append ? O_APPEND : 0) != 0) error = errno;
     if (error != 0) {
         ::close(fd);
         if (error == EINVAL)

@@ -32,7 +32,9 @@ void replaceFileDurably(const std::filesystem::path& path, std::string_view byte
 // planted where a file is expected (say debug.out -> ~/.bashrc in a scene
 // folder) is an error, not a way to write elsewhere. The file must be a
 // regular one. Throws std::runtime_error naming the file and the reason.
-int createNoFollow(const std::filesystem::path& path);
+// With `append`, the file keeps its contents and every write goes to its
+// end.
+int createNoFollow(const std::filesystem::path& path, bool append = false);
 
 // Opens a regular file for reading, not through a symbolic link in the
 // last part of its name; -1 when it is absent, a link or no regular file.

@@ -21,10 +21,11 @@ an uninterrupted run.
 """
 import os
 import resource
-import shutil
 import signal
 import subprocess
 import sys
+
+from sequence_fixture import fail, make_sequence
 
 SCENE = """#version 3.7;
 global_settings { assumed_gamma 1 }
@@ -44,30 +45,16 @@ sphere { <-2 + 4 * clock, 1, 0>, 0.8 pigment { rgb <1, 0.3, 0.2> } finish { phon
 FRAMES = 8
 
 
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
-
-
 def main():
     if len(sys.argv) != 3:
         print(__doc__)
         return 2
     frameray = os.path.abspath(sys.argv[1])
     work = os.path.abspath(sys.argv[2])
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    scene = os.path.join(work, "ball.pov")
-    with open(scene, "w") as f:
-        f.write(SCENE)
-    ini = os.path.join(work, "ball.ini")
-    with open(ini, "w") as f:
-        f.write("Input_File_Name=%s\nWidth=160\nHeight=120\nInitial_Frame=1\nFinal_Frame=%d\n"
-                "Display=off\nVerbose=off\n" % (scene, FRAMES))
-    env = dict(os.environ)
-    env["POVINI"] = os.path.join(work, "no-startup.ini")  # keep the user's povray.ini out
-    with open(env["POVINI"], "w") as f:
-        f.write("; empty\n")
+    ini, env = make_sequence(
+        work, "ball", SCENE,
+        "Width=160\nHeight=120\nInitial_Frame=1\nFinal_Frame=%d\n"
+        "Display=off\nVerbose=off\n" % FRAMES)
 
     def run(outdir, extra, preexec=None):
         cmd = [frameray, ini, "+O%s/" % outdir] + extra

@@ -25,6 +25,8 @@ import shutil
 import subprocess
 import sys
 
+from sequence_fixture import fail
+
 FRAMES = 4
 
 SCENE = """#version 3.7;
@@ -48,11 +50,6 @@ light_source { <3, 5, -4> rgb 1 }
 plane { y, -1 pigment { image_map { png "tex.png" } rotate x * 90 scale 4 } }
 sphere { <clock * 2 - 1, 0, 0>, 0.6 + Extra pigment { rgb Shade } }
 """
-
-
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 
 
 def write(path, text, mode="w"):
