@@ -12,8 +12,11 @@
 #include "image/codecs.h"
 #include "image/dither.h"
 #include "image/gif_decoder.h"
-#include "image/png_palette.h"
+#include "image/jpeg_reader.h"
+#include "image/png_reader.h"
 #include "image/png_writer.h"
+#include "image/pnm_reader.h"
+#include "image/tga_reader.h"
 #include "util/durable_file.h"
 
 namespace frameray::image {
@@ -143,7 +146,7 @@ void commitTemporary(const fs::path& tmp, const fs::path& path) {
 }
 
 EncodedImage read(const fs::path& path) {
-    return codecs().read(path.string());
+    return codecs().read(path.string(), false);
 }
 
 namespace {
@@ -155,36 +158,38 @@ bool hasGifSignature(const fs::path& path) {
     return file && std::string(magic, 4) == "GIF8";
 }
 
+bool hasExtension(const fs::path& path, const char* extension) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == extension;
+}
+
+SourceImage fromGif(const fs::path& path) {
+    PaletteImage gif = readGif(path);
+    auto pixels = std::make_shared<util::PixelBuffer>(gif.width, gif.height, 1,
+                                                      util::PixelBuffer::Sample::U8);
+    std::copy(gif.indices.begin(), gif.indices.end(), pixels->data());
+    std::vector<std::array<uint8_t, 4>> palette;
+    for (const auto& c : gif.palette) palette.push_back({c[0], c[1], c[2], 255});
+    pixels->setPalette(std::move(palette), false);
+    SourceImage src;
+    src.pixels = std::move(pixels);
+    return src;
+}
+
 }  // namespace
 
 SourceImage readSource(const fs::path& path) {
-    SourceImage src;
-    if (hasGifSignature(path)) {
-        PaletteImage gif = readGif(path);
-        EncodedImage& img = src.pixels;
-        img.width = gif.width;
-        img.height = gif.height;
-        img.channels = 3;
-        img.values.reserve(gif.indices.size() * 3);
-        for (const uint8_t i : gif.indices) {
-            std::array<uint8_t, 3> c{};
-            if (i < gif.palette.size()) c = gif.palette[i];
-            for (const uint8_t v : c) img.values.push_back(static_cast<float>(v) / 255.0f);
-        }
-        src.indices = std::move(gif.indices);
-        src.palette = std::move(gif.palette);
-        return src;
-    }
-    SourceImage read = codecs().readSource(path.string());
-    // Palette PNGs: the colours come from OpenImageIO as for any PNG, the
-    // indices from libpng.
-    if (auto palette = readPalettePng(path)) {
-        if (palette->width == read.pixels.width && palette->height == read.pixels.height) {
-            read.indices = std::move(palette->indices);
-            read.palette = std::move(palette->palette);
-        }
-    }
-    return read;
+    // By signature first (a file's name may not say what it holds), TGA
+    // (which has none) by its extension.
+    if (hasPngSignature(path)) return readPng(path);
+    if (hasGifSignature(path)) return fromGif(path);
+    if (hasJpegSignature(path))
+        if (auto jpeg = readJpeg(path)) return std::move(*jpeg);
+    if (hasPnmSignature(path)) return readPnm(path);
+    if (hasExtension(path, ".tga")) return readTga(path);
+    return codecs().readSource(path.string());
 }
 
 }  // namespace frameray::image

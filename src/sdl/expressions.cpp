@@ -1060,7 +1060,7 @@ std::optional<Value> Reader::parseQueryBuiltin(const Token& fn) {
                 if (!(*pig)->imageMap())
                     fail(fn, "The parameter to max_extent must be an image map pigment");
                 const scene::ImageTexels& t = (*pig)->imageMap()->texels();
-                return VectorValue::fromVec3(Vec3(t.width, t.height, 0));
+                return VectorValue::fromVec3(Vec3(t.width(), t.height(), 0));
             }
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
             if (!obj)

@@ -85,10 +85,6 @@ double defaultFileGamma(Keyword type, const std::string& name) {
     }
 }
 
-double srgbDecode(double v) {
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
 struct ImageSettings {
     Keyword type = Keyword::None;
     std::string name;
@@ -112,18 +108,6 @@ struct ImageSettings {
     bool bumpSizeGiven = false;
 };
 
-// The texture a material_map pixel picks before the list length is
-// applied (see the header comment for the rules measured).
-double materialIndex(const image::SourceImage& src, std::size_t p) {
-    if (src.isPalette()) return src.indices[p];
-    const image::EncodedImage& px = src.pixels;
-    const auto ch = static_cast<std::size_t>(px.channels);
-    const double byte = std::floor(static_cast<double>(px.values[p * ch]) * 255.0 + 0.5);
-    if (px.channels >= 3) return byte;
-    const float g = static_cast<float>(byte) / 255.0f;
-    return std::floor(static_cast<double>(greySingle(g, g, g)) * 255.0);
-}
-
 }  // namespace
 
 const image::SourceImage& loadSourceImage(BuildContext& c, const std::string& name,
@@ -141,7 +125,7 @@ const image::SourceImage& loadSourceImage(BuildContext& c, const std::string& na
     } catch (const std::runtime_error& e) {
         r.fail(at, e.what());
     }
-    if (img->pixels.width <= 0 || img->pixels.height <= 0)
+    if (img->width() <= 0 || img->height() <= 0)
         r.fail(at, fmt::format("image '{}' has no pixels", name));
     return *c.images.emplace(key, std::move(img)).first->second;
 }
@@ -158,20 +142,17 @@ static image::SourceImage functionSourceImage(BuildContext& c, const Token& at) 
         r.fail(sizeAt, fmt::format("function image resolution {} x {} has more than {} samples", w,
                                    h, r.frame().limits.arrayElements));
     const std::shared_ptr<const CompiledFunction> fn = r.parseXyzFunction(at);
-    image::SourceImage src;
-    image::EncodedImage& img = src.pixels;
-    img.width = static_cast<int>(w);
-    img.height = static_cast<int>(h);
-    img.channels = 1;
-    img.bitDepth = 16;
-    img.values.resize(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
+    const int width = static_cast<int>(w), height = static_cast<int>(h);
+    auto pixels =
+        std::make_shared<util::PixelBuffer>(width, height, 1, util::PixelBuffer::Sample::U16);
     // As a height_field function (measured with pigment functions): pixel
     // (i, j), j = 0 the top row, holds f(i / (W - 1), j / (H - 1), 0) as
     // 16 bits, truncated and wrapped (1.1 reads back as 0.1).
-    for (int j = 0; j < img.height; ++j)
-        for (int i = 0; i < img.width; ++i) {
-            double args[3] = {static_cast<double>(i) / (img.width - 1),
-                              static_cast<double>(j) / (img.height - 1), 0.0};
+    for (int j = 0; j < height; ++j) {
+        auto* row = reinterpret_cast<std::uint16_t*>(pixels->row(j));
+        for (int i = 0; i < width; ++i) {
+            double args[3] = {static_cast<double>(i) / (width - 1),
+                              static_cast<double>(j) / (height - 1), 0.0};
             double value;
             try {
                 value = fn->eval(args);
@@ -179,10 +160,11 @@ static image::SourceImage functionSourceImage(BuildContext& c, const Token& at) 
                 r.fail(at, e.what());
             }
             const auto level = static_cast<long long>(value * 65535.0);
-            const auto wrapped = static_cast<unsigned long long>(level) & 0xFFFFu;
-            img.values[static_cast<size_t>(j) * static_cast<size_t>(img.width) +
-                       static_cast<size_t>(i)] = static_cast<float>(wrapped) / 65535.0f;
+            row[i] = static_cast<std::uint16_t>(static_cast<unsigned long long>(level) & 0xFFFFu);
         }
+    }
+    image::SourceImage src;
+    src.pixels = std::move(pixels);
     return src;
 }
 
@@ -293,92 +275,44 @@ static void parseImageSetting(BuildContext& c, const Token& keyword, ImageUse us
 }
 
 // The texels of `src` for an image block: colours for an image_map (in the
-// working gamma), scalars for the others.
-static std::shared_ptr<scene::ImageTexels> imageTexels(BuildContext& c,
-                                                       const image::SourceImage& src,
-                                                       const ImageSettings& s, ImageUse use,
-                                                       bool fromFunction) {
-    Reader& r = c.reader;
-    const image::EncodedImage& px = src.pixels;
-    auto texels = std::make_shared<scene::ImageTexels>();
-    texels->width = px.width;
-    texels->height = px.height;
-    const std::size_t count =
-        static_cast<std::size_t>(px.width) * static_cast<std::size_t>(px.height);
-    const int ch = px.channels;
-    const bool greyImage = ch < 3;
-    const bool hasAlpha = ch == 2 || ch == 4;
-    auto channel = [&](std::size_t p, int c) {
-        return static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
-                                             static_cast<std::size_t>(greyImage ? 0 : c)]);
-    };
-    auto alphaOf = [&](std::size_t p) {
-        return hasAlpha ? static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
-                                                        static_cast<std::size_t>(ch - 1)])
-                        : 1.0;
-    };
-
-    if (use == ImageUse::Pigment) {
-        // File values -> linear light -> the working gamma in force now.
-        // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
-        // file (PNG gAMA) gives holds working-space values, whatever the
-        // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows
-        // the file value v as v^2.2 of linear light).
-        const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
-        const bool asIs = !fileGammaKnown && r.version() < 3.7 - 1e-9;
-        const double working = c.scene.globals.assumedGammaSet ? c.scene.globals.assumedGamma : 1.0;
-        const double fileGamma = s.gamma                 ? *s.gamma
-                                 : src.declaredGamma > 0 ? src.declaredGamma
-                                                         : defaultFileGamma(s.type, s.name);
-        auto decode = [&](double v) {
-            // A function image's values are working-space values whatever
-            // the assumed_gamma (measured).
-            if (asIs || fromFunction) return v;
-            double linear = fileGamma == 0   ? srgbDecode(v)
-                            : fileGamma == 1 ? v
-                                             : std::pow(v, fileGamma);
-            return working == 1.0 ? linear : std::pow(linear, 1.0 / working);
-        };
-        // Palette images: filter and transmit per palette entry.
-        std::array<double, 256> filter{}, transmit{};
-        double filterAll = 0, transmitAll = 0;
-        for (const auto& a : s.amounts) {
-            auto& table = a.filter ? filter : transmit;
-            if (a.index >= 0) {
-                table[static_cast<std::size_t>(a.index)] = a.value;
-            } else {
-                table.fill(a.value);
-                (a.filter ? filterAll : transmitAll) = a.value;
-            }
-        }
-        texels->colors.resize(count);
-        for (std::size_t p = 0; p < count; ++p) {
-            RGB rgb(decode(channel(p, 0)), decode(channel(p, 1)), decode(channel(p, 2)));
-            const double alpha = alphaOf(p);
-            if (s.premultiplied && alpha > 0) rgb *= 1.0 / alpha;
-            double f = filterAll, t = transmitAll;
-            if (src.isPalette()) {
-                f = filter[src.indices[p]];
-                t = transmit[src.indices[p]];
-            }
-            texels->colors[p] = Color(rgb, f, t + (1.0 - alpha));
-        }
-    } else {
-        texels->values.resize(count);
-        for (std::size_t p = 0; p < count; ++p) {
-            double v;
-            if (use == ImageUse::Bump && s.useIndex && src.isPalette())
-                v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
-            else if (use == ImageUse::Material)
-                v = materialIndex(src, p);
-            else if (s.useAlpha)
-                v = 1.0 - alphaOf(p);
-            else
-                v = grey(channel(p, 0), channel(p, 1), channel(p, 2));
-            texels->values[p] = static_cast<float>(v);
+// working gamma), scalars for the others, read from the file's pixels.
+static std::shared_ptr<const scene::ImageTexels> imageTexels(BuildContext& c,
+                                                             const image::SourceImage& src,
+                                                             const ImageSettings& s, ImageUse use,
+                                                             bool fromFunction) {
+    if (use != ImageUse::Pigment) {
+        using Scalar = scene::ImageTexels::Scalar;
+        const Scalar scalar = use == ImageUse::Bump && s.useIndex && src.isPalette() ? Scalar::Index
+                              : use == ImageUse::Material ? Scalar::MaterialIndex
+                              : s.useAlpha                ? Scalar::Alpha
+                                                          : Scalar::Grey;
+        return std::make_shared<const scene::ImageTexels>(src.pixels, scalar);
+    }
+    // File values -> linear light -> the working gamma in force now.
+    scene::ImageTexels::ColorDecoding d;
+    // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
+    // file (PNG gAMA) gives holds working-space values, whatever the
+    // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows the
+    // file value v as v^2.2 of linear light). A function image's values are
+    // working-space values whatever the assumed_gamma (measured).
+    const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
+    d.asStored = (!fileGammaKnown && c.reader.version() < 3.7 - 1e-9) || fromFunction;
+    d.workingGamma = c.scene.globals.assumedGammaSet ? c.scene.globals.assumedGamma : 1.0;
+    d.fileGamma = s.gamma                 ? *s.gamma
+                  : src.declaredGamma > 0 ? src.declaredGamma
+                                          : defaultFileGamma(s.type, s.name);
+    d.premultiplied = s.premultiplied;
+    // Palette images: filter and transmit per palette entry.
+    for (const auto& a : s.amounts) {
+        auto& table = a.filter ? d.paletteFilter : d.paletteTransmit;
+        if (a.index >= 0) {
+            table[static_cast<std::size_t>(a.index)] = a.value;
+        } else {
+            table.fill(a.value);
+            (a.filter ? d.filterAll : d.transmitAll) = a.value;
         }
     }
-    return texels;
+    return std::make_shared<const scene::ImageTexels>(src.pixels, d);
 }
 
 std::shared_ptr<const scene::ImageMap> parseImageBlock(

@@ -329,19 +329,23 @@ namespace {
 // povray 3.7's heights from an image's pixels (measured with trace()):
 // grey values as 16 bits (8-bit v as v * 257), colour pixels as red * 256 +
 // green for 8-bit images.
-std::vector<uint16_t> heightsFromImage(const image::EncodedImage& img) {
-    std::vector<uint16_t> out(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
-    const bool grey = img.channels < 3;
-    const bool deep = img.bitDepth > 8;
-    for (size_t p = 0; p < out.size(); ++p) {
-        const float* px = &img.values[p * static_cast<size_t>(img.channels)];
-        if (deep) {
-            out[p] = static_cast<uint16_t>(std::lround(std::clamp(px[0], 0.0f, 1.0f) * 65535.0f));
-        } else {
-            const long r = std::lround(std::clamp(px[0], 0.0f, 1.0f) * 255.0f);
-            const long g = grey ? r : std::lround(std::clamp(px[1], 0.0f, 1.0f) * 255.0f);
+std::vector<uint16_t> heightsFromImage(const util::PixelBuffer& img) {
+    std::vector<uint16_t> out(img.pixelCount());
+    if (img.isPalette()) {
+        // Palette images (GIF, palette PNG): the colour index is the
+        // height, as the high byte (seed 003: index 0 lowest, 255 highest).
+        for (size_t p = 0; p < out.size(); ++p) out[p] = static_cast<uint16_t>(img.index(p) * 256);
+        return out;
+    }
+    const bool grey = img.channels() < 3;
+    if (img.sample() == util::PixelBuffer::Sample::U8) {
+        for (size_t p = 0; p < out.size(); ++p) {
+            const uint32_t r = img.level(p, 0), g = grey ? r : img.level(p, 1);
             out[p] = static_cast<uint16_t>(r * 256 + g);
         }
+    } else {
+        // 16 bits and floats (clamped to [0,1], scaled to 16 bits).
+        for (size_t p = 0; p < out.size(); ++p) out[p] = static_cast<uint16_t>(img.level(p, 0));
     }
     return out;
 }
@@ -420,36 +424,30 @@ void parseHeightFieldBody(BuildContext& c, const Token&, ObjectValue& object) {
         const std::string name = r.parsePathname();
         // The same per-frame image cache as image maps (parse_image_map.cpp).
         const image::SourceImage& source = loadSourceImage(c, name, nameAt);
-        const image::EncodedImage& img = source.pixels;
-        if (img.width < 2 || img.height < 2)
+        if (source.width() < 2 || source.height() < 2)
             r.fail(nameAt, "a height_field image must be at least 2 x 2 pixels");
-        width = img.width;
-        height = img.height;
+        width = source.width();
+        height = source.height();
         if (pot) {
             // Fractint's continuous-potential file: a GIF twice as wide as
             // the field, each row's left half the heights' high bytes and
             // its right half their low bytes (seed 003: "a GIF file with a
             // 16 bit palette").
-            if (!source.isPalette() || img.width % 2 != 0)
+            if (!source.isPalette() || source.width() % 2 != 0)
                 r.fail(nameAt, "a pot file must be a GIF image of even width");
-            width = img.width / 2;
+            const util::PixelBuffer& px = *source.pixels;
+            width = source.width() / 2;
             heights.resize(static_cast<size_t>(width) * static_cast<size_t>(height));
             for (int j = 0; j < height; ++j)
                 for (int i = 0; i < width; ++i) {
-                    const size_t row = static_cast<size_t>(j) * static_cast<size_t>(img.width);
+                    const size_t row = static_cast<size_t>(j) * static_cast<size_t>(px.width());
                     heights[static_cast<size_t>(j) * static_cast<size_t>(width) +
                             static_cast<size_t>(i)] =
-                        static_cast<uint16_t>(source.indices[row + static_cast<size_t>(i)] * 256 +
-                                              source.indices[row + static_cast<size_t>(i + width)]);
+                        static_cast<uint16_t>(px.index(row + static_cast<size_t>(i)) * 256 +
+                                              px.index(row + static_cast<size_t>(i + width)));
                 }
-        } else if (source.isPalette()) {
-            // Palette images (GIF): the colour index is the height, as the
-            // high byte (seed 003: index 0 lowest, 255 highest).
-            heights.resize(source.indices.size());
-            for (size_t p = 0; p < heights.size(); ++p)
-                heights[p] = static_cast<uint16_t>(source.indices[p] * 256);
         } else {
-            heights = heightsFromImage(img);
+            heights = heightsFromImage(*source.pixels);
         }
     }
     bool smooth = false;
