@@ -218,7 +218,7 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
                                          counts.mediaSamples, counts.shadow);
     if (state.transmit) {
         const RGB& k = m.transmittance;
-        *state.transmit *= 0.297 * k.r + 0.589 * k.g + 0.114 * k.b;
+        *state.transmit *= grey(k);
     }
     return color * m.transmittance + m.light;
 }
