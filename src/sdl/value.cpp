@@ -62,8 +62,8 @@ void ArrayValue::set(size_t i, Value value) {
         values_.resize(size_);
         for (size_t k = 0; k < floatSet_.size(); ++k)
             if (floatSet_[k]) values_[k] = floats_[k];
-        floats_ = {};
-        floatSet_ = {};
+        std::vector<double>().swap(floats_);  // freed, not only emptied
+        std::vector<bool>().swap(floatSet_);
     }
     values_[i] = std::move(value);
 }

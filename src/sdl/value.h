@@ -112,9 +112,9 @@ class ArrayValue {
     void reset(size_t count) {
         size_ = count;
         kind_ = nullptr;
-        floats_ = {};
-        floatSet_ = {};
-        values_ = {};
+        std::vector<double>().swap(floats_);
+        std::vector<bool>().swap(floatSet_);
+        std::vector<Value>().swap(values_);
     }
     size_t size() const { return size_; }
     // valueKindName of the elements set so far; null while none is set.
