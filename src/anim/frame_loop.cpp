@@ -311,6 +311,11 @@ class Run {
 
   private:
     int executeRun() {
+        // povray says it in every frame's parse (a beta feature's notice).
+        if (o_.realTimeRaytracing)
+            say(TextStream::Warning,
+                "frameray: warning: Real_Time_Raytracing: every frame renders once and no image "
+                "is written (as povray 3.7 does without a display)\n");
         if (toFiles_ && !seq_.frames.empty()) {
             std::error_code ec;
             // Every frame and the journal are in the same folder, created
@@ -1018,8 +1023,8 @@ class Run {
     // Output_File_Name=- (+O-): the images go to standard output, one
     // after another in frame order (povray writes them there too); no
     // files, journal, frame logs or sequence.json then.
-    const bool toStdout_ = o_.outputToFile && o_.outputFile == "-";
-    const bool toFiles_ = o_.outputToFile && !toStdout_;
+    const bool toStdout_ = o_.writesImages() && o_.outputFile == "-";
+    const bool toFiles_ = o_.writesImages() && !toStdout_;
 
     // povray writes grey PNG files with 16 bits whatever the depth asked
     // (measured: Grayscale_Output with +FN8 gives a 16-bit grey PNG).
@@ -1088,7 +1093,7 @@ int runSequence(const options::RenderOptions& o, const Sequence& seq) {
     // The image module (OpenImageIO) loads on another core while the first
     // frame parses (image/codecs.h).
     // PNG frames are written without it (image/png_writer.h).
-    if (o.outputToFile && !seq.frames.empty() && seq.fileType != image::FileType::PNG)
+    if (o.writesImages() && !seq.frames.empty() && seq.fileType != image::FileType::PNG)
         image::preloadCodecs();
     if (seq.frames.empty()) {
         // More shards than frames: nothing is this shard's.

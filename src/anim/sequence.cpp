@@ -150,7 +150,7 @@ int windowEnd(double v, int size) {
 }  // namespace
 
 void checkOutputFolder(const options::RenderOptions& o, const Sequence& seq) {
-    if (!o.outputToFile || seq.frames.empty() || o.outputFile == "-" ||
+    if (!o.writesImages() || seq.frames.empty() || o.outputFile == "-" ||
         (!o.outputFile.empty() && o.outputFile.back() == '/'))
         return;
     const fs::path folder = seq.frames.front().output.parent_path();

@@ -705,11 +705,10 @@ const OptionSpec kOptions[] = {
      },
      nullptr},
     {"Real_Time_Raytracing", "RTR", OptionType::Bool, "off",
-     "Render the first frame over and over into the preview window (POV-Ray 3.7 beta feature).",
-     acceptBool, nullptr,
-     [](const RenderOptions& o) -> const char* {
-         return acceptedOn(o, "Real_Time_Raytracing") ? "real-time raytracing" : nullptr;
-     }},
+     "POV-Ray 3.7's beta render loop into the preview window: without a display (as always in "
+     "frameray) every frame renders once and no image is written, as povray does.",
+     [](RenderOptions& o, const OptionInput& in) { o.realTimeRaytracing = toBool(in); },
+     FR_WRITE(onOff(o.realTimeRaytracing)), nullptr},
     FR_ACCEPTED("Remove_Bounds", "UR", Bool, "on",
                 "Remove bounded_by from scenes that do not need it (no effect: POV-Ray 3.7 "
                 "ignores it).",

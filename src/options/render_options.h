@@ -52,6 +52,11 @@ struct RenderOptions {
     std::string inputFile;
     std::string outputFile;  // empty: scene name in the working folder
     bool outputToFile = true;
+    // Real_Time_Raytracing (+RTR): povray 3.7's beta render loop. Without a
+    // display povray renders every frame once and writes no image; so does
+    // frameray (it has no display).
+    bool realTimeRaytracing = false;
+    bool writesImages() const { return outputToFile && !realTimeRaytracing; }
     char outputType = 'N';  // N P T C E H J B
     int bitDepth = 8;       // bits per colour channel (Bits_Per_Color, +FN16)
     bool outputAlpha = false;

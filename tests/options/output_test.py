@@ -189,6 +189,16 @@ def main():
     if p.returncode == 0 or b"cannot open include header file 'nope.inc'" not in p.stderr:
         failures.append(f"Include_Header missing: exit {p.returncode}: {p.stderr.decode()}")
 
+    # Real_Time_Raytracing (+RTR): povray 3.7.0.10 without a display renders
+    # every frame once, writes no image and warns of a beta feature.
+    rtr = os.path.join(scratch, "rtr")
+    os.makedirs(rtr)
+    p = subprocess.run([frameray, os.path.join(scratch, "header.pov"), "+W4", "+H4", "+KFI1",
+                        "+KFF3", "+RTR", "+HIhead.inc", "+L" + os.path.join(scratch, "lib"),
+                        "+O" + rtr + "/"], cwd=scratch, env=env, capture_output=True)
+    if p.returncode != 0 or os.listdir(rtr) or b"Real_Time_Raytracing" not in p.stderr:
+        failures.append(f"+RTR: exit {p.returncode}, files {os.listdir(rtr)}: {p.stderr.decode()}")
+
     for f in failures:
         print("FAIL:", f)
     print("output_test:", "ok" if not failures else f"{len(failures)} failures")

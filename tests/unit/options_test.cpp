@@ -588,6 +588,7 @@ TEST(Options, OldAndPreviewKeysAreAcceptedAndWrittenBack) {
         {"+KLA", "Clockless_Animation=On"},
         {"+HR", "High_Reproducibility=On"},
         {"-RTR", "Real_Time_Raytracing=Off"},
+        {"+RTR", "Real_Time_Raytracing=On"},
         {"+WL3", "Warning_Level=3"},
         {"+RFfoo", "Radiosity_File_Name=\"foo\""},
         {"-RFI", "Radiosity_From_File=Off"},
@@ -654,7 +655,9 @@ TEST(Options, IncludeIniAndBareIniNames) {
 }
 
 TEST(Options, UnsupportedNewValuesAreNamed) {
-    EXPECT_NE(firstUnsupported(parse({"+RTR"})).find("Real_Time_Raytracing"), std::string::npos);
+    EXPECT_EQ(firstUnsupported(parse({"+RTR"})), "");  // frames render, no image is written
+    EXPECT_FALSE(parse({"+RTR"}).writesImages());
+    EXPECT_TRUE(parse({"+RTR", "-RTR"}).writesImages());
     EXPECT_NE(firstUnsupported(parse({"+RFI"})).find("Radiosity_From_File"), std::string::npos);
     EXPECT_NE(firstUnsupported(parse({"Radiosity_To_File=on"})).find("Radiosity_To_File"),
               std::string::npos);
