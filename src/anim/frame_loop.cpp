@@ -38,6 +38,7 @@
 #include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
+#include "render/radiosity_file.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -236,6 +237,8 @@ struct Job {
     std::uint64_t fileHash = 0;
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
+    // The frame's radiosity samples, for Radiosity_To_File (stage 3).
+    std::vector<render::RadiositySample> radiosityCache;
     bool failed = false;  // the log holds the fatal message
     std::string failure;  // ... and this is it (for the run log)
     // The parse stopped on a file that an earlier frame of this run writes
@@ -435,6 +438,10 @@ class Run {
         // renders alone (its tiles still use every core) and its growth
         // of the process is the estimate for the others.
         const bool measureFirst = inFlight_ > 1 && seq_.frames.size() > 1;
+        // Radiosity_Stable: the first frame seeds the others' caches, so it
+        // renders before any other starts.
+        const bool stableFirst = o_.radiosityStable && !measureFirst && inFlight_ > 1;
+        if (stableFirst) pipelinePhase(1, 1);
         if (measureFirst) {
             const std::uint64_t before = residentBytes();
             pipelinePhase(1, 1);
@@ -447,7 +454,8 @@ class Run {
                       {"memory_budget_bytes", memoryBudget_},
                       {"frames_in_flight", inFlight_}});
         }
-        if (!measureFirst || (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
+        if (!(measureFirst || stableFirst) ||
+            (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
             pipelinePhase(inFlight_, std::numeric_limits<size_t>::max());
         wallSeconds_ = secondsSince(runStart_);
         cpuSecondsUsed_ = cpuSeconds() - cpuStart_;
@@ -673,6 +681,32 @@ class Run {
         return f;
     }
 
+    // What a frame's radiosity starts from and keeps: the cache file's
+    // samples (Radiosity_From_File, read once); under Radiosity_Stable the
+    // first frame rendered (alone: runPipeline's first phase) also keeps
+    // its whole cache, and every later frame starts from it. Returns
+    // whether this frame seeds the later ones.
+    bool radiosityCarry(render::FrameSettings& settings) {
+        if (o_.radiosityFromFile) {
+            std::call_once(radiosityFileRead_, [this] {
+                radiosityFile_ = std::make_shared<const std::vector<render::RadiositySample>>(
+                    render::readRadiosityFile(o_.radiosityFile));
+            });
+            settings.radiosityStart = radiosityFile_;
+        }
+        const bool seeds = o_.radiosityStable && !radiosityStableStarted_.exchange(true);
+        if (o_.radiosityStable && !seeds && radiosityStable_)
+            settings.radiosityStart = radiosityStable_;
+        settings.keepRadiosity = seeds || o_.radiosityToFile;
+        return seeds;
+    }
+    void keepRadiosity(Job& job, render::FrameImage& image, bool seeds) {
+        if (seeds)
+            radiosityStable_ = std::make_shared<const std::vector<render::RadiositySample>>(
+                o_.radiosityToFile ? image.radiosityCache : std::move(image.radiosityCache));
+        if (o_.radiosityToFile) job.radiosityCache = std::move(image.radiosityCache);
+    }
+
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
         if (job.kind != Job::Kind::Render || job.failed || job.deferred || decided_ ||
@@ -688,9 +722,11 @@ class Run {
             const auto gamma = image::GammaEncoding::forScene(
                 job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
                 job.scene->languageVersion, o_.fileGamma);
-            const render::FrameSettings settings = frameSettings(gamma);
+            render::FrameSettings settings = frameSettings(gamma);
             if (settings.alpha) refuseAlphaWith(*job.scene);
-            const render::FrameImage image = render::renderFrame(world, settings, job.stats);
+            const bool seeds = radiosityCarry(settings);
+            render::FrameImage image = render::renderFrame(world, settings, job.stats);
+            keepRadiosity(job, image, seeds);
             job.shapeTests = world.shapeTests();
             job.renderSeconds = secondsSince(start);
             // Encoding, compression and the flush to disk happen here, in
@@ -814,6 +850,14 @@ class Run {
             }
             job.commitSeconds = secondsSince(start);
             job.writeSeconds += job.commitSeconds;
+        }
+        if (!job.failed && o_.radiosityToFile) {
+            try {
+                render::writeRadiosityFile(o_.radiosityFile, job.radiosityCache);
+            } catch (const std::exception& e) {
+                failJob(job, fmt::format("error: frame {}: {}", frame.number, e.what()));
+            }
+            job.radiosityCache = {};
         }
         if (job.failed) {
             logEvent(LogLevel::Error, "failed",
@@ -1073,6 +1117,11 @@ class Run {
     std::deque<std::unique_ptr<Job>> jobs_;
     size_t head_ = 0;
     std::mutex decideMutex_;
+    std::once_flag radiosityFileRead_;
+    std::shared_ptr<const std::vector<render::RadiositySample>> radiosityFile_;
+    // Radiosity_Stable: whether the seeding frame has started, and its cache.
+    std::atomic<bool> radiosityStableStarted_{false};
+    std::shared_ptr<const std::vector<render::RadiositySample>> radiosityStable_;
     std::atomic<bool> decided_{false};
     Outcome outcome_;
 

@@ -200,9 +200,6 @@ void acceptBool(RenderOptions& o, const OptionInput& in) {
 void acceptInt(RenderOptions& o, const OptionInput& in) {
     o.acceptedValues[std::string(in.key)] = num(toInt(in.value));
 }
-void acceptPath(RenderOptions& o, const OptionInput& in) {
-    o.acceptedValues[std::string(in.key)] = quoted(trimQuotes(in.value));
-}
 // A one-letter setting (Palette, Video_Mode); povray keeps the first
 // letter, in lower case.
 void acceptLetter(RenderOptions& o, const OptionInput& in) {
@@ -675,19 +672,25 @@ const OptionSpec kOptions[] = {
          o.quality = std::clamp(toInt(in.value), 0, 11);
      },
      FR_WRITE(num(o.quality))},
-    FR_ACCEPTED("Radiosity_File_Name", "RF", Path, "scene name",
-                "Radiosity cache file for Radiosity_From_File / Radiosity_To_File.", acceptPath,
-                "frameray does not read or write radiosity cache files yet"),
+    {"Radiosity_File_Name", "RF", OptionType::Path, "object.rca",
+     "Radiosity cache file for Radiosity_From_File / Radiosity_To_File (frameray's own format).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityFile = trimQuotes(in.value); },
+     FR_WRITE(quoted(o.radiosityFile)), nullptr},
     {"Radiosity_From_File", "RFI", OptionType::Bool, "off",
-     "Start radiosity from the cache file instead of a pretrace.", acceptBool, nullptr,
-     [](const RenderOptions& o) -> const char* {
-         return acceptedOn(o, "Radiosity_From_File") ? "radiosity cache files" : nullptr;
-     }},
-    {"Radiosity_To_File", "RFO", OptionType::Bool, "off", "Save the radiosity cache to the file.",
-     acceptBool, nullptr,
-     [](const RenderOptions& o) -> const char* {
-         return acceptedOn(o, "Radiosity_To_File") ? "radiosity cache files" : nullptr;
-     }},
+     "Start every frame's radiosity from the samples in the cache file (the pretrace still runs "
+     "and adds samples where the file has too few).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityFromFile = toBool(in); },
+     FR_WRITE(onOff(o.radiosityFromFile)), nullptr},
+    {"Radiosity_Stable", "", OptionType::Bool, "off",
+     "frameray: in an animation, every frame after the first starts its radiosity from the first "
+     "frame's samples, so a static scene under a moving camera does not flicker (for scenes whose "
+     "objects and lights do not move).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityStable = toBool(in); },
+     FR_WRITE(onOff(o.radiosityStable)), nullptr},
+    {"Radiosity_To_File", "RFO", OptionType::Bool, "off",
+     "Save each frame's radiosity samples to the cache file (the last frame's stay).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityToFile = toBool(in); },
+     FR_WRITE(onOff(o.radiosityToFile)), nullptr},
     FR_ACCEPTED("Radiosity_Vain_Pretrace", "RVP", Bool, "on",
                 "Show the radiosity pretrace in the preview (no effect on the image).", acceptBool,
                 kNoPreview),

@@ -124,6 +124,14 @@ struct RenderOptions {
     bool testAbort = false;
     int testAbortCount = 1;
     std::string createIni;  // Create_Ini (+GI): write the effective options here
+    // Radiosity cache files (Radiosity_File_Name, _From_File, _To_File;
+    // povray's default name is object.rca, measured) and frameray's
+    // Radiosity_Stable: every frame after the first starts from the first
+    // frame's cache.
+    std::string radiosityFile = "object.rca";
+    bool radiosityFromFile = false;
+    bool radiosityToFile = false;
+    bool radiosityStable = false;
     LogLevel logLevel = LogLevel::Info;
     LogFormat logFormat = LogFormat::Text;
     // What reading the options warned of (also said on the console before
