@@ -210,10 +210,6 @@ void acceptLetter(RenderOptions& o, const OptionInput& in) {
 }
 // POV-Ray 3.6 options 3.7 dropped: read, not checked, not written back.
 void acceptObsolete(RenderOptions&, const OptionInput&) {}
-bool acceptedOn(const RenderOptions& o, std::string_view key) {
-    const auto it = o.acceptedValues.find(key);
-    return it != o.acceptedValues.end() && it->second == "On";
-}
 Lines writeNothing(const RenderOptions&) {
     return {};
 }
