@@ -654,6 +654,13 @@ class Run {
                 TextStream::Statistic,
                 fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n", frame.number,
                             seconds, job.stats.rays.camera, job.stats.rays.shadow));
+            if (job.stats.rays.radiosity)
+                log.message(
+                    TextStream::Statistic,
+                    fmt::format("frame {}: radiosity: {} rays, {} samples gathered ({} for "
+                                "radiosity rays), {} lookups answered from the cache\n",
+                                frame.number, job.stats.rays.radiosity, job.stats.radiosity.samples,
+                                job.stats.radiosity.deeper, job.stats.radiosity.reused));
         }
         // The image is complete and journalled already: a log that cannot
         // be written ends the run but keeps the frame.

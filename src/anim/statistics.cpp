@@ -13,8 +13,8 @@ namespace {
 std::string jsonRays(const render::RayCounts& r) {
     return fmt::format(
         "{{\"camera\": {}, \"shadow\": {}, \"reflection\": {}, \"refraction\": {}, "
-        "\"transmission\": {}, \"media_samples\": {}}}",
-        r.camera, r.shadow, r.reflection, r.refraction, r.transmission, r.mediaSamples);
+        "\"transmission\": {}, \"media_samples\": {}, \"radiosity\": {}}}",
+        r.camera, r.shadow, r.reflection, r.refraction, r.transmission, r.mediaSamples, r.radiosity);
 }
 
 std::string jsonTests(const render::ShapeTestCounts& tests) {
@@ -27,7 +27,7 @@ std::string jsonTests(const render::ShapeTestCounts& tests) {
 }
 
 std::uint64_t totalRays(const render::RayCounts& r) {
-    return r.camera + r.shadow + r.reflection + r.refraction + r.transmission;
+    return r.camera + r.shadow + r.reflection + r.refraction + r.transmission + r.radiosity;
 }
 
 }  // namespace
@@ -144,8 +144,10 @@ std::string summaryTable(const RunFigures& run, const std::vector<FrameRecord>& 
     row("CPU", fmt::format("{:.2f} s ({:.0f}% of {} threads, {} frames in flight)", run.cpuSeconds,
                            utilisation, run.workThreads, run.framesInFlight));
     row("rays",
-        fmt::format("{} (camera {}, shadow {}, reflection {}, refraction {}, transmission {})", all,
-                    rays.camera, rays.shadow, rays.reflection, rays.refraction, rays.transmission));
+        fmt::format("{} (camera {}, shadow {}, reflection {}, refraction {}, transmission {}, "
+                    "radiosity {})",
+                    all, rays.camera, rays.shadow, rays.reflection, rays.refraction,
+                    rays.transmission, rays.radiosity));
     row("rays/s", fmt::format("{:.0f}", perSecond));
     return out;
 }

@@ -55,7 +55,10 @@ struct GridSampler {
         if (dist == 0) return light.color;
         dir = dir / dist;
         ++shadowRays;
-        return light.color * world.shadowFilter({p, dir}, selfHit, dist, selfHit, &light);
+        // The ray stops short of the light by the self-hit margin: a light
+        // placed on a surface lights the room, as in povray (the Cornell
+        // box's lamps sit in the ceiling's plane).
+        return light.color * world.shadowFilter({p, dir}, selfHit, dist - selfHit, selfHit, &light);
     }
 };
 
@@ -152,8 +155,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
         light.isArea && quality.areaLights && (light.area.size1 > 1 || light.area.size2 > 1);
     if (!sampleArea) {
         ++shadowRays;
-        return color *
-               world.shadowFilter({p, path.toLight}, selfHit, path.distance, selfHit, &light);
+        return color * world.shadowFilter({p, path.toLight}, selfHit, path.distance - selfHit,
+                                          selfHit, &light);
     }
 
     const scene::AreaLight& area = light.area;

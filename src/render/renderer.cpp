@@ -8,6 +8,7 @@
 
 #include "render/camera_rays.h"
 #include "render/focal_blur.h"
+#include "render/radiosity_pretrace.h"
 
 namespace frameray::render {
 
@@ -25,8 +26,19 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     const int blocksX = (window.x1 - window.x0 + blockSize - 1) / blockSize;
     const int blocksY = (window.y1 - window.y0 + blockSize - 1) / blockSize;
 
-    const Tracer tracer(world, settings.quality);
+    // Radiosity (from +Q9, as povray) only when the scene declares it:
+    // otherwise nothing is pretraced and no radiosity ray is traced.
+    std::unique_ptr<Radiosity> radiosity;
+    const scene::Scene& scene = world.scene();
+    if (scene.globals.radiosity && settings.quality >= 9)
+        radiosity = std::make_unique<Radiosity>(*scene.globals.radiosity, scene.camera.location,
+                                                scene.languageVersion < 3.7 - 1e-9);
+    const Tracer tracer(world, settings.quality, radiosity.get());
     const CameraRays camera(world.scene().camera, settings.width, settings.height);
+    if (radiosity)
+        pretraceRadiosity(tracer, camera, *radiosity, window, settings.width, stats.rays,
+                          stats.radiosity);
+    tbb::combinable<RadiosityCounts> radiosityCounts;
     std::optional<FocalBlurSampler> focalBlur;
     if (camera.camera().blur.enabled()) focalBlur.emplace(camera);
     tbb::combinable<RayCounts> rayCounts;
@@ -41,6 +53,7 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
         [&](const tbb::blocked_range<int>& range) {
             RayCounts& rays = rayCounts.local();
             AntialiasCounts& aa = aaCounts.local();
+            RadiosityTask* blockRadiosity = nullptr;  // this block's access to the cache
             const SampleFunction sample = [&](double x, double y) {
                 // (x, y) = (i, j) is the centre of pixel column i, row j.
                 if (focalBlur) {
@@ -50,11 +63,12 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                             x + 0.5, y + 0.5,
                             std::function<PixelSample(const scene::Ray&)>([&](const scene::Ray& r) {
                                 double transmit = 0;
-                                const RGB c = tracer.traceCamera(r, rays, &transmit);
+                                const RGB c =
+                                    tracer.traceCamera(r, rays, &transmit, blockRadiosity);
                                 return PixelSample{c, transmit};
                             }));
                     return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
-                        return tracer.traceCamera(r, rays);
+                        return tracer.traceCamera(r, rays, nullptr, blockRadiosity);
                     });
                 }
                 if (std::vector<scene::Ray> meshRays; camera.meshRays(x + 0.5, y + 0.5, meshRays)) {
@@ -76,16 +90,21 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                 if (!ray) return PixelSample{RGB{}, 1.0};
                 if (settings.alpha) {
                     double transmit = 0;
-                    const RGB c = tracer.traceCamera(*ray, rays, &transmit);
+                    const RGB c = tracer.traceCamera(*ray, rays, &transmit, blockRadiosity);
                     return PixelSample{c, transmit};
                 }
-                return PixelSample{tracer.traceCamera(*ray, rays), 0.0};
+                return PixelSample{tracer.traceCamera(*ray, rays, nullptr, blockRadiosity), 0.0};
             };
             for (int index = range.begin(); index < range.end(); ++index) {
                 const int bx = window.x0 + (index % blocksX) * blockSize;
                 const int by = window.y0 + (index / blocksX) * blockSize;
                 const PixelBlock block{bx, by, std::min(bx + blockSize, window.x1),
                                        std::min(by + blockSize, window.y1)};
+                // A block sees the pretrace's samples and its own, never
+                // another block's: the image does not depend on the threads.
+                std::optional<RadiosityTask> task;
+                if (radiosity) task.emplace(*radiosity, false, false);
+                blockRadiosity = task ? &*task : nullptr;
                 const std::vector<PixelSample> pixels =
                     sampleBlock(block, settings.antialias, sample, aa);
                 size_t i = 0;
@@ -100,10 +119,12 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                             image.alpha[static_cast<size_t>(y) * settings.width + x] =
                                 static_cast<float>(std::clamp(1.0 - pixels[i].transmit, 0.0, 1.0));
                     }
+                if (task) radiosityCounts.local() += task->counts;
             }
         },
         tbb::simple_partitioner());
     rayCounts.combine_each([&](const RayCounts& c) { stats.rays += c; });
+    radiosityCounts.combine_each([&](const RadiosityCounts& c) { stats.radiosity += c; });
     aaCounts.combine_each([&](const AntialiasCounts& c) {
         stats.antialias.supersampledPixels += c.supersampledPixels;
         stats.antialias.samples += c.samples;

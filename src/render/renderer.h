@@ -41,6 +41,7 @@ struct FrameImage {
 struct FrameStats {
     RayCounts rays;
     AntialiasCounts antialias;
+    RadiosityCounts radiosity;
 };
 
 FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameStats& stats);

@@ -7,6 +7,7 @@
 
 #include "render/lighting.h"
 #include "render/optics.h"
+#include "render/photons.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
@@ -80,13 +81,15 @@ void InteriorStack::remove(const void* key) {
     }
 }
 
-Tracer::Tracer(const World& world, int quality)
+Tracer::Tracer(const World& world, int quality, const Radiosity* radiosity)
     : world_(world),
       scene_(world.scene()),
       atmosphere_(world.scene(), quality >= 9),
       lighting_(LightingQuality::forQuality(quality)),
+      radiosityLighting_{lighting_.shadows, false},
       secondaryRays_(quality >= 8),
       media_(quality >= 9),
+      radiosity_(radiosity),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
       opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
@@ -102,11 +105,14 @@ Tracer::Tracer(const World& world, int quality)
     }
 }
 
-RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit) const {
+RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit,
+                        RadiosityTask* radiosity) const {
     ++counts.camera;
     State state;
     state.inside = cameraInside_;
     state.transmit = transmit;
+    state.radiosity.task = radiosity;
+    state.radiosity.origin = scene_.camera.location;
     return trace(ray, 0.0, state, counts);
 }
 
@@ -114,7 +120,10 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     Hit hit;
     const InteriorStack::Region* medium = state.inside.innermost();
     const bool fades = medium && medium->interior && medium->interior->fades();
-    if (!world_.intersect(ray, tMin, scene::kInfinity, hit, state.kind)) {
+    const bool found = world_.intersect(ray, tMin, scene::kInfinity, hit, state.kind);
+    if (state.hitDistance)
+        *state.hitDistance = found ? hit.t * length(ray.direction) : scene::kInfinity;
+    if (!found) {
         if (state.transmit) {
             // Alpha output, seen straight or through surfaces: a 3.7
             // scene's sky (sky sphere over background, whose default is
@@ -219,7 +228,8 @@ RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv
 // pigment at the point is `surface`, shaded with the normal n.
 RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
-                       const RGB& fade, RayCounts& counts) const {
+                       const RGB& fade, RayCounts& counts, const RGB* gathered,
+                       bool radiosityRay) const {
     const scene::Finish& fin = tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
@@ -231,7 +241,14 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     const double opacity = 1.0 - seeThrough;
     const RGB lit = pigment * opacity;
 
-    RGB color = (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
+    // Under radiosity the gathered light takes the place of ambient light,
+    // reflected as diffuse light; povray 3.7 ignores `ambient` then, older
+    // scenes keep it as a glow (measured).
+    RGB color = radiosity_ ? fin.emission * lit
+                           : (fin.ambient * scene_.globals.ambientLight + fin.emission) * lit;
+    if (radiosity_ && radiosity_->legacyAmbient())
+        color += fin.ambient * scene_.globals.ambientLight * lit;
+    if (gathered) color += *gathered * lit * fin.diffuse;
 
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
     // crand: povray darkens each light's diffuse term by crand times a
@@ -243,6 +260,12 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
+    if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
+        // Caustics: the photons' light, diffused like a light's head-on
+        // (render/photons.h).
+        thread_local std::vector<PhotonNeighbour> scratch;
+        color += photons->irradiance(p, n, scratch) * lit * (fin.diffuse) * fade;
+    }
     for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
@@ -266,7 +289,9 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         }
         if (cosIncidence <= 0) continue;
         RGB lightColor =
-            lightArriving(world_, light, p, path, eps, lighting_, counts.shadow) * fade;
+            lightArriving(world_, light, p, path, eps,
+                          radiosityRay ? radiosityLighting_ : lighting_, counts.shadow) *
+            fade;
         if (lightColor.isBlack()) continue;
         if (irid)
             lightColor =
@@ -281,7 +306,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         }
         if (fromBehind) continue;
         // povray 3.7: shadowless lights give no highlights.
-        if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless) {
+        if ((fin.phong > 0 || fin.specular > 0) && !light.shadowless && !radiosityRay) {
             // Metallic highlights take the pigment's colour, except where
             // the light grazes the surface.
             const RGB tint = metallicTint(fin.metallic, cosIncidence, pigment);
@@ -407,6 +432,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         child.kind = scene::RayKind::Reflection;
         child.inside = state.inside;
         child.band = state.band;
+        child.radiosity = state.radiosity;
         if (child.weight < adcBailout) return RGB(0.0);
         ++counts.reflection;
         return trace({p, reflected}, eps, child, counts);
@@ -426,6 +452,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     RGB reflectivity(0.0);
     Vec3 n = geometric;
     RGB pigment(0.0);
+    std::optional<RGB> radiosityHere;
     const size_t layerCount = 1 + top.layersBelow.size();
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
@@ -445,7 +472,18 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
                                   ? *quick
                                   : tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         pigment = surface.rgb;
-        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts);
+        // The radiosity light, gathered once for the point (with the
+        // unperturbed normal: radiosity's `normal` is off) for the layers
+        // that reflect diffuse light.
+        const RGB* gathered = nullptr;
+        if (radiosity_ && fin.diffuse > 0) {
+            if (!radiosityHere)
+                radiosityHere = radiosityLight(p, radiosity_->settings().normal ? n : geometric,
+                                               obj, eps, state, counts);
+            gathered = &*radiosityHere;
+        }
+        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts,
+                                     gathered, state.radiosity.ray);
         color += i == 0 ? local : through * local;
 
         if (spawns && fin.reflection.any()) {
@@ -491,6 +529,7 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     child.kind = state.kind;
     child.inside = c.beyond;
     child.band = state.band;
+    child.radiosity = state.radiosity;
     double childTransmit = 0;
     if (state.transmit) child.transmit = &childTransmit;
     // What the continued ray reports, through this surface's layers.

@@ -11,6 +11,7 @@
 #include "render/dispersion.h"
 #include "render/lighting.h"
 #include "render/media.h"
+#include "render/radiosity.h"
 #include "render/world.h"
 #include "util/color.h"
 
@@ -24,6 +25,7 @@ struct RayCounts {
     uint64_t refraction = 0;    // transmitted rays bent at a change of ior
     uint64_t transmission = 0;  // transmitted rays that go straight on (same ior both sides)
     uint64_t mediaSamples = 0;  // points where media were evaluated (render/media.h)
+    uint64_t radiosity = 0;     // rays gathering light for radiosity samples
 
     RayCounts& operator+=(const RayCounts& o) {
         camera += o.camera;
@@ -32,6 +34,7 @@ struct RayCounts {
         refraction += o.refraction;
         transmission += o.transmission;
         mediaSamples += o.mediaSamples;
+        radiosity += o.radiosity;
         return *this;
     }
 };
@@ -74,13 +77,18 @@ class Tracer {
     // `quality` is the +Q level: shadows from 4, area lights from 5,
     // reflection and transmission from 8, rainbows and fogs from 9
     // (povray 3.7).
-    explicit Tracer(const World& world, int quality = 9);
+    // `radiosity`: the frame's radiosity when it computes it (the scene
+    // declares radiosity and quality is 9 or more); null otherwise.
+    explicit Tracer(const World& world, int quality = 9, const Radiosity* radiosity = nullptr);
 
     // Colour seen along a camera ray (working colour space, unclipped).
     // With `transmit`, alpha output: the background counts as black and
     // *transmit receives how much of it shows through (povray's
     // transmittance: 1 - alpha).
-    RGB traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit = nullptr) const;
+    // `radiosity`: the block's access to the frame's radiosity cache, when
+    // the scene has radiosity (null otherwise).
+    RGB traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit = nullptr,
+                    RadiosityTask* radiosity = nullptr) const;
 
   private:
     struct State {
@@ -100,6 +108,18 @@ class Tracer {
         // shows through (missed rays then see black); null otherwise and
         // for reflected rays, which see the background as usual.
         double* transmit = nullptr;
+        // Radiosity along this path: the cache access, how many radiosity
+        // rays deep the ray is, whether it continues one (radiosity rays
+        // see no highlights), and where its path left from and how long it
+        // was there (the reuse radius grows with the distance from the eye).
+        struct RadiosityPath {
+            RadiosityTask* task = nullptr;
+            int depth = 0;
+            bool ray = false;
+            Vec3 origin;
+            double length = 0;
+        } radiosity;
+        double* hitDistance = nullptr;  // set by trace(): how far the ray went (infinity: missed)
     };
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
@@ -115,9 +135,21 @@ class Tracer {
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
                      const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
                      const Vec3& geometric, const State& state, RayCounts& counts) const;
+    // `gathered`: the radiosity light arriving at p, when radiosity is on
+    // (it replaces ambient light); `radiosityRay`: shading for a radiosity
+    // ray, which sees no highlights and area lights as point lights.
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                    const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps, const RGB& fade,
-                   RayCounts& counts) const;
+                   RayCounts& counts, const RGB* gathered = nullptr,
+                   bool radiosityRay = false) const;
+
+    // --- radiosity (tracer_radiosity.cpp) ---
+    // The light that other surfaces send to p (normal n, facing the
+    // viewer): interpolated from the cache, or a new sample gathered.
+    RGB radiosityLight(const Vec3& p, const Vec3& n, const scene::Object& obj, double eps,
+                       const State& state, RayCounts& counts) const;
+    RadiositySample gatherSample(const Vec3& p, const Vec3& n, const scene::Object& obj, double eps,
+                                 const State& state, RayCounts& counts) const;
 
     // +Q0/+Q1: the colour of texture `top` at p with no lighting at all.
     RGB quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const;
@@ -126,9 +158,11 @@ class Tracer {
     const scene::Scene& scene_;
     AtmosphereView atmosphere_;
     LightingQuality lighting_;
+    LightingQuality radiosityLighting_;  // lighting_ without area-light sampling
     bool secondaryRays_;
-    bool media_;                  // +Q9 and up, and the scene has media somewhere
-    bool quickColours_;           // +Q0, +Q1
+    bool media_;                            // +Q9 and up, and the scene has media somewhere
+    const Radiosity* radiosity_ = nullptr;  // set when the frame computes radiosity
+    bool quickColours_;                     // +Q0, +Q1
     bool quickColorPigments_;     // up to +Q5: a pigment's quick_color replaces its pattern
     bool opaqueSky_;              // alpha output sees the sky's own transmit (3.7 scenes)
     InteriorStack cameraInside_;  // regions containing the camera

@@ -10,6 +10,7 @@
 #include "render/atmosphere.h"
 #include "render/media.h"
 #include "render/optics.h"
+#include "render/photons.h"
 
 namespace frameray::render {
 
@@ -29,6 +30,9 @@ struct TraceContext {
     const scene::Object* blocker = nullptr;
     std::uint16_t blockerKind = 0;
     bool translucent = false;
+    // The light shoots refraction photons: refracting objects stop it
+    // (render/photons.h, Photons::photonShadow).
+    bool refractorsOpaque = false;
     scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
     std::uint64_t* tests = nullptr;                // the calling thread's counters, by kind
     // An exception must not unwind through Embree (it would be lost there
@@ -47,6 +51,17 @@ void guarded(TraceContext* ctx, Body body) {
     } catch (...) {
         ctx->error = std::current_exception();
     }
+}
+
+}  // namespace
+
+namespace {
+
+// lightPassing, except that with photons a refracting object lets nothing
+// through to a light that shoots refraction photons.
+RGB passing(const scene::Object& obj, const Vec3& p, bool refractorsOpaque) {
+    if (refractorsOpaque && obj.photons.refraction) return RGB(0.0);
+    return lightPassing(obj, p);
 }
 
 }  // namespace
@@ -138,7 +153,7 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
         const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
         scene::SurfaceHit h;
         if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
-        if (!lightPassing(*h.primitive, ctx->ray->at(h.t)).isBlack()) {
+        if (!passing(*h.primitive, ctx->ray->at(h.t), ctx->refractorsOpaque).isBlack()) {
             // Light may pass here: keep searching for an opaque crossing.
             ctx->translucent = true;
             return;
@@ -240,10 +255,13 @@ World::World(const scene::Scene& scene)
         hasBounded_ = true;
     }
     rtcCommitScene(bvh_);
+    // Photons are traced through the finished BVH.
+    photons_ = Photons::build(*this);
 }
 
 void World::add(const scene::Object* obj) {
-    if (obj->noImage && obj->noShadow && obj->noReflection) return;  // invisible to every ray kind
+    if (obj->noImage && obj->noShadow && obj->noReflection && obj->noRadiosity)
+        return;  // invisible to every ray kind
     // A plain union's first hit is its nearest child's: its children join
     // the BVH one by one (povray splits unions the same way), instead of
     // a union of thousands being searched child by child.
@@ -304,7 +322,7 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
 }
 
 World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double tMax,
-                                     ThreadState& state) const {
+                                     ThreadState& state, bool refractorsOpaque) const {
     Occlusion found;
     std::uint64_t* tests = state.tests.data();
     for (size_t i = 0; i < unbounded_.size(); ++i) {
@@ -312,7 +330,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
         ++tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
         if (!obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) continue;
-        if (lightPassing(*h.primitive, ray.at(h.t)).isBlack()) {
+        if (passing(*h.primitive, ray.at(h.t), refractorsOpaque).isBlack()) {
             found.blocker = {obj, unboundedKinds_[i]};
             return found;
         }
@@ -327,6 +345,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
     ctx.hitObject = nullptr;
     ctx.kind = scene::RayKind::Shadow;
     ctx.tests = tests;
+    ctx.refractorsOpaque = refractorsOpaque;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     if (ctx.error) std::rethrow_exception(ctx.error);
@@ -336,7 +355,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
 }
 
 bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
-    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local());
+    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local(), false);
     return o.blocker.object || o.translucent;
 }
 
@@ -366,6 +385,7 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
 RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
                          const scene::Light* light) const {
     ThreadState& state = tests_.local();
+    const bool refractorsOpaque = photons_ && light && light->photons.refraction;
     // povray's shadow cache: the object that last blocked this light is
     // tried first, since neighbouring points are usually shadowed by the
     // same object. A hit that lets no light through settles the ray.
@@ -377,12 +397,12 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
         ++state.tests[cached->kind];
         scene::SurfaceHit h;
         if (cached->object->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h) &&
-            lightPassing(*h.primitive, ray.at(h.t)).isBlack())
+            passing(*h.primitive, ray.at(h.t), refractorsOpaque).isBlack())
             return RGB(0.0);
     }
     // Most shadow rays are either clear or blocked by something opaque:
     // one any-hit search settles both.
-    const Occlusion o = findOccluder(ray, tMin, tMax, state);
+    const Occlusion o = findOccluder(ray, tMin, tMax, state, refractorsOpaque);
     if (o.blocker.object) {
         if (cached) *cached = o.blocker;
         return RGB(0.0);
@@ -447,7 +467,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
         const Vec3 p = ray.at(hit.t);
         crossFading(*hit.object, p, hit.t);
         crossMedia(*hit.object, p, hit.t);
-        const RGB through = lightPassing(*hit.object, p);
+        const RGB through = passing(*hit.object, p, refractorsOpaque);
         if (through.isBlack()) return RGB(0.0);
         passed *= through * fakeCaustics(*hit.object, p, ray.direction);
         if (passed.isBlack()) return passed;

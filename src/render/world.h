@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,8 @@
 #include "scene/scene.h"
 
 namespace frameray::render {
+
+class Photons;
 
 // Intersection tests of one frame by the kind of top-level object tested
 // (a shape's name; a CSG tree counts once, under its operation), sorted by
@@ -65,6 +68,10 @@ class World {
 
     const scene::Scene& scene() const { return scene_; }
 
+    // The scene's photon map (render/photons.h), shot when the World is
+    // built; null unless the scene turns photons on.
+    const Photons* photons() const { return photons_.get(); }
+
     // The tests made so far by every thread; call once rendering is over.
     ShapeTestCounts shapeTests() const;
 
@@ -91,6 +98,7 @@ class World {
     std::vector<const scene::Object*> unbounded_;
     std::vector<std::uint16_t> unboundedKinds_;
     bool hasBounded_ = false;
+    std::unique_ptr<const Photons> photons_;
     // A top-level object that blocked a shadow ray, with its statistics kind.
     struct Blocker {
         const scene::Object* object = nullptr;
@@ -108,8 +116,8 @@ class World {
         std::vector<Blocker> lastBlocker;  // indexed like scene().lights
     };
     // One any-hit search of (tMin, tMax) for a crossing that stops the light.
-    Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax,
-                           ThreadState& state) const;
+    Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax, ThreadState& state,
+                           bool refractorsOpaque) const;
 
     std::vector<std::string> kindNames_;
     mutable tbb::enumerable_thread_specific<ThreadState, tbb::cache_aligned_allocator<ThreadState>,

@@ -158,9 +158,12 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
     const bool needsInteriorTexture = !obj->interiorTexture && flags.interiorTexture;
     const bool needsFlags =
         (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
-        (flags.noReflection && !obj->noReflection) ||
+        (flags.noReflection && !obj->noReflection) || (flags.noRadiosity && !obj->noRadiosity) ||
+        (flags.radiosityImportance > 0 && obj->radiosityImportance == 0) ||
         (flags.doubleIlluminate && !obj->doubleIlluminate) || (flags.hollow && !obj->hollow);
-    if (!obj->isCsg() && !needsTexture && !needsInterior && !needsInteriorTexture && !needsFlags)
+    const bool needsPhotons = flags.photons.given && !obj->photons.given;
+    if (!obj->isCsg() && !needsTexture && !needsInterior && !needsInteriorTexture && !needsFlags &&
+        !needsPhotons)
         return obj;
     auto copy = std::make_shared<Object>(*obj);
     if (needsTexture) copy->texture = texture;
@@ -169,8 +172,11 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
     copy->noShadow |= flags.noShadow;
     copy->noImage |= flags.noImage;
     copy->noReflection |= flags.noReflection;
+    copy->noRadiosity |= flags.noRadiosity;
+    if (copy->radiosityImportance == 0) copy->radiosityImportance = flags.radiosityImportance;
     copy->doubleIlluminate |= flags.doubleIlluminate;
     copy->hollow |= flags.hollow;
+    if (needsPhotons) copy->photons = flags.photons;
     for (ObjectRef& child : copy->children) child = inherit(child, copy->texture, *copy);
     return copy;
 }

@@ -30,8 +30,8 @@ Bounds insideBounds(const Object& node);
 
 // A top-level object ready to render: each primitive without a texture
 // (or interior) gets its nearest ancestor's, and the flags set on a CSG node
-// (no_shadow, no_image, no_reflection, double_illuminate) hold for every
-// primitive below it. Done when the object is placed in the scene, not
+// (no_shadow, no_image, no_reflection, double_illuminate, a photons block)
+// hold for every primitive below it. Done when the object is placed in the scene, not
 // when a CSG is declared: `object { U pigment { ... } }` recolours the
 // untextured children of U (as povray does).
 ObjectRef resolveInheritance(const ObjectRef& top);

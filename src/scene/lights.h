@@ -7,6 +7,7 @@
 
 #include <memory>
 
+#include "scene/photon_settings.h"
 #include "util/color.h"
 #include "util/matrix.h"
 #include "util/vec3.h"
@@ -61,6 +62,7 @@ struct Light {
     bool shadowless = false;
     bool mediaInteraction = true;
     bool mediaAttenuation = false;
+    LightPhotons photons;
     bool isArea = false;
     AreaLight area;
     // Only points whose ray to the light crosses this object are lit.

@@ -21,6 +21,8 @@ bool visibleTo(const Object& primitive, RayKind kind) {
             return !primitive.noReflection;
         case RayKind::Shadow:
             return !primitive.noShadow;
+        case RayKind::Radiosity:
+            return !primitive.noRadiosity;
         case RayKind::Any:
             return true;
     }

@@ -15,6 +15,7 @@
 
 #include "scene/interior.h"
 #include "scene/lights.h"
+#include "scene/photon_settings.h"
 #include "scene/shapes.h"
 #include "scene/texture.h"
 
@@ -31,6 +32,7 @@ enum class RayKind {
     Camera,      // skips no_image surfaces (also rays refracted from camera rays)
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
+    Radiosity,   // skips no_radiosity surfaces
     Any,         // sees everything (bounding tests)
 };
 
@@ -80,8 +82,15 @@ struct Object {
     bool noShadow = false;
     bool noImage = false;
     bool noReflection = false;
+    bool noRadiosity = false;  // radiosity rays pass through it
+    // radiosity { importance }: the share of `count` a sample on it shoots;
+    // 0: not given (1).
+    double radiosityImportance = 0;
     bool doubleIlluminate = false;  // lights reach the side facing away from them
     bool hollow = false;            // fog reaches rays inside it (povray's `hollow`)
+    // Its part in photon mapping; a CSG node's block holds for the
+    // children that have none (csg::resolveInheritance).
+    ObjectPhotons photons;
 
     // (Light sources written inside a CSG node or light_group are the
     // parser's until the object is placed: sdl::ObjectLights.)

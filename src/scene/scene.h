@@ -2,12 +2,15 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "scene/atmosphere.h"
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/object.h"
+#include "scene/radiosity.h"
+#include "scene/photon_settings.h"
 
 namespace frameray::scene {
 
@@ -23,6 +26,10 @@ struct GlobalSettings {
     // (povray 3.7's effective default, measured: <0.70, 0.52, 0.48>, not
     // the <0.25, 0.18, 0.14> older documents give).
     RGB iridWavelength{0.70, 0.52, 0.48};
+    // Set by `radiosity { }`: only then is any radiosity computed.
+    std::optional<RadiositySettings> radiosity;
+    // Photon mapping, when the scene turns it on (render/photons.h).
+    std::optional<PhotonSettings> photons;
 };
 
 struct Scene {
@@ -33,7 +40,7 @@ struct Scene {
     // Black and clear by default: only alpha output (+UA) sees the clear
     // part (measured: a 3.7 scene without background is transparent).
     Color background{RGB(0.0), 0.0, 1.0};
-    Atmosphere atmosphere;  // fogs, sky sphere, rainbows
+    Atmosphere atmosphere;         // fogs, sky sphere, rainbows
     double languageVersion = 3.7;  // the #version in force at the end of parse
     bool versionDeclared = false;
 };

@@ -414,6 +414,13 @@ class Interpreter {
     bool floatFollows();
     double parseOptionalFloat(double absent);
     void parseGlobalSettings();
+    // --- radiosity (parse_radiosity.cpp), each at 'radiosity' ---
+    void parseRadiositySettings(const Token& start);  // in global_settings, after the keyword
+    void parseObjectRadiosity(scene::Object& obj);    // radiosity { importance } in an object
+    // --- photons blocks (parse_photons.cpp), each after 'photons' ---
+    void parseGlobalPhotons(scene::PhotonSettings& settings);
+    void parseObjectPhotons(scene::ObjectPhotons& photons, const Token& keyword);
+    void parseLightPhotons(scene::LightPhotons& photons);
     // --- atmosphere (parse_atmosphere.cpp) ---
     void parseBackground();
     scene::Fog parseFog();              // fog { }, also as a declared value

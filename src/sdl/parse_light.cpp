@@ -64,6 +64,9 @@ scene::Light Interpreter::parseLightSource() {
             case Keyword::kw_shadowless:
                 light.shadowless = true;
                 break;
+            case Keyword::kw_photons:
+                parseLightPhotons(light.photons);
+                break;
             case Keyword::kw_spotlight:
                 light.kind = scene::LightKind::Spot;
                 break;

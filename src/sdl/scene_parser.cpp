@@ -601,6 +601,13 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
             next();
             obj.noReflection = true;
             return true;
+        case Keyword::kw_no_radiosity:
+            next();
+            obj.noRadiosity = true;
+            return true;
+        case Keyword::kw_radiosity:
+            parseObjectRadiosity(obj);
+            return true;
         case Keyword::kw_hierarchy:
             next();
             parseOptionalBool();
@@ -608,6 +615,16 @@ bool Interpreter::parseObjectModifier(ObjectValue& draft, std::optional<scene::T
         case Keyword::kw_sturm:
             next();
             applySturm(obj, tok);
+            return true;
+        case Keyword::kw_photons:
+            next();
+            parseObjectPhotons(obj.photons, tok);
+            return true;
+        case Keyword::kw_split_union:
+            next();
+            if (!obj.isCsg() || obj.op != scene::CsgOp::Union)
+                fail(tok, "split_union found in non-union object.");
+            obj.photons.splitUnion = parseOptionalBool();
             return true;
         case Keyword::kw_hollow:
             // Lets fog reach rays inside the object (see render::Tracer).
@@ -749,8 +766,16 @@ void Interpreter::parseGlobalSettings() {
                 textCharset_ = found->second;
                 break;
             }
+            case Keyword::kw_radiosity:
+                parseRadiositySettings(t);
+                break;
             case Keyword::kw_hf_gray_16:
                 parseOptionalBool();
+                break;
+            case Keyword::kw_photons:
+                // A second block replaces the first's values item by item.
+                if (!g.photons) g.photons.emplace();
+                parseGlobalPhotons(*g.photons);
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)

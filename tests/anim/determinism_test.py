@@ -68,7 +68,7 @@ def check_statistics(path, switches, frames):
     if len(stats["frames"]) != frames:
         fail(f"{switches}: sequence.json lists {len(stats['frames'])} frames, expected {frames}")
     total = {"camera": 0, "shadow": 0, "reflection": 0, "refraction": 0, "transmission": 0,
-             "media_samples": 0}
+             "media_samples": 0, "radiosity": 0}
     for i, frame in enumerate(stats["frames"]):
         for key in ("number", "rays", "parse_seconds", "render_seconds"):
             if key not in frame:

@@ -16,7 +16,12 @@ camera { location <0, 4, -9> * S look_at <0, 0.5, 0> * S angle 50 }
 light_source { <-6, 11, -7> * S color rgb 1 }
 #declare Matte = finish { ambient 0.15 diffuse 0.8 phong 0.3 }
 
-plane { y, -0.5 * S pigment { color rgb <0.75, 0.75, 0.7> } finish { Matte } }
+// The floor is clipped 80 units (x S) around the camera: povray 3.7 sees
+// nothing from 1e7 units on, and frameray follows it (conformance
+// robust_far_camera), so an endless floor would end at a scale-dependent
+// horizon. Clipped, every visible point stays within that distance.
+plane { y, -0.5 * S clipped_by { sphere { <0, 0, -9> * S, 80 * S } }
+        pigment { color rgb <0.75, 0.75, 0.7> } finish { Matte } }
 
 torus { 1, 0.3 rotate x * -30 scale S translate <-3, 0.5, 0> * S pigment { color rgb <0.9, 0.4, 0.2> } finish { Matte } }
 torus { 0.8, 0.08 sturm rotate z * 60 scale S translate <-1, 0.6, 1.5> * S pigment { color rgb <0.9, 0.8, 0.2> } finish { Matte } }

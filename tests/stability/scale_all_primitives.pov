@@ -15,7 +15,12 @@ light_source { <-6, 11, -7> * S color rgb 1 }
 
 #declare Matte = finish { ambient 0.15 diffuse 0.8 }
 
-plane { y, 0 pigment { color rgb <0.75, 0.75, 0.7> } finish { Matte } }
+// The floor is clipped 80 units (x S) around the camera: povray 3.7 sees
+// nothing from 1e7 units on, and frameray follows it (conformance
+// robust_far_camera), so an endless floor would end at a scale-dependent
+// horizon. Clipped, every visible point stays within that distance.
+plane { y, 0 clipped_by { sphere { <0.5, 0, -9> * S, 80 * S } }
+        pigment { color rgb <0.75, 0.75, 0.7> } finish { Matte } }
 
 sphere { <-3, 0.8, 0.5> * S, 0.8 * S pigment { color rgb <0.9, 0.3, 0.25> } finish { Matte phong 0.4 } }
 

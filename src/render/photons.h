@@ -1,0 +1,101 @@
+// POV-Ray 3.7's photon mapping of caustics, rebuilt from measurements of
+// povray on small scenes (tests/conformance/scenes/photons_*.pov):
+//
+// Shooting. Each light whose photons block allows reflection or refraction
+// shoots at each target object (photons { target }), a plain union split
+// into its children (split_union on). Photons leave the light in rings
+// around the direction of the target's bounding sphere (the sphere around
+// its bounding box): ring k at angle k * dt from that direction, dt =
+// spacing * target multiplier / distance to the sphere's centre, with
+// max(1, round(2 pi sin(k dt) / dt)) photons evenly around it, rings while
+// the angle is at most asin(radius / distance) — all directions when the
+// light is inside the sphere. Photon counts match povray's exactly
+// without jitter. Shooting stops after the first complete ring that
+// missed the target, once one photon has hit it and the rings have passed
+// `autostop` of the cone. Parallel lights shoot from their plane: rings of
+// radius k * spacing across the sphere. jitter moves each photon by up to
+// jitter / 2 of the ring spacing, hashed from its indices (povray's is
+// random).
+//
+// Tracing. On its way to the target a photon is stopped by any other
+// object except pass_through and no_shadow ones; at an object whose
+// photons block says reflection / refraction on (and the light's too) it
+// reflects and refracts with the tracer's own optics (fresnel, filter,
+// transmit, fading, dispersion: a white photon entering a dispersive
+// interior splits into its bands); every later surface with collect on
+// keeps it. max_trace_level and adc_bailout are the photons block's, else
+// the scene's.
+//
+// Light. povray's lights do not fade with distance, and neither do its
+// caustics (measured: a mirror's caustic is the same at 12, 15 and 18
+// units from the light): a photon carries the light's colour times its
+// solid angle dt^2 times the square of the distance it has travelled, so
+// that a density estimate gives the irradiance light * cos. A parallel
+// light's photon carries colour * spacing^2.
+//
+// Gathering. At a surface the photons nearest the point are searched
+// within the gather radius, at most `gather` max of them, and their light
+// summed over the disc they cover (radius: the farthest one's distance
+// when max were found, else the gather radius; a box filter, measured on
+// the edge of a mirror's caustic). Only photons arriving on the side
+// facing the viewer count. The radius is povray's `radius`, or estimated
+// from the photons (see estimateRadius in photons.cpp).
+//
+// Shooting runs in parallel over rings; each ring's photons are kept in
+// ring order, so the map is the same whatever the thread count.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "render/photon_map.h"
+#include "scene/lights.h"
+#include "scene/object.h"
+#include "util/color.h"
+
+namespace frameray::render {
+
+class World;
+
+struct PhotonStats {
+    std::uint64_t shot = 0;    // photons that left the lights
+    std::uint64_t stored = 0;  // photons kept on surfaces
+    std::size_t memoryBytes = 0;
+    double gatherRadius = 0;
+    double spacing = 0;  // the spacing used (from count when the scene gives one)
+};
+
+class Photons {
+  public:
+    // Shoots the photons of world's scene, or reads them from its
+    // load_file; null when the scene does not turn photons on.
+    static std::unique_ptr<const Photons> build(const World& world);
+
+    // The light photons bring to point p of a surface whose unit normal n
+    // faces the viewer (irradiance: still to be scaled by the diffuse
+    // coefficient and the pigment). `scratch` is the caller's buffer.
+    RGB irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const;
+
+    const PhotonStats& stats() const { return stats_; }
+    const PhotonMap& surfaceMap() const { return surface_; }
+
+    // Whether a shadow ray from `light` stops at `primitive` whatever its
+    // filter and transmit: with photons on, a light that shoots refraction
+    // photons lights what lies behind a refracting object through the
+    // photons only (measured: the filtered shadow of a glass sphere
+    // disappears, the caustic takes its place).
+    static bool photonShadow(const scene::Light& light, const scene::Object& primitive) {
+        return light.photons.refraction && primitive.photons.refraction;
+    }
+
+    Photons(PhotonMap map, const scene::PhotonSettings& settings, PhotonStats stats);
+
+  private:
+    PhotonMap surface_;
+    double radius_ = 0;
+    int gatherMax_ = 100;
+    PhotonStats stats_;
+};
+
+}  // namespace frameray::render

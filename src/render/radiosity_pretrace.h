@@ -1,0 +1,22 @@
+// Radiosity's pretrace: the mosaic passes povray makes before the final
+// render to fill the irradiance cache (render/radiosity.h).
+#pragma once
+
+#include "render/antialias.h"
+#include "render/camera_rays.h"
+#include "render/radiosity.h"
+#include "render/tracer.h"
+
+namespace frameray::render {
+
+// Traces the pretrace passes over `window` (pixels of an image `width`
+// wide): the first with blocks pretrace_start of the width wide, each next
+// with blocks half as wide, the last pretrace_end wide (never under a
+// pixel). One camera ray per block, at a spot within it hashed from the
+// pass and the block; its pixel colour is discarded, its radiosity lookups
+// fill the cache. Runs on the calling thread, in a fixed order.
+void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity& radiosity,
+                       const PixelBlock& window, int width, RayCounts& rays,
+                       RadiosityCounts& counts);
+
+}  // namespace frameray::render

@@ -1,0 +1,57 @@
+// POV-Ray 3.7's photon mapping settings: the global block that turns it
+// on and tunes shooting and gathering, an object's role (a target photons
+// are shot at, whether it reflects, refracts, collects or lets them pass)
+// and a light's (which kinds of photons it shoots). render/photons.h does
+// the work; these are the parsed values only.
+#pragma once
+
+#include <string>
+
+namespace frameray::scene {
+
+// global_settings { photons { ... } }. Defaults are povray 3.7's.
+struct PhotonSettings {
+    // Distance between photons on a target at its distance from the light;
+    // 0 when the scene gives `count` instead.
+    double spacing = 0;
+    int count = 0;  // photons to shoot, povray picking the spacing
+    int gatherMin = 20;
+    int gatherMax = 100;
+    int mediaMaxSteps = 0;  // 0: no media photons
+    double mediaFactor = 1.0;
+    double jitter = 0.4;          // of the angular spacing, per photon
+    int maxTraceLevel = -1;       // -1: the scene's max_trace_level
+    double adcBailout = -1;       // negative: the scene's adc_bailout
+    double autostop = 0;          // fraction of the target's cone shot before stopping is allowed
+    double expandIncrease = 0.2;  // expand_thresholds: growth of the search radius
+    int expandMin = 40;           // expand_thresholds: fewer photons than this grow it
+    double radius = 0;            // gather radius; 0: estimated from the photons
+    double radiusMultiplier = 1.0;
+    double mediaRadius = 0;
+    double mediaRadiusMultiplier = 1.0;
+    std::string saveFile;
+    std::string loadFile;
+};
+
+// An object's photons { ... } block. povray's defaults: no target,
+// neither reflection nor refraction, collect on.
+struct ObjectPhotons {
+    bool given = false;  // a photons block was written (CSG children inherit it otherwise)
+    double target = 0;   // spacing multiplier; 0: photons are not shot at it
+    bool refraction = false;
+    bool reflection = false;
+    bool collect = true;
+    bool passThrough = false;
+    bool splitUnion = true;
+};
+
+// A light's photons { ... } block. Without one a light shoots both kinds
+// (measured: a target with refraction on gets photons from a light that
+// says nothing); `refraction off reflection off` stops it.
+struct LightPhotons {
+    bool refraction = true;
+    bool reflection = true;
+    bool areaLight = false;  // shoot from every sample of an area light
+};
+
+}  // namespace frameray::scene
