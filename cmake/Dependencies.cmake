@@ -16,6 +16,7 @@ frameray_require(embree libembree-dev 3)
 frameray_require(TBB libtbb-dev)
 frameray_require(OpenImageIO libopenimageio-dev)
 frameray_require(PNG libpng-dev)
+frameray_require(JPEG libjpeg-dev)
 # Debian 12's OpenImageIO CMake package lists /usr/include/opencv4 among its
 # include folders although OpenImageIO's headers never need OpenCV; CMake
 # rejects a missing folder there. Keep only the folders that exist rather

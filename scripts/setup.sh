@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
     cmake g++ make ccache
     libembree-dev libtbb-dev
-    libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
+    libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev libjpeg-dev
     libspdlog-dev libfmt-dev libfreetype-dev
     googletest libgtest-dev
     povray povray-includes povray-examples

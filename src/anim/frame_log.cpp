@@ -1,7 +1,9 @@
 #include "anim/frame_log.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -21,10 +23,15 @@ RunStreams::RunStreams(const options::RenderOptions& o) {
         // leaves the user nothing to go on.
         if (i == static_cast<int>(TextStream::Fatal)) streams_[i].console = true;
         if (o.streams[i].file.empty()) continue;
-        streams_[i].file = std::fopen(o.streams[i].file.c_str(), "w");
-        if (!streams_[i].file)
+        // Never through a link planted under the stream file's name.
+        // Append_File (+GP): povray appends to the stream files then.
+        const int fd = util::createNoFollow(o.streams[i].file, o.appendFile);
+        streams_[i].file = ::fdopen(fd, o.appendFile ? "a" : "w");
+        if (!streams_[i].file) {
+            ::close(fd);
             throw std::runtime_error(
                 fmt::format("cannot create stream file '{}'", o.streams[i].file));
+        }
     }
 }
 
@@ -110,7 +117,9 @@ std::string FrameLog::text() const {
 void FrameLog::save(const std::filesystem::path& path) const {
     std::lock_guard lock(mutex_);
     if (text_.empty()) return;
-    util::writeFileDurably(path, text_);
+    // Replaced, not rewritten in place: a symbolic link planted under the
+    // log's name is replaced by the log, not followed.
+    util::replaceFileDurably(path, text_);
 }
 
 }  // namespace frameray::anim

@@ -10,8 +10,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <limits>
@@ -29,6 +32,7 @@
 #include "anim/journal.h"
 #include "anim/memory_budget.h"
 #include "anim/progress.h"
+#include "anim/run_log.h"
 #include "anim/statistics.h"
 #include "image/codecs.h"
 #include "image/frame_encoding.h"
@@ -44,6 +48,7 @@
 namespace frameray::anim {
 
 namespace fs = std::filesystem;
+using options::LogLevel;
 using options::ShellHook;
 using options::TextStream;
 
@@ -99,29 +104,80 @@ void refuseAlphaWith(const scene::Scene& scene) {
         throw std::runtime_error("not supported yet: alpha output (+UA) with a rainbow");
 }
 
+// Options that do not change what a frame looks like: which frames a run
+// renders (subsets, steps, shards), how it runs, and where its messages go.
+// Every other option is part of the journal's settings hash.
+bool settingsNeutral(std::string_view key) {
+    // clang-format off
+    static constexpr std::string_view kNeutral[] = {
+        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Continue_Trace",
+        "Create_Ini",           "Display",            "Display_Gamma",      "Field_Render",
+        "File_Restrictions",    "Frame_Step",         "Frames_In_Flight",   "Input_File_Name",
+        "Log_Format",           "Log_Level",
+        "Max_Parse_Iterations", "Odd_Field",          "Output_File_Name",   "Output_To_File",
+        "Pause_When_Done",      "Read_Path",          "Shard_Count",        "Shard_Index",
+        "Subset_End_Frame",     "Subset_Start_Frame", "Test_Abort",         "Test_Abort_Count",
+        "Verbose",              "Work_Threads",       "Write_Path"};
+    // clang-format on
+    for (const std::string_view n : kNeutral)
+        if (key == n) return true;
+    // The text streams and the shell-outs.
+    return key.ends_with("_Console") || key.ends_with("_File") || key.ends_with("_Command") ||
+           key.ends_with("_Return");
+}
+
 // What makes two runs' images comparable: a journal written with other
-// values is not trusted.
-std::uint64_t settingsHash(const options::RenderOptions& o, const Sequence& seq) {
+// values of any option that changes a frame (size, window, quality,
+// anti-aliasing, gamma, clocks, declares, library path...) is not trusted.
+// The scene and the files it reads are checked frame by frame (journal.h).
+std::uint64_t settingsHash(const options::RenderOptions& o) {
     std::error_code ec;
-    // Shards share the images but not the journal (each has its own), so
-    // the shard is not part of the settings.
-    std::string s = fmt::format(
-        "{}|{}x{}|{}{}|{}|{},{},{},{}|{}|{}|{}", fs::absolute(o.inputFile, ec).string(), o.width,
-        o.height, o.outputType, o.bitDepth, o.fileGamma, seq.window.x0, seq.window.y0,
-        seq.window.x1, seq.window.y1, o.version, o.quality, o.includeHeader);
-    for (const auto& [k, v] : o.declares) s += fmt::format("|{}={}", k, v);
-    for (const auto& p : o.libraryPaths) s += fmt::format("|{}", p.string());
+    std::string s = fs::absolute(o.inputFile, ec).string();
+    for (const options::OptionSpec& spec : options::optionTable()) {
+        if (settingsNeutral(spec.iniKey)) continue;
+        s += fmt::format("|{}", spec.iniKey);
+        for (const std::string& value : options::optionValues(spec, o)) s += "=" + value;
+    }
     return hashText(s);
 }
 
+// The journals of a sharded run of this sequence (beside its own), which a
+// run without shards takes over when resuming.
+std::vector<fs::path> shardJournals(const Sequence& seq) {
+    std::vector<fs::path> out;
+    if (seq.shardCount > 1) return out;
+    const std::string name = seq.journal.filename().string();  // ".NAME.frameray-journal"
+    const std::string suffix = ".frameray-journal";
+    if (!name.ends_with(suffix)) return out;
+    const std::string prefix = name.substr(0, name.size() - suffix.size()) + ".shard-";
+    const fs::path dir =
+        seq.journal.parent_path().empty() ? fs::path(".") : seq.journal.parent_path();
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string n = entry.path().filename().string();
+        if (n.starts_with(prefix) && n.ends_with(suffix)) out.push_back(entry.path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// A file as the journal names it: absolute, '..' and links resolved.
+std::string journalName(const fs::path& p) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(p, ec);
+    const fs::path canonical = fs::weakly_canonical(absolute, ec);
+    return (ec ? absolute.lexically_normal() : canonical).string();
+}
+
 // Temporary files left by a run that was killed mid-write: of the frames,
-// of sequence.json and of the journal (rewritten when a run resumes).
+// their logs, sequence.json and the journal (rewritten when a run resumes).
 void removeStaleTemporaries(const Sequence& seq) {
     // Every frame of a sequence is in one folder; the journal beside them.
     std::set<fs::path> folders;
     const fs::path frameFolder = seq.frames.front().output.parent_path();
     folders.insert(frameFolder.empty() ? fs::path(".") : frameFolder);
     std::set<std::string> names{seq.statisticsName};
+    const fs::path imageExtension = seq.frames.front().output.extension();
     if (!seq.journal.empty()) {
         folders.insert(seq.journal.parent_path().empty() ? fs::path(".")
                                                          : seq.journal.parent_path());
@@ -134,7 +190,11 @@ void removeStaleTemporaries(const Sequence& seq) {
             long pid = 0;
             std::string target;
             if (!image::parseTemporaryName(name, target, pid)) continue;
-            if (!names.count(target) && !seq.frames.holdsImageNamed(target)) continue;
+            // A frame's log (NAME.log beside NAME.png) is replaced too.
+            const bool log = target.ends_with(".log") &&
+                             seq.frames.holdsImageNamed(
+                                 fs::path(target).replace_extension(imageExtension).string());
+            if (!names.count(target) && !seq.frames.holdsImageNamed(target) && !log) continue;
             if (pid != static_cast<long>(getpid()) && kill(static_cast<pid_t>(pid), 0) == 0)
                 continue;  // alive
             fs::remove(entry.path(), ec);
@@ -159,17 +219,24 @@ struct Job {
     const FrameSpec* frame = nullptr;
     Outcome stop;    // Kind::Stop
     FrameSpec spec;  // what `frame` points to
+    // What the frame's parse read (with the files' hashes) and wrote, for
+    // the journal.
+    FrameInputs inputs;
+    std::vector<std::string> written;
     std::unique_ptr<FrameLog> log;
     std::unique_ptr<sdl::Interpreter> interpreter;  // kept while the scene lives
     std::optional<scene::Scene> scene;
     // The image encoded and flushed under a temporary name in stage 2;
     // stage 3 renames it into place and journals it.
     fs::path temporary;
+    // +O-: the encoded image, written to standard output in stage 3.
+    std::vector<unsigned char> encoded;
     std::uintmax_t fileSize = 0;
     std::uint64_t fileHash = 0;
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
     bool failed = false;  // the log holds the fatal message
+    std::string failure;  // ... and this is it (for the run log)
     // The parse stopped on a file that an earlier frame of this run writes
     // (a scene showing the previous frames' images, as the example
     // advanced/desk does): stage 3 parses and renders it again once every
@@ -224,7 +291,26 @@ class Run {
     Run& operator=(const Run&) = delete;
 
     int execute() {
-        if (o_.outputToFile && !seq_.frames.empty()) {
+        const int code = executeRun();
+        logEvent(LogLevel::Info, "run_end",
+                 {{"outcome", code == 0   ? "finished"
+                              : code == 2 ? "interrupted"
+                                          : "failed"},
+                  {"exit_code", code},
+                  {"frames_finished", finished_.load()},
+                  {"frames_kept", kept_.size()},
+                  {"wall_seconds", wallSeconds_},
+                  {"cpu_seconds", cpuSecondsUsed_}});
+        if (runLog_)
+            if (const std::string error = runLog_->close(); !error.empty())
+                say(TextStream::Warning,
+                    fmt::format("frameray: warning: the run log is incomplete: {}\n", error));
+        return code;
+    }
+
+  private:
+    int executeRun() {
+        if (toFiles_ && !seq_.frames.empty()) {
             std::error_code ec;
             // Every frame and the journal are in the same folder, created
             // only when Output_File_Name names it as a folder ("dir/");
@@ -233,13 +319,17 @@ class Run {
                 !folder.empty() && !o_.outputFile.empty() && o_.outputFile.back() == '/')
                 fs::create_directories(folder, ec);
             removeStaleTemporaries(seq_);
-            journal_ =
-                std::make_unique<Journal>(seq_.journal, settingsHash(o_, seq_), o_.continueTrace);
-            if (journal_->discardedStale())
+            journal_ = std::make_unique<Journal>(seq_.journal, settingsHash(o_), o_.continueTrace,
+                                                 shardJournals(seq_));
+            written_ = journal_->written();
+            openRunLog();
+            if (journal_->discardedStale()) {
+                logEvent(LogLevel::Warn, "journal_stale", {{"journal", seq_.journal.string()}});
                 say(TextStream::Warning,
                     fmt::format("frameray: the journal {} was written with other settings; "
                                 "rendering every frame again\n",
                                 seq_.journal.string()));
+            }
         }
         setEmergencyStop([this] { emergencyStop(); });
 
@@ -280,7 +370,42 @@ class Run {
         return finish();
     }
 
-  private:
+    // The run log beside an animation's frames (anim/run_log.h); a log
+    // that cannot be opened is a warning, never the end of the run.
+    void openRunLog() {
+        // +O- writes no file beside the frames, this one neither.
+        if (!seq_.animated || o_.logLevel == LogLevel::Off || toStdout_) return;
+        const fs::path folder = seq_.frames.front().output.parent_path();
+        const fs::path path = (folder.empty() ? fs::path(".") : folder) / seq_.runLogName;
+        try {
+            runLog_ = std::make_unique<RunLog>(path, o_.logLevel, o_.logFormat,
+                                               o_.verbose ? &progress_ : nullptr);
+        } catch (const std::exception& e) {
+            say(TextStream::Warning, fmt::format("frameray: warning: no run log: {}\n", e.what()));
+            return;
+        }
+        logEvent(LogLevel::Info, "run_start",
+                 {{"scene", seq_.sceneName},
+                  {"frames", seq_.frames.size()},
+                  {"frames_in_all_shards", seq_.framesInAllShards},
+                  {"shard", seq_.shardIndex},
+                  {"shard_count", seq_.shardCount},
+                  {"continue_trace", o_.continueTrace ? 1 : 0},
+                  {"pid", static_cast<long long>(getpid())}});
+    }
+
+    void logEvent(LogLevel level, std::string_view kind,
+                  std::initializer_list<LogField> fields) const {
+        if (runLog_) runLog_->event(level, kind, fields);
+    }
+
+    // The frame failed: its log gets the fatal message, the run log an event.
+    static void failJob(Job& job, const std::string& message) {
+        job.log->message(sdl::Stream::Fatal, message);
+        job.failed = true;
+        job.failure = message;
+    }
+
     size_t framesInFlight() const {
         // Shell-outs between frames keep POV-Ray's strict order: frame N's
         // Post_Frame_Command before frame N+1's Pre_Frame_Command.
@@ -296,6 +421,8 @@ class Run {
         inFlight_ = framesInFlight();
         runStart_ = Clock::now();
         cpuStart_ = cpuSeconds();
+        logEvent(LogLevel::Info, "pipeline",
+                 {{"threads", threads_}, {"frames_in_flight", inFlight_}});
         // Frames in flight are bounded by memory too: the first frame
         // renders alone (its tiles still use every core) and its growth
         // of the process is the estimate for the others.
@@ -307,6 +434,10 @@ class Run {
             frameMemory_ = peak > before ? peak - before : 0;
             memoryBudget_ = availableBytes();
             inFlight_ = framesWithin(inFlight_, frameMemory_, memoryBudget_);
+            logEvent(LogLevel::Info, "memory_limit",
+                     {{"frame_memory_bytes", frameMemory_},
+                      {"memory_budget_bytes", memoryBudget_},
+                      {"frames_in_flight", inFlight_}});
         }
         if (!measureFirst || (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
             pipelinePhase(inFlight_, std::numeric_limits<size_t>::max());
@@ -417,7 +548,8 @@ class Run {
                 bool kept = false;
                 {
                     std::lock_guard lock(journalMutex_);
-                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output);
+                    kept = journal_->verified(frame.number, clockText(frame.clock), frame.output,
+                                              hashes_);
                 }
                 if (kept) return &newJob(Job::Kind::Kept, position);
             }
@@ -474,19 +606,39 @@ class Run {
                 job.parseSeconds = secondsSince(start);
                 return;
             }
-            job.log->message(sdl::Stream::Fatal, e.what());
-            job.failed = true;
+            failJob(job, e.what());
         } catch (const std::bad_alloc&) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: out of memory while parsing the scene",
-                                         frame.number));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: out of memory while parsing the scene",
+                                     frame.number));
         } catch (const std::exception& e) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: {}", frame.number, e.what()));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: {}", frame.number, e.what()));
         }
+        if (!job.failed && journal_) noteInputs(job);
         job.parseSeconds = secondsSince(start);
+        if (!job.failed)
+            logEvent(LogLevel::Debug, "parse_done",
+                     {{"frame", frame.number},
+                      {"clock", frame.clock},
+                      {"seconds", job.parseSeconds},
+                      {"deferred", job.deferred ? 1 : 0}});
+    }
+
+    // Stage 1, right after the parse: the files the frame read, hashed now
+    // (each once per run), and those it wrote; files written by this or an
+    // earlier frame of the sequence are not inputs.
+    void noteInputs(Job& job) {
+        for (const fs::path& p : job.interpreter->filesWritten()) {
+            job.written.push_back(journalName(p));
+            written_.insert(job.written.back());
+        }
+        std::set<std::string> read;
+        for (const fs::path& p : job.interpreter->filesRead()) read.insert(journalName(p));
+        for (const std::string& p : read) {
+            if (written_.count(p)) continue;
+            // An input that cannot be hashed now never verifies later: 0
+            // stands for it.
+            job.inputs.emplace_back(p, hashes_.hash(p).value_or(0));
+        }
     }
 
     render::FrameSettings frameSettings(const image::GammaEncoding& gamma) const {
@@ -523,6 +675,7 @@ class Run {
             auto start = Clock::now();
             const render::World world(*job.scene);
             job.prepareSeconds = secondsSince(start);
+            if (world.photons()) job.stats.photons = world.photons()->stats();
             start = Clock::now();
             const auto gamma = image::GammaEncoding::forScene(
                 job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
@@ -534,12 +687,15 @@ class Run {
             job.renderSeconds = secondsSince(start);
             // Encoding, compression and the flush to disk happen here, in
             // parallel; stage 3 only renames and journals.
-            if (o_.outputToFile && !decided_) {
+            if (toStdout_ && !decided_) {
                 start = Clock::now();
-                const fs::path temporary = image::writeTemporary(
-                    job.frame->output, seq_.fileType,
-                    image::encodeFrame(image.width, image.height, image.rgb, image.alpha, gamma,
-                                       o_.bitDepth, seq_.window));
+                job.encoded =
+                    image::encodeFile(seq_.fileType, fileImage(image, gamma), "standard output");
+                job.writeSeconds = secondsSince(start);
+            } else if (toFiles_ && !decided_) {
+                start = Clock::now();
+                const fs::path temporary = image::writeTemporary(job.frame->output, seq_.fileType,
+                                                                 fileImage(image, gamma));
                 job.temporary = temporary;
                 const auto hash = hashFile(temporary, &job.fileSize);
                 if (!hash)
@@ -548,19 +704,22 @@ class Run {
                 job.fileHash = *hash;
                 job.writeSeconds = secondsSince(start);
             }
+            logEvent(LogLevel::Debug, "render_done",
+                     {{"frame", job.frame->number},
+                      {"clock", job.frame->clock},
+                      {"prepare_seconds", job.prepareSeconds},
+                      {"render_seconds", job.renderSeconds},
+                      {"encode_seconds", job.writeSeconds},
+                      {"camera_rays", job.stats.rays.camera},
+                      {"shadow_rays", job.stats.rays.shadow}});
         } catch (const sdl::SdlError& e) {
-            job.log->message(sdl::Stream::Fatal, e.what());
-            job.failed = true;
+            failJob(job, e.what());
         } catch (const std::bad_alloc&) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: out of memory while building or "
-                                         "rendering the frame",
-                                         job.frame->number));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: out of memory while building or "
+                                     "rendering the frame",
+                                     job.frame->number));
         } catch (const std::exception& e) {
-            job.log->message(sdl::Stream::Fatal,
-                             fmt::format("error: frame {}: {}", job.frame->number, e.what()));
-            job.failed = true;
+            failJob(job, fmt::format("error: frame {}: {}", job.frame->number, e.what()));
         }
         job.scene.reset();
         job.interpreter.reset();
@@ -609,6 +768,10 @@ class Run {
             ++finished_;
             kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});
             progress_.finished(frame.number, true);
+            logEvent(LogLevel::Info, "kept",
+                     {{"frame", frame.number},
+                      {"clock", frame.clock},
+                      {"file", frame.output.filename().string()}});
             if (o_.verbose)
                 say(TextStream::Render,
                     fmt::format("frame {} ({} of {}): {} is finished already (Continue_Trace)\n",
@@ -616,7 +779,19 @@ class Run {
             return;
         }
         FrameLog& log = *job.log;
-        if (!job.failed && o_.outputToFile) {
+        if (!job.failed && toStdout_) {
+            const auto start = Clock::now();
+            if (std::fwrite(job.encoded.data(), 1, job.encoded.size(), stdout) !=
+                    job.encoded.size() ||
+                std::fflush(stdout) != 0) {
+                failJob(job, fmt::format("error: frame {}: cannot write the image to standard "
+                                         "output: {}",
+                                         frame.number, std::strerror(errno)));
+            }
+            job.encoded = {};
+            job.commitSeconds = secondsSince(start);
+            job.writeSeconds += job.commitSeconds;
+        } else if (!job.failed && toFiles_) {
             const auto start = Clock::now();
             try {
                 image::commitTemporary(job.temporary, frame.output);
@@ -624,29 +799,41 @@ class Run {
                 if (journal_) {
                     std::lock_guard lock(journalMutex_);
                     journal_->record(frame.number, clockText(frame.clock), frame.output,
-                                     job.fileSize, job.fileHash);
+                                     job.fileSize, job.fileHash, job.inputs, job.written);
                 }
             } catch (const std::exception& e) {
-                log.message(sdl::Stream::Fatal,
-                            fmt::format("error: frame {}: {}", frame.number, e.what()));
-                job.failed = true;
+                failJob(job, fmt::format("error: frame {}: {}", frame.number, e.what()));
             }
             job.commitSeconds = secondsSince(start);
             job.writeSeconds += job.commitSeconds;
         }
         if (job.failed) {
-            if (o_.outputToFile) saveLog(log, frame);
+            logEvent(LogLevel::Error, "failed",
+                     {{"frame", frame.number}, {"clock", frame.clock}, {"reason", job.failure}});
+            if (toFiles_) saveLog(log, frame);
             return decide({Outcome::Kind::Fatal, "", &frame});
         }
         ++finished_;
         records_.push_back({frame.number, frame.clock, frame.output.filename().string(),
                             job.stats.rays, std::move(job.shapeTests), job.parseSeconds,
                             job.prepareSeconds, job.renderSeconds, job.writeSeconds,
-                            job.commitSeconds});
+                            job.commitSeconds, job.stats.photons});
         const double seconds =
             job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
-        const std::string where =
-            o_.outputToFile ? frame.output.string() : std::string("(no file)");
+        const std::string where = toFiles_    ? frame.output.string()
+                                  : toStdout_ ? std::string("(standard output)")
+                                              : std::string("(no file)");
+        logEvent(LogLevel::Info, "written",
+                 {{"frame", frame.number},
+                  {"clock", frame.clock},
+                  {"file", toFiles_ ? frame.output.filename().string() : std::string()},
+                  {"bytes", job.fileSize},
+                  {"parse_seconds", job.parseSeconds},
+                  {"prepare_seconds", job.prepareSeconds},
+                  {"render_seconds", job.renderSeconds},
+                  {"write_seconds", job.writeSeconds},
+                  {"camera_rays", job.stats.rays.camera},
+                  {"shadow_rays", job.stats.rays.shadow}});
         if (o_.verbose) {
             log.message(TextStream::Render, fmt::format("frame {} ({} of {}): {}\n", frame.number,
                                                         index, seq_.frames.size(), where));
@@ -664,8 +851,7 @@ class Run {
         }
         // The image is complete and journalled already: a log that cannot
         // be written ends the run but keeps the frame.
-        if (o_.outputToFile && !saveLog(log, frame))
-            return decide({Outcome::Kind::Fatal, "", &frame});
+        if (toFiles_ && !saveLog(log, frame)) return decide({Outcome::Kind::Fatal, "", &frame});
         progress_.finished(frame.number, false);
         switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
             case HookAction::Continue:
@@ -714,7 +900,7 @@ class Run {
     // frames of an animation: per-frame statistics, their sums, and how
     // busy the cores were.
     void writeStatistics() const {
-        if (!o_.outputToFile || !seq_.animated || seq_.frames.empty()) return;
+        if (!toFiles_ || !seq_.animated || seq_.frames.empty()) return;
         const fs::path dir = seq_.frames.front().output.parent_path();
         const fs::path path = (dir.empty() ? fs::path(".") : dir) / seq_.statisticsName;
         const std::string text = sequenceJson(figures(), records_, kept_);
@@ -777,6 +963,7 @@ class Run {
 
     int userAbort() {
         acknowledgeStop();
+        logEvent(LogLevel::Warn, "interrupted", {{"frames_finished", finished_.load()}});
         say(TextStream::Fatal, stopMessage());
         runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
         return 2;
@@ -802,11 +989,46 @@ class Run {
     static constexpr size_t kMaxDefaultFramesInFlight = 16;
 
     const options::RenderOptions& o_;
+    // Output_File_Name=- (+O-): the images go to standard output, one
+    // after another in frame order (povray writes them there too); no
+    // files, journal, frame logs or sequence.json then.
+    const bool toStdout_ = o_.outputToFile && o_.outputFile == "-";
+    const bool toFiles_ = o_.outputToFile && !toStdout_;
+
+    // povray writes grey PNG files with 16 bits whatever the depth asked
+    // (measured: Grayscale_Output with +FN8 gives a 16-bit grey PNG).
+    int fileBitDepth() const {
+        return o_.grayscaleOutput && seq_.fileType == image::FileType::PNG ? 16 : o_.bitDepth;
+    }
+
+    // A rendered frame as the file's values: gamma, window, alpha, grey
+    // (Grayscale_Output) and the dithering asked for (Dither).
+    image::EncodedImage fileImage(const render::FrameImage& frame,
+                                  const image::GammaEncoding& gamma) const {
+        image::EncodedImage out =
+            image::encodeFrame(frame.width, frame.height, frame.rgb, frame.alpha, gamma,
+                               fileBitDepth(), seq_.window, o_.grayscaleOutput);
+        if (o_.dither) {
+            static constexpr std::pair<std::string_view, image::Dither> kMethods[] = {
+                {"FS", image::Dither::FloydSteinberg},
+                {"B2", image::Dither::Bayer2},
+                {"B3", image::Dither::Bayer3},
+                {"B4", image::Dither::Bayer4}};
+            for (const auto& [name, method] : kMethods)
+                if (o_.ditherMethod == name) out.dither = method;
+        }
+        return out;
+    }
     const Sequence& seq_;
     mutable RunStreams streams_;
     Progress progress_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
+    std::unique_ptr<RunLog> runLog_;  // null: no run log
+    FileHashes hashes_;               // input files' hashes, read once per run
+    // Files the sequence's frames wrote (stage 1 adds each frame's as it
+    // is parsed): state passed between frames, not inputs.
+    std::set<std::string> written_;
     std::mutex journalMutex_;
     std::atomic<const FrameSpec*> current_{nullptr};  // the oldest frame in flight
     std::atomic<size_t> finished_{0};

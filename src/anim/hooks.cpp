@@ -6,23 +6,77 @@
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 
 namespace frameray::anim {
 
+namespace {
+
+// Where a position in a /bin/sh command is: outside quotes, or inside
+// '...' or "...".
+enum class Quoting { None, Single, Double };
+
+bool plainWord(const std::string& text) {
+    if (text.empty()) return false;
+    for (const char c : text)
+        if (!std::isalnum(static_cast<unsigned char>(c)) &&
+            std::string_view("_./+-,:=@").find(c) == std::string_view::npos)
+            return false;
+    return true;
+}
+
+// `text` (a file or scene name, which the scene's INI file may choose)
+// as the shell reads it back literally where it is inserted: a file named
+// y$(touch x).png must not run touch.
+std::string shellQuoted(const std::string& text, Quoting where) {
+    std::string out;
+    switch (where) {
+        case Quoting::None:
+            if (plainWord(text)) return text;
+            out = "'";
+            for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+            return out + "'";
+        case Quoting::Single:
+            for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+            return out;
+        case Quoting::Double:
+            for (const char c : text) {
+                if (c == '\\' || c == '"' || c == '$' || c == '`') out += '\\';
+                out += c;
+            }
+            return out;
+    }
+    return out;
+}
+
+}  // namespace
+
 std::string substituteCommand(const std::string& command, const HookValues& v) {
     std::string out;
+    Quoting quoting = Quoting::None;
     for (size_t i = 0; i < command.size(); ++i) {
-        if (command[i] != '%' || i + 1 == command.size()) {
-            out += command[i];
+        const char c = command[i];
+        if (c != '%' || i + 1 == command.size()) {
+            out += c;
+            // Follow the shell's quoting, so that a substitution is quoted
+            // for where it lands.
+            if (c == '\\' && quoting != Quoting::Single && i + 1 < command.size()) {
+                out += command[++i];
+            } else if (c == '\'' && quoting != Quoting::Double) {
+                quoting = quoting == Quoting::Single ? Quoting::None : Quoting::Single;
+            } else if (c == '"' && quoting != Quoting::Single) {
+                quoting = quoting == Quoting::Double ? Quoting::None : Quoting::Double;
+            }
             continue;
         }
-        const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(command[++i])));
-        switch (c) {
+        const char letter =
+            static_cast<char>(std::tolower(static_cast<unsigned char>(command[++i])));
+        switch (letter) {
             case 'o':
-                out += v.output;
+                out += shellQuoted(v.output, quoting);
                 break;
             case 's':
-                out += v.scene;
+                out += shellQuoted(v.scene, quoting);
                 break;
             case 'n':
                 out += std::to_string(v.frame);

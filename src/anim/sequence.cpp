@@ -150,7 +150,7 @@ int windowEnd(double v, int size) {
 }  // namespace
 
 void checkOutputFolder(const options::RenderOptions& o, const Sequence& seq) {
-    if (!o.outputToFile || seq.frames.empty() ||
+    if (!o.outputToFile || seq.frames.empty() || o.outputFile == "-" ||
         (!o.outputFile.empty() && o.outputFile.back() == '/'))
         return;
     const fs::path folder = seq.frames.front().output.parent_path();
@@ -167,6 +167,7 @@ Sequence planSequence(const options::RenderOptions& o) {
     Sequence seq;
     seq.fileType = fileTypeFor(o.outputType);
     seq.sceneName = fs::path(o.inputFile).stem().string();
+    seq.runLogName = seq.sceneName + ".frameray.log";
 
     // Render window.
     seq.window.x0 = windowStart(o.startColumn, o.width);
@@ -259,6 +260,7 @@ Sequence planSequence(const options::RenderOptions& o) {
         seq.journal = firstOut.parent_path() /
                       fmt::format(".{}.{}.frameray-journal", firstOut.stem().string(), tag);
         seq.statisticsName = fmt::format("sequence.{}.json", tag);
+        seq.runLogName = fmt::format("{}.{}.frameray.log", seq.sceneName, tag);
     }
     return seq;
 }

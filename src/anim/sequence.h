@@ -93,6 +93,9 @@ struct Sequence {
     int shardIndex = 0, shardCount = 1;
     size_t framesInAllShards = 0;
     std::string statisticsName = "sequence.json";
+    // frameray's run log beside the frames (anim/run_log.h): NAME.frameray.log,
+    // a shard's NAME.shard-I-of-N.frameray.log.
+    std::string runLogName;
 };
 
 // Throws options::OptionError when the options make no sense (a render

@@ -26,6 +26,16 @@ std::string jsonTests(const render::ShapeTestCounts& tests) {
     return out + "}";
 }
 
+// The photon map of a frame: photons shot and kept, the bytes the map
+// holds, the gather radius and spacing used.
+std::string jsonPhotons(const std::optional<render::PhotonStats>& p) {
+    if (!p) return "";
+    return fmt::format(
+        ", \"photons\": {{\"shot\": {}, \"stored\": {}, \"memory_bytes\": {}, "
+        "\"gather_radius\": {:.6g}, \"spacing\": {:.6g}}}",
+        p->shot, p->stored, p->memoryBytes, p->gatherRadius, p->spacing);
+}
+
 std::uint64_t totalRays(const render::RayCounts& r) {
     return r.camera + r.shadow + r.reflection + r.refraction + r.transmission + r.radiosity;
 }
@@ -85,11 +95,12 @@ std::string sequenceJson(const RunFigures& run, const std::vector<FrameRecord>& 
             "\"write_seconds\": {:.6f},\n     \"stats\": {{\"rays\": {}, \"intersection_tests\": "
             "{}, "
             "\"parse_seconds\": {:.6f}, \"prepare_seconds\": {:.6f}, \"render_seconds\": {:.6f}, "
-            "\"write_seconds\": {:.6f}, \"commit_seconds\": {:.6f}}}}}",
+            "\"write_seconds\": {:.6f}, \"commit_seconds\": {:.6f}{}}}}}",
             r.number, clockText(r.clock), jsonString(r.file), jsonRays(r.rays), r.parseSeconds,
             r.prepareSeconds, r.prepareSeconds + r.renderSeconds, r.writeSeconds, jsonRays(r.rays),
             jsonTests(r.shapeTests), r.parseSeconds, r.prepareSeconds,
-            r.prepareSeconds + r.renderSeconds, r.writeSeconds, r.commitSeconds);
+            r.prepareSeconds + r.renderSeconds, r.writeSeconds, r.commitSeconds,
+            jsonPhotons(r.photons));
     }
     std::string keptList;
     for (const KeptFrame& k : kept) {

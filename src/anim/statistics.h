@@ -4,9 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "render/photons.h"
 #include "render/tracer.h"
 #include "render/world.h"
 
@@ -22,6 +24,7 @@ struct FrameRecord {
     double parseSeconds = 0, prepareSeconds = 0, renderSeconds = 0, writeSeconds = 0;
     // The part of writeSeconds spent in the serial stage (rename, journal).
     double commitSeconds = 0;
+    std::optional<render::PhotonStats> photons;  // when the scene shot photons
 };
 
 // A frame an earlier run finished, kept by Continue_Trace (+C).

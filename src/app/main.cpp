@@ -2,8 +2,8 @@
 // switches. Wiring only: options -> sequence -> frame loop.
 #include <tbb/global_control.h>
 
+#include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,13 +11,19 @@
 #include "anim/frame_loop.h"
 #include "anim/interrupt.h"
 #include "anim/sequence.h"
+#include "app/version.h"
 #include "options/option_table.h"
 #include "options/options.h"
+#include "util/durable_file.h"
 
 int main(int argc, char** argv) {
     using namespace frameray;
     // First, before any thread exists: Ctrl-C is handled by a watcher.
     anim::installInterruptWatcher();
+    // A write past `ulimit -f` would kill the process with SIGXFSZ and no
+    // word; ignored, the write fails with EFBIG ("File too large") and the
+    // frame ends with that message, as a full disk does.
+    std::signal(SIGXFSZ, SIG_IGN);
 
     std::vector<std::string> args(argv + 1, argv + argc);
     // --list-frames: print the frames the options ask for (number, clock,
@@ -29,6 +35,9 @@ int main(int argc, char** argv) {
     for (const std::string& a : args)
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);
+            return 0;
+        } else if (a == "--version" || a == "-version" || a == "--V") {  // povray's spellings
+            std::fputs(app::versionText().c_str(), stdout);
             return 0;
         } else if (a == "--options-markdown") {
             std::fputs(options::optionsMarkdown().c_str(), stdout);
@@ -48,11 +57,12 @@ int main(int argc, char** argv) {
         if (opts.inputFile.empty())
             throw options::OptionError("no scene file given (Input_File_Name or +I)");
         if (!opts.createIni.empty()) {
-            std::ofstream ini(opts.createIni, std::ios::trunc);
-            ini << options::createIniText(opts);
-            if (!ini)
-                throw options::OptionError("cannot write the Create_Ini file '" + opts.createIni +
-                                           "'");
+            // Replaced, never written through a link planted under its name.
+            try {
+                util::replaceFileDurably(opts.createIni, options::createIniText(opts));
+            } catch (const std::exception& e) {
+                throw options::OptionError(std::string("Create_Ini: ") + e.what());
+            }
         }
         if (listFrames) {
             const anim::Sequence planned = anim::planSequence(opts);
@@ -60,10 +70,12 @@ int main(int argc, char** argv) {
                 std::printf("%d %.17g %s\n", f.number, f.clock, f.output.c_str());
             return 0;
         }
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(opts.inputFile, ec))
+        // As povray: the working folder, then the library path (+L).
+        const std::filesystem::path scene = options::findSceneFile(opts);
+        if (scene.empty())
             throw options::OptionError("cannot open scene file '" + opts.inputFile +
                                        "': no such file");
+        opts.inputFile = scene.string();
         // Options whose effect is not built yet must not be silently
         // ignored; the option table says which values need what.
         if (const std::string missing = options::firstUnsupported(opts); !missing.empty())

@@ -34,10 +34,12 @@ struct EncodeRequest {
 struct CodecTable {
     // The encoded file's bytes. Throws std::runtime_error.
     std::vector<unsigned char> (*encode)(const EncodeRequest& request);
-    // Any image OpenImageIO reads, as floats in [0,1]. Throws.
-    EncodedImage (*read)(const std::string& path);
-    // Alpha kept as stored (not multiplied into the colour); the file's
-    // declared gamma in `declaredGamma` (0: none). Throws.
+    // Any image OpenImageIO reads, as floats in [0,1]; alpha as stored
+    // when `unassociatedAlpha`, else multiplied into the colour. Throws.
+    EncodedImage (*read)(const std::string& path, bool unassociatedAlpha);
+    // At the file's bit depth (8, 16 bits, else floats), at most 4
+    // channels, alpha kept as stored (not multiplied into the colour); the
+    // file's declared gamma in `declaredGamma` (0: none). Throws.
     SourceImage (*readSource)(const std::string& path);
 };
 

@@ -5,11 +5,37 @@
 
 #include <algorithm>
 
+#include "util/color.h"
+
 namespace frameray::image {
+
+namespace {
+
+// Colour file values to povray's grey ones (see encodeFrame).
+EncodedImage toGrey(const EncodedImage& colour) {
+    EncodedImage out;
+    out.width = colour.width;
+    out.height = colour.height;
+    out.bitDepth = colour.bitDepth;
+    const int in = colour.channels;
+    out.channels = in == 4 ? 2 : 1;
+    const size_t pixels = static_cast<size_t>(colour.width) * colour.height;
+    out.values.assign(pixels * out.channels, 0.0f);
+    for (size_t p = 0; p < pixels; ++p) {
+        const float* c = &colour.values[p * in];
+        out.values[p * out.channels] = static_cast<float>(grey(c[0], c[1], c[2]));
+        if (in == 4) out.values[p * out.channels + 1] = c[3];
+    }
+    return out;
+}
+
+}  // namespace
 
 EncodedImage encodeFrame(int width, int height, const std::vector<float>& rgb,
                          const std::vector<float>& alphaValues, const GammaEncoding& gamma,
-                         int bitDepth, const RenderWindow& window) {
+                         int bitDepth, const RenderWindow& window, bool grey) {
+    if (grey)
+        return toGrey(encodeFrame(width, height, rgb, alphaValues, gamma, bitDepth, window, false));
     EncodedImage out;
     out.width = width;
     out.height = height;

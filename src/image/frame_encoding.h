@@ -22,8 +22,12 @@ struct RenderWindow {
 // add (premultiplied). Pixels outside `window` are written black (and
 // transparent), as povray does; with alpha the colour is written
 // un-premultiplied (povray writes encode(colour / alpha), measured).
+// `grey` (Grayscale_Output): one channel (two with alpha), povray's grey
+// of the encoded colour: 0.297 R' + 0.589 G' + 0.114 B' (measured: povray
+// 3.7's 16-bit grey PNG and PPM equal that to within one level, 8-bit PPM
+// equals it rounded; it is not a luminance of the linear colour).
 EncodedImage encodeFrame(int width, int height, const std::vector<float>& rgb,
                          const std::vector<float>& alpha, const GammaEncoding& gamma, int bitDepth,
-                         const RenderWindow& window);
+                         const RenderWindow& window, bool grey = false);
 
 }  // namespace frameray::image

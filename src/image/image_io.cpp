@@ -10,9 +10,13 @@
 #include <stdexcept>
 
 #include "image/codecs.h"
+#include "image/dither.h"
 #include "image/gif_decoder.h"
-#include "image/png_palette.h"
+#include "image/jpeg_reader.h"
+#include "image/png_reader.h"
 #include "image/png_writer.h"
+#include "image/pnm_reader.h"
+#include "image/tga_reader.h"
 #include "util/durable_file.h"
 
 namespace frameray::image {
@@ -42,18 +46,14 @@ const TypeInfo& info(FileType t) {
 
 // Rounds to `bits` bits, then spreads the levels over the container's
 // range (a 5-bit level 14 in an 8-bit channel is 14*255/31 = 115).
+// Rounded or dithered as the image says (image/dither.h); NaN is black.
 template <typename T>
-std::vector<T> quantize(const std::vector<float>& values, int bits, double containerMax) {
+std::vector<T> quantize(const EncodedImage& image, int bits, double containerMax) {
     const double levels = std::ldexp(1.0, bits) - 1.0;
-    std::vector<T> out(values.size());
-    for (size_t i = 0; i < values.size(); ++i) {
-        // NaN (a scene's NaN light, say) is written black, as povray does;
-        // converting it to an integer would be undefined.
-        const double v =
-            std::isnan(values[i]) ? 0.0 : std::clamp(static_cast<double>(values[i]), 0.0, 1.0);
-        const double q = std::floor(v * levels + 0.5);
-        out[i] = static_cast<T>(std::floor(q * containerMax / levels + 0.5));
-    }
+    const std::vector<double> q = quantizeToLevels(image, levels);
+    std::vector<T> out(q.size());
+    for (size_t i = 0; i < q.size(); ++i)
+        out[i] = static_cast<T>(std::floor(q[i] * containerMax / levels + 0.5));
     return out;
 }
 
@@ -92,6 +92,18 @@ void writeAtomic(const fs::path& path, FileType type, const EncodedImage& image)
 }
 
 fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage& image) {
+    const std::vector<unsigned char> bytes = encodeFile(type, image, path);
+    // Unique per process and target, in the same folder so the rename is
+    // atomic; on the device before it is renamed and journalled, so a frame
+    // the journal calls finished survives a power cut.
+    const fs::path tmp = temporaryPathFor(path);
+    util::writeFileDurably(
+        tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
+    return tmp;
+}
+
+std::vector<unsigned char> encodeFile(FileType type, const EncodedImage& image,
+                                      const fs::path& path) {
     const TypeInfo& ti = info(type);
     const bool floatFile = type == FileType::EXR || type == FileType::HDR;
     const int bits = std::clamp(image.bitDepth, 1, hasDeepChannels(type) ? 16 : 8);
@@ -109,11 +121,11 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
         request.pixelType = PixelType::Half;
         request.pixels = image.values.data();
     } else if (deep) {
-        samples16 = quantize<uint16_t>(image.values, bits, 65535.0);
+        samples16 = quantize<uint16_t>(image, bits, 65535.0);
         request.pixelType = PixelType::UInt16;
         request.pixels = samples16.data();
     } else {
-        samples8 = quantize<uint8_t>(image.values, bits, 255.0);
+        samples8 = quantize<uint8_t>(image, bits, 255.0);
         request.pixelType = PixelType::UInt8;
         request.pixels = samples8.data();
     }
@@ -126,13 +138,7 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(fmt::format("cannot encode '{}': {}", path.string(), e.what()));
     }
-    // Unique per process and target, in the same folder so the rename is
-    // atomic; on the device before it is renamed and journalled, so a frame
-    // the journal calls finished survives a power cut.
-    const fs::path tmp = temporaryPathFor(path);
-    util::writeFileDurably(
-        tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
-    return tmp;
+    return bytes;
 }
 
 void commitTemporary(const fs::path& tmp, const fs::path& path) {
@@ -140,7 +146,7 @@ void commitTemporary(const fs::path& tmp, const fs::path& path) {
 }
 
 EncodedImage read(const fs::path& path) {
-    return codecs().read(path.string());
+    return codecs().read(path.string(), false);
 }
 
 namespace {
@@ -152,36 +158,38 @@ bool hasGifSignature(const fs::path& path) {
     return file && std::string(magic, 4) == "GIF8";
 }
 
+bool hasExtension(const fs::path& path, const char* extension) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == extension;
+}
+
+SourceImage fromGif(const fs::path& path) {
+    PaletteImage gif = readGif(path);
+    auto pixels = std::make_shared<util::PixelBuffer>(gif.width, gif.height, 1,
+                                                      util::PixelBuffer::Sample::U8);
+    std::copy(gif.indices.begin(), gif.indices.end(), pixels->data());
+    std::vector<std::array<uint8_t, 4>> palette;
+    for (const auto& c : gif.palette) palette.push_back({c[0], c[1], c[2], 255});
+    pixels->setPalette(std::move(palette), false);
+    SourceImage src;
+    src.pixels = std::move(pixels);
+    return src;
+}
+
 }  // namespace
 
 SourceImage readSource(const fs::path& path) {
-    SourceImage src;
-    if (hasGifSignature(path)) {
-        PaletteImage gif = readGif(path);
-        EncodedImage& img = src.pixels;
-        img.width = gif.width;
-        img.height = gif.height;
-        img.channels = 3;
-        img.values.reserve(gif.indices.size() * 3);
-        for (const uint8_t i : gif.indices) {
-            std::array<uint8_t, 3> c{};
-            if (i < gif.palette.size()) c = gif.palette[i];
-            for (const uint8_t v : c) img.values.push_back(static_cast<float>(v) / 255.0f);
-        }
-        src.indices = std::move(gif.indices);
-        src.palette = std::move(gif.palette);
-        return src;
-    }
-    SourceImage read = codecs().readSource(path.string());
-    // Palette PNGs: the colours come from OpenImageIO as for any PNG, the
-    // indices from libpng.
-    if (auto palette = readPalettePng(path)) {
-        if (palette->width == read.pixels.width && palette->height == read.pixels.height) {
-            read.indices = std::move(palette->indices);
-            read.palette = std::move(palette->palette);
-        }
-    }
-    return read;
+    // By signature first (a file's name may not say what it holds), TGA
+    // (which has none) by its extension.
+    if (hasPngSignature(path)) return readPng(path);
+    if (hasGifSignature(path)) return fromGif(path);
+    if (hasJpegSignature(path))
+        if (auto jpeg = readJpeg(path)) return std::move(*jpeg);
+    if (hasPnmSignature(path)) return readPnm(path);
+    if (hasExtension(path, ".tga")) return readTga(path);
+    return codecs().readSource(path.string());
 }
 
 }  // namespace frameray::image

@@ -44,41 +44,52 @@ std::vector<unsigned char> encode(const EncodeRequest& r) {
     return bytes;
 }
 
-// Opens `path` (with `config`) and reads at most `maxChannels` channels as
-// floats; the spec is handed to `info`.
-template <typename Info>
-EncodedImage readFloats(const std::string& path, const OIIO::ImageSpec* config, int maxChannels,
-                        Info info) {
-    auto in = OIIO::ImageInput::open(path, config);
+// Opens `path`, keeping alpha as stored when `unassociated` (OpenImageIO
+// would otherwise multiply it into the colour of PNG and TGA files).
+std::unique_ptr<OIIO::ImageInput> openImage(const std::string& path, bool unassociated) {
+    OIIO::ImageSpec config;
+    if (unassociated) config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) throw std::runtime_error(fmt::format("cannot read '{}': {}", path, OIIO::geterror()));
+    return in;
+}
+
+EncodedImage read(const std::string& path, bool unassociatedAlpha) {
+    auto in = openImage(path, unassociatedAlpha);
     const OIIO::ImageSpec& spec = in->spec();
     EncodedImage img;
     img.width = spec.width;
     img.height = spec.height;
-    img.channels = std::min(spec.nchannels, maxChannels);
+    img.channels = spec.nchannels;
     img.bitDepth = static_cast<int>(spec.format.size() * 8);
     img.values.resize(static_cast<size_t>(spec.width) * spec.height * img.channels);
     if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.values.data()))
         throw std::runtime_error(fmt::format("cannot read '{}': {}", path, in->geterror()));
-    info(spec);
     in->close();
     return img;
 }
 
-EncodedImage read(const std::string& path) {
-    return readFloats(path, nullptr, 1 << 16, [](const OIIO::ImageSpec&) {});
-}
-
 SourceImage readSource(const std::string& path) {
-    // Keep alpha as stored: OpenImageIO would otherwise multiply it into
-    // the colour of PNG and TGA files.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    SourceImage src;
+    auto in = openImage(path, true);
+    const OIIO::ImageSpec& spec = in->spec();
+    // At the file's depth: 8 and 16-bit integers as they are, the rest
+    // (half, float, 32-bit integers) as floats.
+    using Sample = util::PixelBuffer::Sample;
+    const Sample sample = spec.format == OIIO::TypeDesc::UINT8    ? Sample::U8
+                          : spec.format == OIIO::TypeDesc::UINT16 ? Sample::U16
+                                                                  : Sample::F32;
+    const OIIO::TypeDesc type = sample == Sample::U8    ? OIIO::TypeDesc::UINT8
+                                : sample == Sample::U16 ? OIIO::TypeDesc::UINT16
+                                                        : OIIO::TypeDesc::FLOAT;
     // Channels past RGBA (EXR layers) are not needed.
-    src.pixels = readFloats(path, &config, 4, [&](const OIIO::ImageSpec& spec) {
-        src.declaredGamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
-    });
+    const int channels = std::min(spec.nchannels, 4);
+    auto pixels = std::make_shared<util::PixelBuffer>(spec.width, spec.height, channels, sample);
+    if (!in->read_image(0, 0, 0, channels, type, pixels->data()))
+        throw std::runtime_error(fmt::format("cannot read '{}': {}", path, in->geterror()));
+    SourceImage src;
+    src.declaredGamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
+    src.pixels = std::move(pixels);
+    in->close();
     return src;
 }
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "util/file_paths.h"
+
 namespace frameray::options {
 
 namespace fs = std::filesystem;
@@ -32,33 +34,17 @@ std::vector<NamedPath> namedPaths(const RenderOptions& o) {
     return out;
 }
 
-fs::path resolvedForTrust(const fs::path& path) {
-    std::error_code ec;
-    fs::path absolute = fs::absolute(path.empty() ? fs::path(".") : path, ec);
-    if (ec) absolute = path;
-    fs::path canonical = fs::weakly_canonical(absolute, ec);
-    if (ec) canonical = absolute.lexically_normal();
-    if (!canonical.has_filename() && canonical.has_parent_path() &&
-        canonical != canonical.root_path())
-        canonical = canonical.parent_path();
-    return canonical;
-}
-
 std::vector<fs::path> trustRoots(const fs::path& iniFolder) {
     std::error_code ec;
-    std::vector<fs::path> roots{resolvedForTrust(fs::current_path(ec))};
-    const fs::path folder = resolvedForTrust(iniFolder.empty() ? fs::path(".") : iniFolder);
+    std::vector<fs::path> roots{resolvedPath(fs::current_path(ec))};
+    const fs::path folder = resolvedPath(iniFolder.empty() ? fs::path(".") : iniFolder);
     if (std::find(roots.begin(), roots.end(), folder) == roots.end()) roots.push_back(folder);
     return roots;
 }
 
 bool insideTrustRoots(const fs::path& path, const std::vector<fs::path>& roots) {
-    return std::any_of(roots.begin(), roots.end(), [&](const fs::path& root) {
-        auto p = path.begin();
-        for (auto r = root.begin(); r != root.end(); ++r, ++p)
-            if (p == path.end() || *p != *r) return false;
-        return true;
-    });
+    return std::any_of(roots.begin(), roots.end(),
+                       [&](const fs::path& root) { return isInsideFolder(path, root); });
 }
 
 std::string untrustedPathRefusal(const std::vector<NamedPath>& before,
@@ -66,11 +52,11 @@ std::string untrustedPathRefusal(const std::vector<NamedPath>& before,
                                  const std::vector<fs::path>& roots, const std::string& where) {
     for (const NamedPath& named : after) {
         if (std::find(before.begin(), before.end(), named) != before.end()) continue;
-        const fs::path resolved = resolvedForTrust(named.path);
+        const fs::path resolved = resolvedPath(named.path);
         if (insideTrustRoots(resolved, roots)) continue;
         // Every scene may read the standard include files anyway.
         if (named.key == "Library_Path" &&
-            insideTrustRoots(resolved, {resolvedForTrust(kStandardIncludeFolder)}))
+            insideTrustRoots(resolved, {resolvedPath(kStandardIncludeFolder)}))
             continue;
         const std::string what =
             named.key == "INI file" ? fmt::format("the INI file '{}':", named.path)

@@ -29,15 +29,11 @@ struct NamedPath {
 // Every path the options name (empty ones left out).
 std::vector<NamedPath> namedPaths(const RenderOptions& options);
 
-// `path` made absolute from the working folder, '..' and symbolic links of
-// its existing part resolved, without a trailing separator.
-std::filesystem::path resolvedForTrust(const std::filesystem::path& path);
-
 // The folders an untrusted INI file may name paths in: the working folder
 // and `iniFolder`, resolved.
 std::vector<std::filesystem::path> trustRoots(const std::filesystem::path& iniFolder);
 
-// Whether `path` (resolved with resolvedForTrust) lies inside one of
+// Whether `path` (resolved with util/file_paths.h's resolvedPath) lies inside one of
 // `roots` (or is one).
 bool insideTrustRoots(const std::filesystem::path& path,
                       const std::vector<std::filesystem::path>& roots);

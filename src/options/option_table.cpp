@@ -6,7 +6,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 #include <stdexcept>
+#include <utility>
 
 namespace frameray::options {
 
@@ -75,6 +77,20 @@ double toNonNegative(std::string_view text) {
     if (v < 0) throw std::invalid_argument(fmt::format("'{}' must not be negative", text));
     return v;
 }
+
+// One of a fixed set of words (case-insensitive), e.g. Log_Level's.
+template <typename T>
+T choice(std::string_view text, std::initializer_list<std::pair<std::string_view, T>> words) {
+    const std::string v = trimQuotes(text);
+    std::string names;
+    for (const auto& [word, value] : words) {
+        if (iequals(v, word)) return value;
+        names += fmt::format("{}{}", names.empty() ? "" : ", ", word);
+    }
+    throw std::invalid_argument(fmt::format("'{}' is not one of {}", text, names));
+}
+
+constexpr std::string_view kLogLevelNames[] = {"debug", "info", "warn", "error", "off"};
 
 void mark(RenderOptions& o, std::string_view key) {
     o.explicitlySet.emplace(key);
@@ -147,6 +163,11 @@ void applyCommand(RenderOptions& o, const OptionInput& in) {
 template <ShellHook H>
 void applyReturn(RenderOptions& o, const OptionInput& in) {
     const std::string v = trimQuotes(in.value);
+    // Empty (`Pre_Frame_Return=` in povray's own pngfli.ini): the default.
+    if (v.empty()) {
+        o.commands[static_cast<int>(H)].action.clear();
+        return;
+    }
     std::string_view letters(v);
     if (!letters.empty() && (letters[0] == '-' || letters[0] == '!')) letters.remove_prefix(1);
     if (letters.size() != 1 ||
@@ -170,6 +191,52 @@ std::string quoted(const std::string& s) {
     return fmt::format("\"{}\"", s);
 }
 using Lines = std::vector<std::string>;
+
+// Options frameray reads but that change nothing in its output: the value
+// is checked as POV-Ray checks it and kept for Create_Ini.
+void acceptBool(RenderOptions& o, const OptionInput& in) {
+    o.acceptedValues[std::string(in.key)] = onOff(toBool(in));
+}
+void acceptInt(RenderOptions& o, const OptionInput& in) {
+    o.acceptedValues[std::string(in.key)] = num(toInt(in.value));
+}
+void acceptPath(RenderOptions& o, const OptionInput& in) {
+    o.acceptedValues[std::string(in.key)] = quoted(trimQuotes(in.value));
+}
+// A one-letter setting (Palette, Video_Mode); povray keeps the first
+// letter, in lower case.
+void acceptLetter(RenderOptions& o, const OptionInput& in) {
+    const std::string v = trimQuotes(in.value);
+    if (v.empty()) throw std::invalid_argument("a letter is expected");
+    o.acceptedValues[std::string(in.key)] =
+        std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(v[0]))));
+}
+// POV-Ray 3.6 options 3.7 dropped: read, not checked, not written back.
+void acceptObsolete(RenderOptions&, const OptionInput&) {}
+bool acceptedOn(const RenderOptions& o, std::string_view key) {
+    const auto it = o.acceptedValues.find(key);
+    return it != o.acceptedValues.end() && it->second == "On";
+}
+Lines writeNothing(const RenderOptions&) {
+    return {};
+}
+
+#define FR_NO_EFFECT(text) [](const OptionInput&) -> const char* { return text; }
+// An option without effect in frameray: KEY, SWITCH, TYPE, DEFAULT, HELP,
+// APPLY (one of the accept* above), WHY (said once when it is set).
+#define FR_ACCEPTED(KEY, SW, TYPE, DEF, HELP, APPLY, WHY) \
+    { KEY, SW, OptionType::TYPE, DEF, HELP, APPLY, nullptr, nullptr, FR_NO_EFFECT(WHY) }
+#define FR_OBSOLETE(KEY, SW, TYPE, HELP)                                                           \
+    {                                                                                              \
+        KEY, SW, OptionType::TYPE, "", HELP " (POV-Ray 3.6; no longer used).", acceptObsolete,     \
+            writeNothing, nullptr,                                                                 \
+            FR_NO_EFFECT("POV-Ray 3.7 no longer uses it either (it says it will become an error)") \
+    }
+constexpr const char* kPovrayIgnores = "POV-Ray 3.7 ignores it too";
+constexpr const char* kNoPreview = "frameray renders without a preview window";
+
+// Dither_Method's names in POV-Ray 3.7 (3.7.1's A2/A3 are not among them).
+constexpr std::string_view kDitherMethods[] = {"FS", "B2", "B3", "B4"};
 
 #define FR_WRITE(expr) [](const RenderOptions& o) -> Lines { return {expr}; }
 
@@ -266,12 +333,22 @@ const OptionSpec kOptions[] = {
      "Gamma in which anti-aliasing compares colours (0: linear light).",
      [](RenderOptions& o, const OptionInput& in) { o.antialiasGamma = toNonNegative(in.value); },
      FR_WRITE(num(o.antialiasGamma)), nullptr},
+    {"Append_File", "GP", OptionType::Bool, "off",
+     "Append to the text stream files (All_File, Debug_File, ...) instead of replacing them.",
+     [](RenderOptions& o, const OptionInput& in) { o.appendFile = toBool(in); },
+     FR_WRITE(onOff(o.appendFile)), nullptr},
     {"Bits_Per_Color", "", OptionType::Int, "8",
      "Bits per colour channel of the output file (also +FN16).",
      [](RenderOptions& o, const OptionInput& in) {
          o.bitDepth = std::clamp(toInt(in.value), 1, 16);
      },
      FR_WRITE(num(o.bitDepth)), nullptr},
+    {"Bits_Per_Colour", "", OptionType::Int, "8", "Bits_Per_Color in British spelling.",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.bitDepth = std::clamp(toInt(in.value), 1, 16);
+         mark(o, "Bits_Per_Color");
+     },
+     writeNothing, nullptr},
     {"Bounding", "MB", OptionType::Bool, "on",
      "Automatic bounding; +MBn also sets the threshold (no effect on the image).",
      [](RenderOptions& o, const OptionInput& in) {
@@ -286,18 +363,41 @@ const OptionSpec kOptions[] = {
          }
      },
      FR_WRITE(onOff(o.bounding)), nullptr},
+    FR_ACCEPTED("Bounding_Method", "BM", Int, "1",
+                "Bounding scheme: 1 bounding volume hierarchy, 2 binary space partitioning (no "
+                "effect on the image).",
+                acceptInt, "frameray always bounds with Embree's hierarchy; the image is the same"),
     {"Bounding_Threshold", "", OptionType::Int, "3",
      "Fewest objects for automatic bounding (no effect on the image).",
      [](RenderOptions& o, const OptionInput& in) {
          o.boundingThreshold = std::max(toInt(in.value), 0);
      },
      FR_WRITE(num(o.boundingThreshold)), nullptr},
+    FR_OBSOLETE("Buffer_Output", "", Bool, "Buffer the output file"),
+    {"Buffer_Size", "B", OptionType::Int, "",
+     "Output buffer in KiB (POV-Ray 3.6; no longer used). +B and -B without a number switch "
+     "Bounding, as in povray.",
+     [](RenderOptions& o, const OptionInput& in) {
+         if (in.fromSwitch && in.value.empty()) {
+             o.bounding = in.plus;
+             mark(o, "Bounding");
+         }
+     },
+     writeNothing, nullptr,
+     [](const OptionInput& in) -> const char* {
+         return in.fromSwitch && in.value.empty()
+                    ? nullptr
+                    : "POV-Ray 3.7 no longer uses it either (it says it will become an error)";
+     }},
     {"Clock", "K", OptionType::Float, "0", "Clock value of a single (non-animated) frame.",
      [](RenderOptions& o, const OptionInput& in) {
          o.clock = toFloat(in.value);
          o.clockSet = true;
      },
      FR_WRITE(num(o.clock)), nullptr},
+    FR_ACCEPTED("Clockless_Animation", "KLA", Bool, "off",
+                "Clockless animation (no effect: POV-Ray 3.7 renders the same frames with it).",
+                acceptBool, kPovrayIgnores),
     {"Continue_Trace", "C", OptionType::Bool, "off",
      "Resume a stopped animation: frames the journal records as finished and intact are kept, the "
      "rest rendered.",
@@ -308,6 +408,7 @@ const OptionSpec kOptions[] = {
      "so, as povray does).",
      [](RenderOptions& o, const OptionInput& in) { o.createIni = trimQuotes(in.value); },
      FR_WRITE(quoted(o.createIni)), nullptr},
+    FR_OBSOLETE("Create_Histogram", "", Bool, "Write a histogram of render times"),
     {"Cyclic_Animation", "KC", OptionType::Bool, "off",
      "The last frame leads back to the first: the clock stops one step short of Final_Clock.",
      [](RenderOptions& o, const OptionInput& in) { o.cyclicAnimation = toBool(in); },
@@ -335,12 +436,33 @@ const OptionSpec kOptions[] = {
          o.display = in.fromSwitch ? in.plus : toBool(in);
      },
      FR_WRITE(onOff(o.display)), nullptr},
+    {"Dither", "", OptionType::Bool, "off",
+     "Dither the colours to the output file's levels (Dither_Method), as povray does.",
+     [](RenderOptions& o, const OptionInput& in) { o.dither = toBool(in); },
+     FR_WRITE(onOff(o.dither)), nullptr},
+    {"Dither_Method", "", OptionType::String, "FS",
+     "How Dither dithers: B2, B3, B4 Bayer patterns of that size (povray's, pixel for pixel), FS "
+     "Floyd-Steinberg error diffusion (povray's own variant differs by one level in some "
+     "pixels).",
+     [](RenderOptions& o, const OptionInput& in) {
+         std::string v = trimQuotes(in.value);
+         for (char& c : v) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+         if (std::find(std::begin(kDitherMethods), std::end(kDitherMethods), v) ==
+             std::end(kDitherMethods))
+             throw std::invalid_argument(fmt::format(
+                 "'{}' is not a dither method of POV-Ray 3.7 (FS, B2, B3 or B4)", in.value));
+         o.ditherMethod = v;
+     },
+     FR_WRITE(o.ditherMethod), nullptr},
     {"Display_Gamma", "", OptionType::Float, "2.2",
      "Gamma of the display (accepted; there is no display window).",
      [](RenderOptions& o, const OptionInput& in) {
          o.displayGamma = iequals(trimQuotes(in.value), "srgb") ? 2.2 : toFloat(in.value);
      },
      FR_WRITE(num(o.displayGamma)), nullptr},
+    FR_ACCEPTED("Draw_Vistas", "UD", Bool, "off",
+                "Draw the vista buffer's rectangles (no effect: POV-Ray 3.7 ignores it).",
+                acceptBool, kPovrayIgnores),
     {"End_Column", "EC", OptionType::Window, "width",
      "Last column of the render window: a pixel number, or a fraction of the width up to 1.0.",
      [](RenderOptions& o, const OptionInput& in) { o.endColumn = toNonNegative(in.value); },
@@ -392,15 +514,36 @@ const OptionSpec kOptions[] = {
      "at a time.",
      [](RenderOptions& o, const OptionInput& in) { o.framesInFlight = toPositiveInt(in.value); },
      FR_WRITE(num(o.framesInFlight)), nullptr},
+    {"Grayscale_Output", "", OptionType::Bool, "off",
+     "Write one grey channel instead of red, green and blue (PNG and PPM only, as in povray).",
+     [](RenderOptions& o, const OptionInput& in) { o.grayscaleOutput = toBool(in); },
+     FR_WRITE(onOff(o.grayscaleOutput)),
+     [](const RenderOptions& o) -> const char* {
+         // povray: "Unsupported combination of options" for the others.
+         return o.grayscaleOutput && o.outputType != 'N' && o.outputType != 'P'
+                    ? "grey output to other files than PNG and PPM (povray refuses it too)"
+                    : nullptr;
+     }},
     {"Height", "H", OptionType::Int, "600", "Image height in pixels.",
      [](RenderOptions& o, const OptionInput& in) { o.height = toPositiveInt(in.value); },
      FR_WRITE(num(o.height)), nullptr},
+    FR_ACCEPTED("High_Reproducibility", "HR", Bool, "off",
+                "Trade speed for reproducible images (no effect: frameray's images are always "
+                "the same for the same input).",
+                acceptBool, "frameray's images are always reproducible"),
+    FR_OBSOLETE("Histogram_Grid_Size", "HS", String, "Histogram grid size"),
+    FR_OBSOLETE("Histogram_Name", "HN", Path, "Histogram file name"),
+    FR_OBSOLETE("Histogram_Type", "HT", String, "Histogram file type"),
     {"Include_Header", "HI", OptionType::Path, "", "A file included before the scene's first line.",
      [](RenderOptions& o, const OptionInput& in) { o.includeHeader = trimQuotes(in.value); },
      FR_WRITE(quoted(o.includeHeader)),
      [](const RenderOptions& o) -> const char* {
          return o.includeHeader.empty() ? nullptr : "Include_Header";
      }},
+    {"Include_Ini", "", OptionType::IniFile, "",
+     "Read another INI file (file.ini or file.ini[Section]) here, as if named on the command "
+     "line.",
+     [](RenderOptions&, const OptionInput&) {}, writeNothing, nullptr},
     {"Initial_Clock", "KI", OptionType::Float, "0", "Clock value of the first frame.",
      [](RenderOptions& o, const OptionInput& in) { o.initialClock = toFloat(in.value); },
      FR_WRITE(num(o.initialClock)), nullptr},
@@ -442,6 +585,31 @@ const OptionSpec kOptions[] = {
          return lines;
      },
      nullptr},
+    FR_ACCEPTED("Light_Buffer", "UL", Bool, "on",
+                "POV-Ray 3.6's light buffer speed-up (no effect: POV-Ray 3.7 ignores it).",
+                acceptBool, kPovrayIgnores),
+    {"Log_Format", "", OptionType::String, "text",
+     "Line format of the run log NAME.frameray.log beside an animation's frames: text, or json "
+     "(one JSON object per event, for farm monitors; schema in the README).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.logFormat =
+             choice<LogFormat>(in.value, {{"text", LogFormat::Text}, {"json", LogFormat::Json}});
+     },
+     FR_WRITE(std::string(o.logFormat == LogFormat::Json ? "json" : "text")), nullptr},
+    {"Log_Level", "", OptionType::String, "info",
+     "Least severe event the run log keeps: debug (adds per-frame parse and render events, also "
+     "shown on the console), info, warn, error, or off (no run log).",
+     [](RenderOptions& o, const OptionInput& in) {
+         o.logLevel = choice<LogLevel>(in.value, {{"debug", LogLevel::Debug},
+                                                  {"info", LogLevel::Info},
+                                                  {"warn", LogLevel::Warn},
+                                                  {"error", LogLevel::Error},
+                                                  {"off", LogLevel::Off}});
+     },
+     FR_WRITE(std::string(kLogLevelNames[static_cast<int>(o.logLevel)])), nullptr},
+    FR_ACCEPTED("Max_Image_Buffer_Memory", "MI", Int, "128",
+                "Megabytes of image kept in memory before povray swaps it to disk (no effect).",
+                acceptInt, "frameray keeps each frame's image in memory"),
     {"Max_Parse_Iterations", "", OptionType::Int, "100000000",
      "Loop iterations (#while, #for) and macro calls one frame's parse may run before it stops "
      "with an error "
@@ -468,12 +636,10 @@ const OptionSpec kOptions[] = {
     {"Output_File_Name", "O", OptionType::Path, "scene name",
      "Output image file, or a folder (ending in /) to put it in. Frame numbers are appended in "
      "animations; the "
-     "file type's extension is added unless the name ends with it.",
+     "file type's extension is added unless the name ends with it. - (+O-): standard output, the "
+     "frames one after another (messages go to standard error).",
      [](RenderOptions& o, const OptionInput& in) { o.outputFile = trimQuotes(in.value); },
-     FR_WRITE(quoted(o.outputFile)),
-     [](const RenderOptions& o) -> const char* {
-         return o.outputFile == "-" ? "writing the image to standard output (+O-)" : nullptr;
-     }},
+     FR_WRITE(quoted(o.outputFile)), nullptr},
     {"Output_File_Type", "F", OptionType::FileType, "N",
      "File type: N png, P ppm, T tga, C compressed tga, E exr, H hdr, J jpeg, B bmp; optional bit "
      "depth (+FN16). "
@@ -489,6 +655,9 @@ const OptionSpec kOptions[] = {
     {"Output_To_File", "", OptionType::Bool, "on", "Write the image to a file.",
      [](RenderOptions& o, const OptionInput& in) { o.outputToFile = toBool(in); },
      FR_WRITE(onOff(o.outputToFile)), nullptr},
+    FR_ACCEPTED("Palette", "", String, "",
+                "Palette of the preview window (no effect: there is no preview window).",
+                acceptLetter, kNoPreview),
     {"Pause_When_Done", "P", OptionType::Bool, "off",
      "Wait for a key at the end (accepted; no effect in batch).",
      [](RenderOptions& o, const OptionInput& in) { o.pauseWhenDone = toBool(in); },
@@ -497,11 +666,33 @@ const OptionSpec kOptions[] = {
     FR_HOOK(ShellHook::PostScene, "Post_Scene", "after the last frame"),
     FR_HOOK(ShellHook::PreFrame, "Pre_Frame", "before each frame"),
     FR_HOOK(ShellHook::PreScene, "Pre_Scene", "before the first frame"),
+    FR_ACCEPTED("Preview_End_Size", "EP", Int, "1",
+                "Block size of the last mosaic preview pass (no effect: there is no preview).",
+                acceptInt, kNoPreview),
+    FR_ACCEPTED("Preview_Start_Size", "SP", Int, "1",
+                "Block size of the first mosaic preview pass (no effect: there is no preview).",
+                acceptInt, kNoPreview),
     {"Quality", "Q", OptionType::Int, "9", "Render quality 0..11.",
      [](RenderOptions& o, const OptionInput& in) {
          o.quality = std::clamp(toInt(in.value), 0, 11);
      },
      FR_WRITE(num(o.quality))},
+    FR_ACCEPTED("Radiosity_File_Name", "RF", Path, "scene name",
+                "Radiosity cache file for Radiosity_From_File / Radiosity_To_File.", acceptPath,
+                "frameray does not read or write radiosity cache files yet"),
+    {"Radiosity_From_File", "RFI", OptionType::Bool, "off",
+     "Start radiosity from the cache file instead of a pretrace.", acceptBool, nullptr,
+     [](const RenderOptions& o) -> const char* {
+         return acceptedOn(o, "Radiosity_From_File") ? "radiosity cache files" : nullptr;
+     }},
+    {"Radiosity_To_File", "RFO", OptionType::Bool, "off", "Save the radiosity cache to the file.",
+     acceptBool, nullptr,
+     [](const RenderOptions& o) -> const char* {
+         return acceptedOn(o, "Radiosity_To_File") ? "radiosity cache files" : nullptr;
+     }},
+    FR_ACCEPTED("Radiosity_Vain_Pretrace", "RVP", Bool, "on",
+                "Show the radiosity pretrace in the preview (no effect on the image).", acceptBool,
+                kNoPreview),
     {"Read_Path", "", OptionType::PathList, "",
      "Another folder (with its subfolders) scenes may read from; accumulates. Not from INI files "
      "named on the "
@@ -515,6 +706,16 @@ const OptionSpec kOptions[] = {
          return lines;
      },
      nullptr},
+    {"Real_Time_Raytracing", "RTR", OptionType::Bool, "off",
+     "Render the first frame over and over into the preview window (POV-Ray 3.7 beta feature).",
+     acceptBool, nullptr,
+     [](const RenderOptions& o) -> const char* {
+         return acceptedOn(o, "Real_Time_Raytracing") ? "real-time raytracing" : nullptr;
+     }},
+    FR_ACCEPTED("Remove_Bounds", "UR", Bool, "on",
+                "Remove bounded_by from scenes that do not need it (no effect: POV-Ray 3.7 "
+                "ignores it).",
+                acceptBool, kPovrayIgnores),
     FR_STREAM(TextStream::Render, "Render", "R", "render progress"),
     {"Render_Block_Size", "BS", OptionType::Int, "32",
      "Side of the square pixel blocks rendered at once; anti-aliasing depends on it as in povray "
@@ -523,6 +724,13 @@ const OptionSpec kOptions[] = {
          o.renderBlockSize = std::max(toInt(in.value), 4);
      },
      FR_WRITE(num(o.renderBlockSize)), nullptr},
+    FR_ACCEPTED("Render_Block_Step", "RS", Int, "1",
+                "Step through the blocks of Render_Pattern by this many (only the order of "
+                "rendering changes, not the image).",
+                acceptInt, "it changes only the order blocks are rendered in"),
+    FR_ACCEPTED("Render_Pattern", "RP", Int, "0",
+                "Order in which blocks are rendered, 0..5 (only the order changes, not the image).",
+                acceptInt, "it changes only the order blocks are rendered in"),
     {"Sampling_Method", "AM", OptionType::Int, "1",
      "Anti-aliasing method: 1 non-recursive, 2 adaptive.",
      [](RenderOptions& o, const OptionInput& in) {
@@ -552,6 +760,9 @@ const OptionSpec kOptions[] = {
              throw std::invalid_argument(fmt::format("'{}' must not be negative", in.value));
      },
      FR_WRITE(num(o.shardIndex)), nullptr},
+    FR_ACCEPTED("Split_Unions", "SU", Bool, "off",
+                "Split bounded unions for automatic bounding (no effect: POV-Ray 3.7 ignores it).",
+                acceptBool, kPovrayIgnores),
     {"Start_Row", "SR", OptionType::Window, "1",
      "First row of the render window: a pixel number, or a fraction of the height below 1.0.",
      [](RenderOptions& o, const OptionInput& in) { o.startRow = toNonNegative(in.value); },
@@ -600,7 +811,17 @@ const OptionSpec kOptions[] = {
     {"Version", "MV", OptionType::Float, "3.7", "Language version assumed before any #version.",
      [](RenderOptions& o, const OptionInput& in) { o.version = toFloat(in.value); },
      FR_WRITE(num(o.version)), nullptr},
+    FR_ACCEPTED("Video_Mode", "", String, "",
+                "Display hardware mode (no effect: there is no preview window).", acceptLetter,
+                kNoPreview),
+    FR_ACCEPTED("Vista_Buffer", "UV", Bool, "on",
+                "POV-Ray 3.6's vista buffer speed-up (no effect: POV-Ray 3.7 ignores it).",
+                acceptBool, kPovrayIgnores),
     FR_STREAM(TextStream::Warning, "Warning", "W", "warning"),
+    FR_ACCEPTED("Warning_Level", "WL", Int, "10",
+                "Which warnings to show (no effect: POV-Ray 3.7 shows the same warnings at every "
+                "level).",
+                acceptInt, kPovrayIgnores),
     {"Width", "W", OptionType::Int, "800", "Image width in pixels.",
      [](RenderOptions& o, const OptionInput& in) { o.width = toPositiveInt(in.value); },
      FR_WRITE(num(o.width)), nullptr},
@@ -625,6 +846,9 @@ const OptionSpec kOptions[] = {
 #undef FR_WRITE
 #undef FR_STREAM
 #undef FR_HOOK
+#undef FR_NO_EFFECT
+#undef FR_ACCEPTED
+#undef FR_OBSOLETE
 
 }  // namespace
 
@@ -656,6 +880,7 @@ std::string helpText() {
         "(+X/-X).\n"
         "--list-frames prints the frames the options ask for (number, clock, file) without "
         "rendering.\n"
+        "--version prints frameray's version and those of its libraries.\n"
         "Read in order: povray.ini ($POVINI, ./povray.ini, ~/.povray/3.7/povray.ini, "
         "/etc/povray/3.7/povray.ini: "
         "the first found), then the arguments.\n\n";
@@ -679,11 +904,18 @@ std::string optionsMarkdown() {
     return out;
 }
 
+std::vector<std::string> optionValues(const OptionSpec& spec, const RenderOptions& options) {
+    if (spec.write) return spec.write(options);
+    const auto it = options.acceptedValues.find(spec.iniKey);
+    if (it == options.acceptedValues.end()) return {};
+    return {it->second};
+}
+
 std::string createIniText(const RenderOptions& options) {
     std::string out;
     for (const OptionSpec& o : kOptions) {
         if (!options.explicitlySet.count(std::string(o.iniKey))) continue;
-        for (const std::string& value : o.write(options))
+        for (const std::string& value : optionValues(o, options))
             out += fmt::format("{}={}\n", o.iniKey, value);
     }
     return out;

@@ -26,7 +26,8 @@ enum class OptionType {
     FileType,
     Command,
     Return,
-    Window
+    Window,
+    IniFile  // Include_Ini: reads another INI file there and then
 };
 
 // How a value reached the option: from an INI key (`Key=value`) or a
@@ -35,6 +36,7 @@ struct OptionInput {
     std::string_view value;
     bool fromSwitch = false;
     bool plus = true;
+    std::string_view key;  // the table's INI key of the option being set
 };
 
 struct OptionSpec {
@@ -48,11 +50,17 @@ struct OptionSpec {
     void (*apply)(RenderOptions&, const OptionInput&);
     // The INI values Create_Ini writes for this key (several lines for
     // accumulating options), already formatted as POV-Ray writes them.
+    // Null: the value kept in RenderOptions::acceptedValues (options
+    // frameray reads but that change nothing in its output).
     std::vector<std::string> (*write)(const RenderOptions&);
     // Non-null when the current value would change the output in a way
     // frameray cannot render yet: a short description of the missing
     // feature. Null function: always supported.
     const char* (*unsupported)(const RenderOptions&) = nullptr;
+    // Non-null for options read but without effect in frameray (old
+    // POV-Ray options, preview-window settings): why, said once per run
+    // when the input sets the option. Null result: this input has effect.
+    const char* (*noEffect)(const OptionInput&) = nullptr;
 };
 
 std::span<const OptionSpec> optionTable();
@@ -61,6 +69,10 @@ std::span<const OptionSpec> optionTable();
 // that prefixes it, case-insensitively. Returns nullptr when none does.
 const OptionSpec* findSwitch(std::string_view body, std::string_view& valueOut);
 const OptionSpec* findIniKey(std::string_view key);
+
+// The INI values Create_Ini writes for `spec` (spec.write, or the kept
+// value of an option without effect).
+std::vector<std::string> optionValues(const OptionSpec& spec, const RenderOptions& options);
 
 // `frameray --help` text, generated from the table.
 std::string helpText();

@@ -4,9 +4,11 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <set>
 
 #include "options/ini_trust.h"
 #include "options/option_table.h"
+#include "util/file_paths.h"
 #include "util/spelling.h"
 
 namespace frameray::options {
@@ -52,6 +54,8 @@ struct Applier {
     // While in an untrusted INI: the folders it may name paths in (README,
     // Restrictions; options/ini_trust.h).
     std::vector<fs::path> roots{};
+    // Options whose lack of effect was said already (once per run).
+    std::set<std::string_view> noted{};
 
     void apply(const OptionSpec& spec, const OptionInput& input, const std::string& where,
                std::string_view shownAs) {
@@ -65,8 +69,10 @@ struct Applier {
                             where, shownAs));
         const std::vector<NamedPath> before =
             inUntrustedIni ? namedPaths(options) : std::vector<NamedPath>{};
+        OptionInput keyed = input;
+        keyed.key = spec.iniKey;
         try {
-            spec.apply(options, input);
+            spec.apply(options, keyed);
         } catch (const std::invalid_argument& e) {
             throw OptionError(
                 fmt::format("{}: bad value for option '{}': {}", where, shownAs, e.what()));
@@ -77,6 +83,10 @@ struct Applier {
                 !refusal.empty())
                 throw OptionError(refusal);
         options.explicitlySet.emplace(spec.iniKey);
+        if (spec.noEffect)
+            if (const char* why = spec.noEffect(keyed); why && noted.insert(spec.iniKey).second)
+                warnings.push_back(
+                    fmt::format("{}: option '{}' has no effect: {}", where, spec.iniKey, why));
     }
 
     void applySwitch(std::string_view text, const std::string& where) {
@@ -84,10 +94,11 @@ struct Applier {
         std::string_view value;
         const OptionSpec* spec = findSwitch(text.substr(1), value);
         if (!spec) throw OptionError(fmt::format("{}: unknown switch '{}'", where, text));
-        apply(*spec, {value, true, plus}, where, text);
+        apply(*spec, {value, true, plus, {}}, where, text);
     }
 
-    void applyKeyValue(std::string_view key, std::string_view value, const std::string& where) {
+    void applyKeyValue(std::string_view key, std::string_view value, const std::string& where,
+                       const fs::path& base) {
         const OptionSpec* spec = findIniKey(trim(key));
         if (!spec) {
             std::vector<std::string_view> keys;
@@ -97,7 +108,22 @@ struct Applier {
                 fmt::format("{}: unknown option '{}'{}", where, trim(key),
                             best.empty() ? "" : fmt::format("; did you mean '{}'?", best)));
         }
-        apply(*spec, {trim(value), false, true}, where, trim(key));
+        if (spec->type == OptionType::IniFile) {
+            includeIni(trim(value), where, base, trim(key));
+            return;
+        }
+        apply(*spec, {trim(value), false, true, {}}, where, trim(key));
+    }
+
+    // Include_Ini=file.ini[Section]: read there and then, as an INI file
+    // named on that line would be.
+    void includeIni(std::string_view value, const std::string& where, const fs::path& base,
+                    std::string_view shownAs) {
+        const std::string name = std::string(value);
+        if (name.empty())
+            throw OptionError(
+                fmt::format("{}: option '{}' needs an INI file name", where, shownAs));
+        applyFileName(name, where, base, true);
     }
 
     // An INI file named by an argument or an INI line: as given, else
@@ -113,7 +139,8 @@ struct Applier {
 
     // An argument or INI line that is neither a switch nor Key=Value: an
     // INI file (optionally with [Section]) or the scene file.
-    void applyFileName(std::string_view text, const std::string& where, const fs::path& base) {
+    void applyFileName(std::string_view text, const std::string& where, const fs::path& base,
+                       bool iniFile = false) {
         std::string name(text), section;
         if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
             name = name.substr(1, name.size() - 2);
@@ -126,13 +153,14 @@ struct Applier {
         }
         if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
             name = name.substr(1, name.size() - 2);
-        if (endsWithIni(name)) {
+        if (iniFile || endsWithIni(name)) {
             const fs::path path = locateIni(name, base);
             const bool outer = inUntrustedIni;
             if (inUntrustedIni) {
                 // An INI file named by an untrusted one is read only from
                 // the same folders as any other path it names.
-                if (!insideTrustRoots(resolvedForTrust(path), roots))
+                if (!insideTrustRoots(resolvedPath(path), roots) &&
+                    !insideTrustRoots(resolvedPath(path), {resolvedPath(kStandardIniFolder)}))
                     throw OptionError(
                         untrustedPathRefusal({}, {{"INI file", path.string()}}, roots, where));
             } else if (namedIniUntrusted) {
@@ -142,6 +170,11 @@ struct Applier {
             readIni(path, section, where);
             inUntrustedIni = outer;
         } else {
+            if (inUntrustedIni)
+                if (const std::string refusal =
+                        untrustedPathRefusal({}, {{"Input_File_Name", name}}, roots, where);
+                    !refusal.empty())
+                    throw OptionError(refusal);
             options.inputFile = name;
             options.explicitlySet.emplace("Input_File_Name");
         }
@@ -155,7 +188,7 @@ struct Applier {
         }
         const auto eq = token.find('=');
         if (eq != std::string_view::npos) {
-            applyKeyValue(token.substr(0, eq), token.substr(eq + 1), where);
+            applyKeyValue(token.substr(0, eq), token.substr(eq + 1), where, base);
             return;
         }
         applyFileName(token, where, base);
@@ -172,20 +205,38 @@ struct Applier {
             // "Key = Value": blanks may surround '='; the key has none.
             const std::string_view key = trim(text.substr(0, eq));
             if (key.find_first_of(" \t") == std::string_view::npos) {
-                applyKeyValue(key, text.substr(eq + 1), where);
+                applyKeyValue(key, text.substr(eq + 1), where, base);
                 return;
             }
         }
         if (!startsWithSwitch && blank == std::string_view::npos) {
-            checkIniWord(text, where);
-            applyToken(text, where, base);
+            applyIniWord(text, where, base);
             return;
         }
         for (const std::string& tok : splitOptionString(std::string(text))) {
             if (tok[0] != '+' && tok[0] != '-' && tok.find('=') == std::string::npos)
-                checkIniWord(tok, where);
-            applyToken(tok, where, base);
+                applyIniWord(tok, where, base);
+            else
+                applyToken(tok, where, base);
         }
+    }
+
+    // A word on an INI line that is neither a switch nor Key=Value: a file
+    // name, or (as povray reads `res320` in its own allstill.ini) the name
+    // of an INI file without its extension.
+    void applyIniWord(std::string_view word, const std::string& where, const fs::path& base) {
+        if (word.find('.') == std::string_view::npos && !findIniKey(word)) {
+            std::error_code ec;
+            const fs::path ini = locateIni(std::string(word) + ".ini", base);
+            if (fs::is_regular_file(ini, ec)) {
+                warnings.push_back(
+                    fmt::format("{}: '{}' read as the INI file '{}'", where, word, ini.string()));
+                applyFileName(ini.string(), where, base, true);
+                return;
+            }
+        }
+        checkIniWord(word, where);
+        applyToken(word, where, base);
     }
 
     // A word on an INI line that is neither a switch nor Key=Value must be
@@ -255,6 +306,21 @@ struct Applier {
 };
 
 }  // namespace
+
+fs::path findSceneFile(const RenderOptions& options) {
+    if (options.inputFile.empty()) return {};
+    const fs::path name = options.inputFile;
+    std::vector<fs::path> folders{fs::path()};
+    if (name.is_relative())
+        folders.insert(folders.end(), options.libraryPaths.begin(), options.libraryPaths.end());
+    std::error_code ec;
+    for (const fs::path& folder : folders)
+        for (const fs::path& candidate : {name, fs::path(name.string() + ".pov")}) {
+            const fs::path path = folder.empty() ? candidate : folder / candidate;
+            if (fs::is_regular_file(path, ec)) return path;
+        }
+    return {};
+}
 
 std::vector<std::string> splitOptionString(const std::string& text) {
     std::vector<std::string> out;

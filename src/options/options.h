@@ -30,6 +30,12 @@ std::vector<std::string> applyArguments(RenderOptions& options,
 std::vector<std::string> applyIniFile(RenderOptions& options, const std::filesystem::path& path,
                                       const std::string& section, const std::string& origin);
 
+// The scene file Input_File_Name names, found as povray 3.7 finds it: in
+// the working folder, then in each Library_Path folder in order; in each,
+// the name as given, then with ".pov" appended. The name as given when it
+// is in the working folder; empty when it is nowhere.
+std::filesystem::path findSceneFile(const RenderOptions& options);
+
 // Splits an option string (POVRAYOPT, a line of switches) into arguments
 // at blanks outside double quotes.
 std::vector<std::string> splitOptionString(const std::string& text);

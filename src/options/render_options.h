@@ -5,6 +5,7 @@
 
 #include <array>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -15,6 +16,10 @@ namespace frameray::options {
 // The standard include files (Debian's povray-includes): always on the
 // library path, and readable by every scene.
 inline constexpr const char* kStandardIncludeFolder = "/usr/share/povray-3.7/include";
+// povray's own INI files (quickres.ini, res640.ini...): an untrusted INI
+// file may read them too (they are installed with povray and set nothing
+// but image options).
+inline constexpr const char* kStandardIniFolder = "/usr/share/povray-3.7/ini";
 
 // POV-Ray's text streams, in the order of their option names.
 enum class TextStream { Debug, Fatal, Render, Statistic, Warning, All };
@@ -34,6 +39,11 @@ struct ShellCommand {
     std::string action;   // the *_Return letters, e.g. "f" or "-s"
 };
 
+// frameray's own run log (anim/run_log.h): the least severe event kept,
+// and the line format.
+enum class LogLevel { Debug, Info, Warn, Error, Off };
+enum class LogFormat { Text, Json };
+
 struct RenderOptions {
     // Input and output.
     std::string inputFile;
@@ -44,7 +54,11 @@ struct RenderOptions {
     bool outputAlpha = false;
     double fileGamma = 0;  // <= 0: sRGB (POV-Ray 3.7's default)
     double displayGamma = 2.2;
-    std::string includeHeader;  // Include_Header (+HI)
+    std::string includeHeader;        // Include_Header (+HI)
+    bool grayscaleOutput = false;     // Grayscale_Output: one grey channel (PNG, PPM)
+    bool dither = false;              // Dither: dither the quantisation to the file's levels
+    std::string ditherMethod = "FS";  // Dither_Method: FS, B2, B3, B4
+    bool appendFile = false;          // Append_File (+GP): stream files are appended to
 
     // Image and render window. Rows/columns as given: a value below 1
     // (start) or up to 1 (end) is a fraction of the image, others are
@@ -102,6 +116,8 @@ struct RenderOptions {
     bool testAbort = false;
     int testAbortCount = 1;
     std::string createIni;  // Create_Ini (+GI): write the effective options here
+    LogLevel logLevel = LogLevel::Info;
+    LogFormat logFormat = LogFormat::Text;
 
     std::array<StreamOptions, kTextStreams> streams;
     std::array<ShellCommand, kShellHooks> commands;
@@ -114,6 +130,9 @@ struct RenderOptions {
 
     // INI keys set by any source so far, for Create_Ini.
     std::set<std::string> explicitlySet;
+    // Options read that change nothing in frameray's output (Light_Buffer,
+    // Preview_Start_Size, ...): the value as Create_Ini writes it back.
+    std::map<std::string, std::string, std::less<>> acceptedValues;
 };
 
 }  // namespace frameray::options

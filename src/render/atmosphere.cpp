@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "util/hash.h"
+
 namespace frameray::render {
 
 namespace {
@@ -72,15 +74,8 @@ Color legacySky(const scene::Scene& scene, const Vec3& direction) {
 // between runs; frameray keeps every pixel a function of its ray.
 double directionNoise(const Vec3& d) {
     uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (const double v : {d.x, d.y, d.z}) {
-        h ^= std::bit_cast<uint64_t>(v);
-        // splitmix64's finaliser
-        h += 0x9E3779B97F4A7C15ull;
-        h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-        h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-        h ^= h >> 31;
-    }
-    return static_cast<double>(h >> 11) * 0x1.0p-53;
+    for (const double v : {d.x, d.y, d.z}) h = splitmix64(h ^ std::bit_cast<uint64_t>(v));
+    return unitFromHash(h);
 }
 
 // The fraction of ground fog density averaged over the segment between

@@ -5,32 +5,15 @@
 #include <vector>
 
 #include "scene/object.h"
+#include "util/hash.h"
 
 namespace frameray::render {
 
 namespace {
 
-// Summed absolute RGB difference: POV-Ray's test of whether two corners of
-// an area-light block see the light alike.
-double colourDistance(const RGB& a, const RGB& b) {
-    return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
-}
-
-// A hash of a surface point and a grid point, for jitter that is the same
-// whatever the thread count or tile order (povray's own jitter is random
-// from render to render, so no sequence can match it anyway).
-uint64_t mix(uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdULL;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ULL;
-    h ^= h >> 33;
-    return h;
-}
-double unitHash(uint64_t h) {
-    return static_cast<double>(h >> 11) * 0x1.0p-53;
-}
-
+// Area-light jitter is a hash of the surface point and the grid point
+// (util/hash.h), the same whatever the thread count or tile order (povray's
+// own jitter is random from render to render, so no sequence can match it).
 struct GridSampler {
     const World& world;
     const scene::Light& light;
@@ -44,10 +27,11 @@ struct GridSampler {
     RGB operator()(int i, int j) const {
         double u = i, v = j;
         if (light.area.jitter) {
-            const uint64_t h = mix(seed ^ mix(static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ULL +
-                                              static_cast<uint64_t>(j)));
-            u += unitHash(h) - 0.5;
-            v += unitHash(mix(h)) - 0.5;
+            const uint64_t h =
+                fmix64(seed ^ fmix64(static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ULL +
+                                     static_cast<uint64_t>(j)));
+            u += unitFromHash(h) - 0.5;
+            v += unitFromHash(fmix64(h)) - 0.5;
         }
         const Vec3 target = centre + light.area.gridOffset(u, v, axis1, axis2);
         Vec3 dir = target - p;
@@ -85,9 +69,9 @@ RGB subdivideAreaGrid(int size1, int size2, int adaptive,
     auto block = [&](auto&& self, int u1, int v1, int u2, int v2, int level) -> RGB {
         const RGB c00 = at(u1, v1), c10 = at(u2, v1), c01 = at(u1, v2), c11 = at(u2, v2);
         const bool splittable = u2 - u1 > 1 || v2 - v1 > 1;
-        if (splittable &&
-            (level < adaptive || colourDistance(c00, c10) > 0.1 || colourDistance(c10, c11) > 0.1 ||
-             colourDistance(c11, c01) > 0.1 || colourDistance(c01, c00) > 0.1)) {
+        if (splittable && (level < adaptive || summedDifference(c00, c10) > 0.1 ||
+                           summedDifference(c10, c11) > 0.1 || summedDifference(c11, c01) > 0.1 ||
+                           summedDifference(c01, c00) > 0.1)) {
             // Halves share the middle point when the span is even;
             // an odd span splits into two disjoint halves (measured:
             // povray weights a 4-point row uniformly, a 5-point row 1:2:2:2:1).
@@ -175,8 +159,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
         axis2 = a2 * length(area.axis2);
     }
     const uint64_t seed =
-        mix(std::bit_cast<uint64_t>(p.x) ^
-            mix(std::bit_cast<uint64_t>(p.y) ^ mix(std::bit_cast<uint64_t>(p.z))));
+        fmix64(std::bit_cast<uint64_t>(p.x) ^
+               fmix64(std::bit_cast<uint64_t>(p.y) ^ fmix64(std::bit_cast<uint64_t>(p.z))));
     // A parallel or cylinder light's grid sits, for p, back along the axis
     // at the distance from the light's location to point_at (measured with
     // a pinhole under a tilted parallel area light: the sample spots match

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include "util/hash.h"
+
 namespace frameray::render {
 
 namespace {
@@ -23,19 +25,6 @@ struct Sample {
     }
     Sample operator*(double s) const { return {light * s, extinction * s}; }
 };
-
-double summedDifference(const RGB& a, const RGB& b) {
-    return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
-}
-
-uint64_t mix(uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdULL;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ULL;
-    h ^= h >> 33;
-    return h;
-}
 
 // Where the ray [0, depth] crosses the volume a spot or cylinder light
 // lights (its falloff cone or cylinder): adds the crossings to `cuts`.
@@ -103,10 +92,10 @@ class Sampler {
           lights_(lights && world && anyScatters()),
           samples_(samples),
           shadowRays_(shadowRays) {
-        seed_ = mix(std::bit_cast<uint64_t>(ray.origin.x) ^
-                    mix(std::bit_cast<uint64_t>(ray.origin.y + 3.0 * ray.direction.x) ^
-                        mix(std::bit_cast<uint64_t>(ray.origin.z + 5.0 * ray.direction.y) ^
-                            std::bit_cast<uint64_t>(ray.direction.z))));
+        seed_ = fmix64(std::bit_cast<uint64_t>(ray.origin.x) ^
+                       fmix64(std::bit_cast<uint64_t>(ray.origin.y + 3.0 * ray.direction.x) ^
+                              fmix64(std::bit_cast<uint64_t>(ray.origin.z + 5.0 * ray.direction.y) ^
+                                     std::bit_cast<uint64_t>(ray.direction.z))));
     }
 
     MediaResult run(double depth) const;
@@ -214,8 +203,8 @@ Sample Sampler::segment(double a, double b, const Sample& va, const Sample& vb, 
 
 double Sampler::jittered(double t, double spacing, uint64_t index) const {
     if (settings_.jitter <= 0) return t;
-    const uint64_t h = mix(seed_ ^ mix(index * 0x9E3779B97F4A7C15ULL + 1));
-    const double u = static_cast<double>(h >> 11) * 0x1.0p-53;
+    const uint64_t h = fmix64(seed_ ^ fmix64(index * 0x9E3779B97F4A7C15ULL + 1));
+    const double u = unitFromHash(h);
     return t + (u - 0.5) * settings_.jitter * spacing;
 }
 

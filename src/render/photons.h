@@ -39,7 +39,14 @@
 // when max were found, else the gather radius; a box filter, measured on
 // the edge of a mirror's caustic). Only photons arriving on the side
 // facing the viewer count. The radius is povray's `radius`, or estimated
-// from the photons (see estimateRadius in photons.cpp).
+// from the photons (see estimateRadius in photons.cpp); where fewer than
+// `gather` min photons lie within it the search widens once (see
+// kGatherWidening).
+//
+// Area lights shoot from their centre, or with the light's
+// `photons { area_light }` from every point of their grid, each a light
+// of its own with its share of the colour and a spacing sqrt(size1 *
+// size2) times wider (photon counts match povray's exactly).
 //
 // Shooting runs in parallel over rings; each ring's photons are kept in
 // ring order, so the map is the same whatever the thread count.
@@ -94,6 +101,7 @@ class Photons {
   private:
     PhotonMap surface_;
     double radius_ = 0;
+    int gatherMin_ = 20;
     int gatherMax_ = 100;
     PhotonStats stats_;
 };

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "render/antialias.h"
+#include "render/photons.h"
 #include "render/tracer.h"
 #include "render/world.h"
 
@@ -42,6 +44,8 @@ struct FrameStats {
     RayCounts rays;
     AntialiasCounts antialias;
     RadiosityCounts radiosity;
+    // The photon map's figures, when the scene shot photons.
+    std::optional<PhotonStats> photons;
 };
 
 FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameStats& stats);

@@ -38,6 +38,28 @@ double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
 
 // The region a primitive's surface bounds: its interior, shared with the
 // other primitives of a CSG that inherited it, or the primitive itself.
+// The mirror direction of the view ray about the perturbed normal n. A
+// perturbed normal can send it under the surface; povray then mirrors the
+// view ray about the geometric normal if the ray is behind the perturbed
+// one too, else mirrors the ray back above the surface (measured:
+// textures.inc Brushed_Aluminum).
+Vec3 mirrorDirection(const Vec3& viewDir, const Vec3& n, const Vec3& geometric) {
+    Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
+    if (const double under = dot(reflected, geometric); under < 0) {
+        if (dot(reflected, n) < 0)
+            reflected = viewDir - geometric * (2 * dot(viewDir, geometric));
+        else
+            reflected = reflected - geometric * (2 * under);
+    }
+    return reflected;
+}
+
+// What a reflection of `reflectivity` leaves of the light, per channel.
+RGB unreflected(const RGB& reflectivity) {
+    return RGB(std::max(0.0, 1.0 - reflectivity.r), std::max(0.0, 1.0 - reflectivity.g),
+               std::max(0.0, 1.0 - reflectivity.b));
+}
+
 InteriorStack::Region regionOf(const scene::Object& primitive) {
     if (primitive.interior)
         return {primitive.interior.get(), primitive.interior.get(), primitive.hollow};
@@ -196,7 +218,7 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
                                          counts.mediaSamples, counts.shadow);
     if (state.transmit) {
         const RGB& k = m.transmittance;
-        *state.transmit *= 0.297 * k.r + 0.589 * k.g + 0.114 * k.b;
+        *state.transmit *= grey(k);
     }
     return color * m.transmittance + m.light;
 }
@@ -365,92 +387,85 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
 RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
                          const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
                          const Vec3& geometric, const State& state, RayCounts& counts) const {
-    // A patterned texture: povray 3.7 shades each texture the pattern
-    // picks (with its own reflection and transmission) and blends the
-    // shaded colours by their weights (measured).
-    if (top.map) {
-        RGB color(0.0);
-        const Vec3 q = top.transform.inversePoint(top.uvMapping ? uv : texP);
-        const Vec3 entry = top.map->entryPoint(q);
-        const scene::SurfaceInfo surface{geometric, viewDir, uv};
-        double transmitSum = 0, entryTransmit = 0;
-        State part = state;
-        if (state.transmit) part.transmit = &entryTransmit;
-        top.map->visit(
-            q,
-            [&](const scene::Texture& t, double w) {
-                color +=
-                    shadeTexture(t, ray, obj, p, entry, uv, viewDir, geometric, part, counts) * w;
-                transmitSum += entryTransmit * w;
-            },
-            &surface);
-        if (state.transmit) *state.transmit = transmitSum;
-        return color;
-    }
+    const SurfacePoint at{ray, obj, p, texP, uv, viewDir, geometric, 0.0};
+    if (top.map) return shadeTextureMap(top, at, state, counts);
     if (state.transmit) *state.transmit = 0.0;
-    const double eps = selfHitEpsilon(p, ray);
+    SurfacePoint here = at;
+    here.eps = selfHitEpsilon(p, ray);
     const bool spawns = secondaryRays_ && state.level < scene_.globals.maxTraceLevel;
-    const double adcBailout = scene_.globals.adcBailout;
-
-    // The ior on this side of the surface and on the other, found only when
-    // a secondary ray needs it.
-    struct Crossing {
-        InteriorStack beyond;
-        double iorHere;
-        double iorBeyond;
-        // The ior ratio of povray 3.7's fresnel reflection. Leaving an
-        // object while inside others too, povray divides the innermost
-        // region's ior (usually the object's own) by the object's, a
-        // ratio of 1: no fresnel reflection from inside (measured: with
-        // the camera inside a plane's half-space, a fresnel glass sphere's
-        // image is the same for every max_trace_level from 3 up; alone in
-        // the air, its inner reflections show). Refraction is not affected.
-        double fresnelRatio;
-    };
     std::optional<Crossing> crossing;
-    auto crossingInfo = [&]() -> const Crossing& {
-        if (crossing) return *crossing;
-        const InteriorStack::Region region = regionOf(obj);
-        const bool leaving = state.inside.contains(region.key);
-        Crossing c{state.inside, state.inside.ior(state.band), 1.0, 1.0};
-        if (leaving)
-            c.beyond.remove(region.key);
-        else
-            c.beyond.push(region);
-        const double own = region.interior ? dispersedIor(*region.interior, state.band) : 1.0;
-        c.iorBeyond = leaving ? c.beyond.ior(state.band) : own;
-        c.fresnelRatio =
-            leaving && state.inside.size() > 1 ? c.iorHere / own : c.iorBeyond / c.iorHere;
-        crossing = c;
-        return *crossing;
-    };
+    const Layers layers = shadeLayers(top, here, spawns, state, crossing, counts);
+    if (!spawns || !layers.transmits) return layers.color;
+    const double throughWeight = std::max(
+        {std::abs(layers.through.r), std::abs(layers.through.g), std::abs(layers.through.b)});
+    if (state.weight * throughWeight < scene_.globals.adcBailout) return layers.color;
+    if (!crossing) crossing = crossingOf(obj, state);
+    return continueThrough(layers, throughWeight, here, *crossing, state, counts);
+}
 
-    auto spawnReflection = [&](const Vec3& reflected, const RGB& weightColor) -> RGB {
-        State child;
-        child.level = state.level + 1;
-        child.weight = state.weight * weightColor.maxComponent();
-        child.kind = scene::RayKind::Reflection;
-        child.inside = state.inside;
-        child.band = state.band;
-        child.radiosity = state.radiosity;
-        if (child.weight < adcBailout) return RGB(0.0);
-        ++counts.reflection;
-        return trace({p, reflected}, eps, child, counts);
-    };
-
-    // Layered textures (seed 003 5.4.5): each layer is shaded on its own;
-    // its ambient, diffuse and highlights are tinted by the filter and
-    // transmit of the layers above it, its reflection is added in full,
-    // and a fully opaque layer hides the ones below (all measured with
-    // povray 3.7). Whatever all layers let through continues the ray.
+// A patterned texture: povray 3.7 shades each texture the pattern picks
+// (with its own reflection and transmission) and blends the shaded colours
+// by their weights (measured).
+RGB Tracer::shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,
+                            RayCounts& counts) const {
     RGB color(0.0);
-    RGB through(1.0);  // what the layers evaluated so far let through
-    // The same as one number, for alpha output: povray counts filter by
-    // the pigment's grey (util/color.h), measured.
-    double throughGrey = 1.0;
-    bool transmits = false;
-    RGB reflectivity(0.0);
-    Vec3 n = geometric;
+    const Vec3 q = top.transform.inversePoint(top.uvMapping ? at.uv : at.texP);
+    const Vec3 entry = top.map->entryPoint(q);
+    const scene::SurfaceInfo surface{at.geometric, at.viewDir, at.uv};
+    double transmitSum = 0, entryTransmit = 0;
+    State part = state;
+    if (state.transmit) part.transmit = &entryTransmit;
+    top.map->visit(
+        q,
+        [&](const scene::Texture& t, double w) {
+            color += shadeTexture(t, at.ray, at.obj, at.p, entry, at.uv, at.viewDir, at.geometric,
+                                  part, counts) *
+                     w;
+            transmitSum += entryTransmit * w;
+        },
+        &surface);
+    if (state.transmit) *state.transmit = transmitSum;
+    return color;
+}
+
+Tracer::Crossing Tracer::crossingOf(const scene::Object& obj, const State& state) const {
+    const InteriorStack::Region region = regionOf(obj);
+    const bool leaving = state.inside.contains(region.key);
+    Crossing c{state.inside, state.inside.ior(state.band), 1.0, 1.0};
+    if (leaving)
+        c.beyond.remove(region.key);
+    else
+        c.beyond.push(region);
+    const double own = region.interior ? dispersedIor(*region.interior, state.band) : 1.0;
+    c.iorBeyond = leaving ? c.beyond.ior(state.band) : own;
+    c.fresnelRatio = leaving && state.inside.size() > 1 ? c.iorHere / own : c.iorBeyond / c.iorHere;
+    return c;
+}
+
+RGB Tracer::spawnReflection(const SurfacePoint& at, const Vec3& reflected, const RGB& weightColor,
+                            const State& state, RayCounts& counts) const {
+    State child;
+    child.level = state.level + 1;
+    child.weight = state.weight * weightColor.maxComponent();
+    child.kind = scene::RayKind::Reflection;
+    child.inside = state.inside;
+    child.band = state.band;
+    child.radiosity = state.radiosity;
+    if (child.weight < scene_.globals.adcBailout) return RGB(0.0);
+    ++counts.reflection;
+    return trace({at.p, reflected}, at.eps, child, counts);
+}
+
+// Layered textures (seed 003 5.4.5): each layer is shaded on its own; its
+// ambient, diffuse and highlights are tinted by the filter and transmit of
+// the layers above it, its reflection is added in full, and a fully opaque
+// layer hides the ones below (all measured with povray 3.7). Whatever all
+// layers let through continues the ray (continueThrough).
+Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint& at, bool spawns,
+                                   const State& state, std::optional<Crossing>& crossing,
+                                   RayCounts& counts) const {
+    Layers out;
+    out.n = at.geometric;
     RGB pigment(0.0);
     std::optional<RGB> radiosityHere;
     const size_t layerCount = 1 + top.layersBelow.size();
@@ -458,12 +473,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
         const scene::Finish& fin = tex.finish;
         // A uv-mapped layer is evaluated at the surface's uv.
-        const Vec3& layerP = tex.uvMapping ? uv : texP;
-        const scene::SurfaceInfo unperturbed{geometric, viewDir, uv};
-        n = tex.perturbNormal(layerP, geometric, uv, &unperturbed);
+        const Vec3& layerP = tex.uvMapping ? at.uv : at.texP;
+        const scene::SurfaceInfo unperturbed{at.geometric, at.viewDir, at.uv};
+        const Vec3 n = tex.perturbNormal(layerP, at.geometric, at.uv, &unperturbed);
+        out.n = n;
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
-        const scene::SurfaceInfo info{n, viewDir, uv};
+        const scene::SurfaceInfo info{n, at.viewDir, at.uv};
         // Below +Q6 povray computes no pattern that has a quick_color: the
         // surface takes that colour, shaded as usual (measured; patterns
         // without one are still computed).
@@ -478,54 +494,56 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         const RGB* gathered = nullptr;
         if (radiosity_ && fin.diffuse > 0) {
             if (!radiosityHere)
-                radiosityHere = radiosityLight(p, radiosity_->settings().normal ? n : geometric,
-                                               obj, eps, state, counts);
+                radiosityHere =
+                    radiosityLight(at.p, radiosity_->settings().normal ? n : at.geometric, at.obj,
+                                   at.eps, state, counts);
             gathered = &*radiosityHere;
         }
-        const RGB local = localLight(tex, surface, obj, p, n, viewDir, eps, state.fade, counts,
-                                     gathered, state.radiosity.ray);
-        color += i == 0 ? local : through * local;
+        const RGB local = localLight(tex, surface, at.obj, at.p, n, at.viewDir, at.eps, state.fade,
+                                     counts, gathered, state.radiosity.ray);
+        out.color += i == 0 ? local : out.through * local;
 
         if (spawns && fin.reflection.any()) {
-            const double cosView = std::clamp(-dot(viewDir, n), 0.0, 1.0);
-            const Crossing& c = crossingInfo();
-            reflectivity = reflectance(fin.reflection, cosView, c.fresnelRatio, pigment);
-            if (!reflectivity.isBlack()) {
-                Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-                // A perturbed normal can send the mirror ray under the
-                // surface; povray then mirrors the view ray about the
-                // geometric normal if the ray is behind the perturbed one
-                // too, else mirrors the ray back above the surface
-                // (measured: textures.inc Brushed_Aluminum).
-                if (const double under = dot(reflected, geometric); under < 0) {
-                    if (dot(reflected, n) < 0)
-                        reflected = viewDir - geometric * (2 * dot(viewDir, geometric));
-                    else
-                        reflected = reflected - geometric * (2 * under);
-                }
-                color += reflectivity * reflectionExponent(spawnReflection(reflected, reflectivity),
-                                                           fin.reflection.exponent);
+            const double cosView = std::clamp(-dot(at.viewDir, n), 0.0, 1.0);
+            if (!crossing) crossing = crossingOf(at.obj, state);
+            out.reflectivity =
+                reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment);
+            if (!out.reflectivity.isBlack()) {
+                const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
+                out.color += out.reflectivity *
+                             reflectionExponent(
+                                 spawnReflection(at, reflected, out.reflectivity, state, counts),
+                                 fin.reflection.exponent);
             }
         } else {
-            reflectivity = RGB(0.0);
+            out.reflectivity = RGB(0.0);
         }
 
-        transmits = surface.filter + surface.transmit > 0;
-        if (!transmits) break;
-        through = through * (pigment * surface.filter + RGB(surface.transmit));
-        throughGrey *= surface.filter * grey(pigment) + surface.transmit;
-        if (fin.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
-        if (through.isBlack() && i + 1 < layerCount) {
-            transmits = false;
+        // Negative filter or transmit subtract what lies behind (measured:
+        // rgb 0.5 transmit -1 over a background B shows 1 - B), so the
+        // ray continues whenever either is non-zero.
+        out.transmits = surface.filter != 0 || surface.transmit != 0;
+        if (!out.transmits) break;
+        out.through = out.through * (pigment * surface.filter + RGB(surface.transmit));
+        out.throughGrey *= surface.filter * grey(pigment) + surface.transmit;
+        if (fin.conserveEnergy) out.through = out.through * (RGB(1.0) - out.reflectivity);
+        if (out.through.isBlack() && i + 1 < layerCount) {
+            out.transmits = false;
             break;
         }
     }
-    if (!spawns || !transmits) return color;
-    if (state.weight * through.maxComponent() < adcBailout) return color;
+    return out;
+}
 
-    const Crossing& c = crossingInfo();
+// The ray that goes on through the surface's layers: straight on, bent,
+// split into bands by a dispersive interior, or mirrored back inside.
+RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const SurfacePoint& at,
+                            const Crossing& c, const State& state, RayCounts& counts) const {
+    RGB color = layers.color;
+    const RGB& through = layers.through;
+    const Vec3& n = layers.n;
     State child;
-    child.weight = state.weight * through.maxComponent();
+    child.weight = state.weight * throughWeight;
     child.kind = state.kind;
     child.inside = c.beyond;
     child.band = state.band;
@@ -534,39 +552,13 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
     if (state.transmit) child.transmit = &childTransmit;
     // What the continued ray reports, through this surface's layers.
     auto passTransmit = [&](double seen) {
-        if (state.transmit) *state.transmit = throughGrey * seen;
+        if (state.transmit) *state.transmit = layers.throughGrey * seen;
     };
     if (state.band.white() && c.iorHere != c.iorBeyond &&
         (state.inside.disperses() || c.beyond.disperses())) {
-        // A white ray bending into or out of a dispersive interior splits
-        // into the interior's bands, each bent by its own ior.
-        const InteriorStack& dispersive = c.beyond.disperses() ? c.beyond : state.inside;
-        const int bands = dispersive.innermost()->interior->dispersionSamples;
         child.level = state.level + 1;
-        RGB sum(0.0);
         double seen = 0;
-        for (int k = 0; k < bands; ++k) {
-            child.band = dispersionBand(k, bands);
-            const double eta = state.inside.ior(child.band) / c.beyond.ior(child.band);
-            const RGB weight = dispersionBandColour(k, bands);
-            if (const auto bent = refractedDirection(viewDir, n, eta)) {
-                ++counts.refraction;
-                childTransmit = 0;
-                sum += weight * trace({p, *bent}, eps, child, counts) * state.fade;
-                seen += childTransmit / bands;
-            } else {
-                const RGB rest(std::max(0.0, 1.0 - reflectivity.r),
-                               std::max(0.0, 1.0 - reflectivity.g),
-                               std::max(0.0, 1.0 - reflectivity.b));
-                const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-                State mirrored = child;
-                mirrored.kind = scene::RayKind::Reflection;
-                mirrored.inside = state.inside;
-                mirrored.transmit = nullptr;
-                ++counts.reflection;
-                sum += weight * rest * trace({p, reflected}, eps, mirrored, counts);
-            }
-        }
+        const RGB sum = traceDispersed(layers, at, c, state, child, seen, counts);
         passTransmit(seen);
         return color + through * sum;
     }
@@ -576,28 +568,62 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
         // non-refracting surfaces).
         child.level = state.level;
         ++counts.transmission;
-        color += through * trace({p, viewDir}, eps, child, counts) * state.fade;
+        color += through * trace({at.p, at.viewDir}, at.eps, child, counts) * state.fade;
         passTransmit(childTransmit);
-    } else if (const auto bent = refractedDirection(viewDir, n, c.iorHere / c.iorBeyond)) {
+    } else if (const auto bent = refractedDirection(at.viewDir, n, c.iorHere / c.iorBeyond)) {
         child.level = state.level + 1;
         ++counts.refraction;
-        color += through * trace({p, *bent}, eps, child, counts) * state.fade;
+        color += through * trace({at.p, *bent}, at.eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else {
         // Total internal reflection: the ray is mirrored back inside with
         // what the reflection term did not already take, so the surface
         // mirrors 100 % (measured: a prism of transmit 0.5 passes 0.5 * 0.5
         // of the light whatever its reflection value).
-        const RGB rest(std::max(0.0, 1.0 - reflectivity.r), std::max(0.0, 1.0 - reflectivity.g),
-                       std::max(0.0, 1.0 - reflectivity.b));
+        const RGB rest = unreflected(layers.reflectivity);
         // The mirrored ray keeps the incoming ray's adc weight (measured:
         // scaling it by `rest` cuts rays povray traces).
         if (!rest.isBlack()) {
-            const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
-            color += rest * spawnReflection(reflected, RGB(1.0));
+            const Vec3 reflected = at.viewDir - n * (2 * dot(at.viewDir, n));
+            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts);
         }
     }
     return color;
+}
+
+// A white ray bending into or out of a dispersive interior splits into the
+// interior's bands, each bent by its own ior; `child` is the state the
+// band rays start from, `seen` receives what they report of the
+// background (alpha output).
+RGB Tracer::traceDispersed(const Layers& layers, const SurfacePoint& at, const Crossing& c,
+                           const State& state, State child, double& seen, RayCounts& counts) const {
+    const Vec3& n = layers.n;
+    const InteriorStack& dispersive = c.beyond.disperses() ? c.beyond : state.inside;
+    const int bands = dispersive.innermost()->interior->dispersionSamples;
+    double childTransmit = 0;
+    if (state.transmit) child.transmit = &childTransmit;
+    RGB sum(0.0);
+    for (int k = 0; k < bands; ++k) {
+        child.band = dispersionBand(k, bands);
+        const double eta = state.inside.ior(child.band) / c.beyond.ior(child.band);
+        const RGB weight = dispersionBandColour(k, bands);
+        if (const auto bent = refractedDirection(at.viewDir, n, eta)) {
+            ++counts.refraction;
+            childTransmit = 0;
+            sum += weight * trace({at.p, *bent}, at.eps, child, counts) * state.fade;
+            seen += childTransmit / bands;
+        } else {
+            const RGB rest = unreflected(layers.reflectivity);
+            const Vec3 reflected = at.viewDir - n * (2 * dot(at.viewDir, n));
+            State mirrored = child;
+            mirrored.kind = scene::RayKind::Reflection;
+            mirrored.inside = state.inside;
+            mirrored.transmit = nullptr;
+            ++counts.reflection;
+            sum += weight * rest * trace({at.p, reflected}, at.eps, mirrored, counts);
+        }
+    }
+    return sum;
 }
 
 }  // namespace frameray::render

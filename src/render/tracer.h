@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "render/atmosphere.h"
 #include "render/dispersion.h"
@@ -135,6 +136,55 @@ class Tracer {
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
                      const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
                      const Vec3& geometric, const State& state, RayCounts& counts) const;
+    // The pieces of shadeTexture. SurfacePoint is the point being shaded
+    // (shadeTexture's arguments and the self-hit epsilon of rays leaving it).
+    struct SurfacePoint {
+        const scene::Ray& ray;
+        const scene::Object& obj;
+        Vec3 p, texP, uv, viewDir, geometric;
+        double eps;
+    };
+    // Where a ray through the surface goes: the interiors beyond it and
+    // the iors on both sides.
+    struct Crossing {
+        InteriorStack beyond;
+        double iorHere;
+        double iorBeyond;
+        // The ior ratio of povray 3.7's fresnel reflection. Leaving an
+        // object while inside others too, povray divides the innermost
+        // region's ior (usually the object's own) by the object's, a
+        // ratio of 1: no fresnel reflection from inside (measured: with
+        // the camera inside a plane's half-space, a fresnel glass sphere's
+        // image is the same for every max_trace_level from 3 up; alone in
+        // the air, its inner reflections show). Refraction is not affected.
+        double fresnelRatio;
+    };
+    // What the layers of a texture give: their colour, what they let
+    // through (also as one grey number, for alpha output: povray counts
+    // filter by the pigment's grey), and the last layer's reflectivity
+    // and perturbed normal.
+    struct Layers {
+        RGB color{0.0};
+        RGB through{1.0};
+        double throughGrey = 1.0;
+        bool transmits = false;
+        RGB reflectivity{0.0};
+        Vec3 n;
+    };
+    RGB shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,
+                        RayCounts& counts) const;
+    Crossing crossingOf(const scene::Object& obj, const State& state) const;
+    // `crossing` is found when a layer's reflection needs it (kept for
+    // continueThrough).
+    Layers shadeLayers(const scene::Texture& top, const SurfacePoint& at, bool spawns,
+                       const State& state, std::optional<Crossing>& crossing,
+                       RayCounts& counts) const;
+    RGB spawnReflection(const SurfacePoint& at, const Vec3& reflected, const RGB& weightColor,
+                        const State& state, RayCounts& counts) const;
+    RGB continueThrough(const Layers& layers, double throughWeight, const SurfacePoint& at,
+                        const Crossing& c, const State& state, RayCounts& counts) const;
+    RGB traceDispersed(const Layers& layers, const SurfacePoint& at, const Crossing& c,
+                       const State& state, State child, double& seen, RayCounts& counts) const;
     // `gathered`: the radiosity light arriving at p, when radiosity is on
     // (it replaces ambient light); `radiosityRay`: shading for a radiosity
     // ray, which sees no highlights and area lights as point lights.

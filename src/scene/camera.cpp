@@ -27,6 +27,16 @@ void finalizeCamera(Camera& cam, const CameraEdits& edits) {
             cam.right = normalize(cam.right) * width;
             cam.up = normalize(cam.up) * (width * aspect);
         }
+    } else if (cam.projection == Projection::Orthographic && !edits.sized) {
+        // Neither angle nor right/up: the view is as wide as the perspective
+        // view (right/direction) at the look_at distance (measured: location
+        // -4*z look_at 0 sees 1.33*4 units across, direction 2*z halves
+        // that, no look_at measures to <0,0,1>, right or up given keeps them).
+        const double scale = length(cam.lookAt - cam.location) / length(cam.direction);
+        if (scale > 0) {
+            cam.right = cam.right * scale;
+            cam.up = cam.up * scale;
+        }
     }
     if (edits.lookAt) {
         const double dirLength = length(cam.direction), upLength = length(cam.up),

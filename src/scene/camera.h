@@ -67,7 +67,10 @@ struct Camera {
 struct CameraEdits {
     std::optional<double> angle;  // `angle` given in this block
     bool lookAt = false;          // `look_at` given in this block
-    Transform transform;          // every transformation, in order
+    // `right` or `up` given in this block, or the camera is a declared one:
+    // an orthographic view keeps the size they give.
+    bool sized = false;
+    Transform transform;  // every transformation, in order
 };
 
 // The default field angle of each projection when none is given.
@@ -75,7 +78,9 @@ double defaultAngle(Projection projection);
 
 // Applies what POV-Ray 3.7 applies after reading the block, in its order
 // whatever the order in the file: the angle (perspective: direction
-// length; orthographic: right and up lengths), then look_at (keeping the
+// length; orthographic: right and up lengths, which without angle, right
+// and up are scaled to the perspective view's size at the look_at
+// distance), then look_at (keeping the
 // handedness of up/direction/right), then the transformations.
 void finalizeCamera(Camera& camera, const CameraEdits& edits);
 

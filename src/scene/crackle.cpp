@@ -24,9 +24,9 @@ Vec3 crackleFeaturePoint(int ix, int iy, int iz) {
 
 double cellsValue(const Vec3& p) {
     constexpr double kNudge = 1e-10;
-    const int ix = static_cast<int>(std::floor(p.x + kNudge));
-    const int iy = static_cast<int>(std::floor(p.y + kNudge));
-    const int iz = static_cast<int>(std::floor(p.z + kNudge));
+    const int ix = latticeFloor(p.x + kNudge);
+    const int iy = latticeFloor(p.y + kNudge);
+    const int iz = latticeFloor(p.z + kNudge);
     return kCrackleTable[static_cast<std::size_t>(cellHash(ix, iy, iz))];
 }
 
@@ -45,9 +45,9 @@ double metricDistance(const Vec3& d, const CrackleSettings& s) {
 }  // namespace
 
 double crackle(const Vec3& p, const CrackleSettings& s, NoiseGenerator generator) {
-    const int cx = static_cast<int>(std::floor(p.x));
-    const int cy = static_cast<int>(std::floor(p.y));
-    const int cz = static_cast<int>(std::floor(p.z));
+    const int cx = latticeFloor(p.x);
+    const int cy = latticeFloor(p.y);
+    const int cz = latticeFloor(p.z);
     // The three smallest distances over the 27 cells around p (enough to
     // reproduce povray for metrics 1 to 3: measured).
     double d[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};

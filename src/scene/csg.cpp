@@ -78,6 +78,32 @@ bool rayMeetsOperandBoxes(const Object& node, const Ray& ray, double tMin) {
     return rayMeetsBox(ray, tMin, box);
 }
 
+// The common part of the operands' inside regions of an intersection or
+// difference (its subtracted operands inverted). An unbounded operand is
+// bounded where the others bound it (Object::insideBoundsWithin: a
+// quadric cylinder between two planes), so pieces made of quadrics and
+// planes get a finite box and a place in the BVH instead of being tested
+// by every ray.
+Bounds operandsCommonBounds(const Object& node) {
+    const size_t n = node.children.size();
+    if (n == 0) return {};
+    Bounds box = Bounds::infinite();
+    for (size_t i = 0; i < n; ++i) box = box.intersected(operandInsideBounds(node, i));
+    if (box.isEmpty() || box.isFinite()) return box;
+    for (int pass = 0; pass < 2; ++pass)
+        for (size_t i = 0; i < n; ++i) {
+            if (node.op == CsgOp::Difference && i > 0) continue;
+            box = box.intersected(node.children[i]->insideBoundsWithin(box));
+            if (box.isEmpty()) return box;
+        }
+    return box;
+}
+
+bool hasPatchOperand(const Object& node) {
+    return std::any_of(node.children.begin(), node.children.end(),
+                       [](const ObjectRef& c) { return c->isPatch(); });
+}
+
 }  // namespace
 
 void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
@@ -130,11 +156,15 @@ Bounds surfaceBounds(const Object& node) {
                 if (j != i) part = part.intersected(operandInsideBounds(node, j));
         if (!part.isEmpty()) out.extend(part);
     }
+    // Every surviving crossing is also inside its own operand (closed),
+    // unless that operand is a patch, which encloses nothing.
+    if ((node.op == CsgOp::Intersection || node.op == CsgOp::Difference) && !out.isFinite() &&
+        !hasPatchOperand(node))
+        out = out.intersected(operandsCommonBounds(node));
     return out;
 }
 
 Bounds insideBounds(const Object& node) {
-    const size_t n = node.children.size();
     if (node.op == CsgOp::Union || node.op == CsgOp::Merge) {
         Bounds out;
         for (const ObjectRef& c : node.children) {
@@ -143,10 +173,7 @@ Bounds insideBounds(const Object& node) {
         }
         return out;
     }
-    if (n == 0) return {};
-    Bounds out = Bounds::infinite();
-    for (size_t i = 0; i < n; ++i) out = out.intersected(operandInsideBounds(node, i));
-    return out;
+    return operandsCommonBounds(node);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene/crackle.h"
+#include "util/lattice_hash.h"
 
 namespace frameray::scene {
 
@@ -21,9 +22,9 @@ double metricSum(const Vec3& d, double metric) {
 Vec3 facetsNormal(const Vec3& p, const Vec3& n, const FacetsSettings& s, double metric) {
     const double scale = s.size < 1e-6 ? 1e6 : 1.0 / s.size;
     const Vec3 t = (s.coords != 0 ? p : n) * scale;
-    const int cx = static_cast<int>(std::floor(t.x));
-    const int cy = static_cast<int>(std::floor(t.y));
-    const int cz = static_cast<int>(std::floor(t.z));
+    const int cx = latticeFloor(t.x);
+    const int cy = latticeFloor(t.y);
+    const int cz = latticeFloor(t.z);
     // The nearest feature point lies within a knight's move: cells up to
     // two away along at most one axis and one away along the others.
     double best = 300000.0;

@@ -54,10 +54,103 @@ bool pastLastTexel(double t, int size) {
     return t * size + kNudge >= size;
 }
 
+double srgbDecode(double v) {
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
 }  // namespace
 
+ImageTexels::ImageTexels(std::shared_ptr<const util::PixelBuffer> pixels,
+                         const ColorDecoding& decoding)
+    : pixels_(std::move(pixels)), colors_(true), decoding_(decoding) {
+    const util::PixelBuffer& px = *pixels_;
+    if (px.isPalette()) {
+        // Every entry once: colour, filter and transmit (alpha included).
+        paletteColors_.resize(256);
+        for (std::size_t i = 0; i < 256; ++i) {
+            const auto& entry = px.palette()[i];
+            auto unit = [&](int c) {
+                return static_cast<double>(
+                    util::PixelBuffer::kByteToUnit[entry[static_cast<std::size_t>(c)]]);
+            };
+            RGB rgb(decode(unit(0)), decode(unit(1)), decode(unit(2)));
+            const double alpha = px.hasAlpha() ? unit(3) : 1.0;
+            if (decoding_.premultiplied && alpha > 0) rgb *= 1.0 / alpha;
+            paletteColors_[i] = Color(rgb, decoding_.paletteFilter[i],
+                                      decoding_.paletteTransmit[i] + (1.0 - alpha));
+        }
+    } else if (px.sample() != util::PixelBuffer::Sample::F32) {
+        const std::size_t levels = px.sample() == util::PixelBuffer::Sample::U8 ? 256 : 65536;
+        // Each level as PixelBuffer::value gives it, decoded.
+        const float scale = levels == 256 ? 1.0f / 255.0f : 1.0f / 65535.0f;
+        levels_.resize(levels);
+        for (std::size_t l = 0; l < levels; ++l)
+            levels_[l] = decode(static_cast<double>(static_cast<float>(l) * scale));
+    }
+}
+
+ImageTexels::ImageTexels(std::shared_ptr<const util::PixelBuffer> pixels, Scalar scalar)
+    : pixels_(std::move(pixels)), colors_(false), scalar_(scalar) {}
+
+double ImageTexels::decode(double v) const {
+    // File values -> linear light -> the working gamma.
+    if (decoding_.asStored) return v;
+    const double g = decoding_.fileGamma;
+    const double linear = g == 0 ? srgbDecode(v) : g == 1 ? v : std::pow(v, g);
+    const double w = decoding_.workingGamma;
+    return w == 1.0 ? linear : std::pow(linear, 1.0 / w);
+}
+
+double ImageTexels::channel(std::size_t p, int c) const {
+    return static_cast<double>(pixels_->value(p, c));
+}
+
+Color ImageTexels::color(std::size_t p) const {
+    const util::PixelBuffer& px = *pixels_;
+    if (px.isPalette()) return paletteColors_[px.index(p)];
+    const int ch = px.channels();
+    const int g = ch < 3 ? 0 : 1, b = ch < 3 ? 0 : 2;
+    RGB rgb;
+    if (levels_.empty())
+        rgb = RGB(decode(channel(p, 0)), decode(channel(p, g)), decode(channel(p, b)));
+    else
+        rgb = RGB(levels_[px.level(p, 0)], levels_[px.level(p, g)], levels_[px.level(p, b)]);
+    const double alpha = px.hasAlpha() ? channel(p, ch - 1) : 1.0;
+    if (decoding_.premultiplied && alpha > 0) rgb *= 1.0 / alpha;
+    return Color(rgb, decoding_.filterAll, decoding_.transmitAll + (1.0 - alpha));
+}
+
+double ImageTexels::value(std::size_t p) const {
+    const util::PixelBuffer& px = *pixels_;
+    double v;
+    switch (scalar_) {
+        case Scalar::Index:
+            return px.index(p);  // the raw index (measured: a step of 1 per entry)
+        case Scalar::MaterialIndex:
+            return materialIndex(px, p);
+        case Scalar::Alpha:
+            v = 1.0 - (px.hasAlpha() ? channel(p, px.channels() - 1) : 1.0);
+            break;
+        case Scalar::Grey:
+        default: {
+            const bool greyImage = px.channels() < 3;
+            v = grey(channel(p, 0), channel(p, greyImage ? 0 : 1), channel(p, greyImage ? 0 : 2));
+        }
+    }
+    // Single precision, as the scalar has always been kept.
+    return static_cast<double>(static_cast<float>(v));
+}
+
+double materialIndex(const util::PixelBuffer& px, std::size_t p) {
+    if (px.isPalette()) return px.index(p);
+    const double byte = std::floor(static_cast<double>(px.value(p, 0)) * 255.0 + 0.5);
+    if (px.channels() >= 3) return byte;
+    const float g = static_cast<float>(byte) / 255.0f;
+    return std::floor(static_cast<double>(greySingle(g, g, g)) * 255.0);
+}
+
 bool imageCoordinatesOk(const ImageMap& map, const Vec3& p, double& u, double& v) {
-    return !map.texels().values.empty() && map.imageCoordinates(p, u, v);
+    return map.texels().hasValues() && map.imageCoordinates(p, u, v);
 }
 
 bool ImageMap::imageCoordinates(const Vec3& p, double& u, double& v) const {
@@ -82,7 +175,7 @@ bool ImageMap::imageCoordinates(const Vec3& p, double& u, double& v) const {
             v = p.y;
             if (once_ && (v < 0 || v > 1)) return false;
             v -= std::floor(v);
-            return !(once_ && pastLastTexel(v, texels_->height));
+            return !(once_ && pastLastTexel(v, texels_->height()));
         case ImageMapping::Torus: {
             // Around the y axis for u; around the tube of major radius 1 for
             // v: 0 on the inner rim, 1/4 underneath, 1/2 on the outer rim
@@ -100,12 +193,12 @@ bool ImageMap::imageCoordinates(const Vec3& p, double& u, double& v) const {
     if (once_ && (u < 0 || u > 1 || v < 0 || v > 1)) return false;
     u -= std::floor(u);
     v -= std::floor(v);
-    return !(once_ && (pastLastTexel(u, texels_->width) || pastLastTexel(v, texels_->height)));
+    return !(once_ && (pastLastTexel(u, texels_->width()) || pastLastTexel(v, texels_->height())));
 }
 
 void ImageMap::texelCoordinates(double u, double v, double& x, double& y) const {
-    x = u * texels_->width;
-    y = (1.0 - v) * texels_->height;
+    x = u * texels_->width();
+    y = (1.0 - v) * texels_->height();
 }
 
 void ImageMap::nearestTexel(double u, double v, int& ix, int& iy) const {
@@ -115,20 +208,20 @@ void ImageMap::nearestTexel(double u, double v, int& ix, int& iy) const {
     // image's edge. So a box face at exactly x = 1 shows column 0 however
     // the hit point rounds. Rows are counted up from the bottom and then
     // flipped.
-    const int w = texels_->width, h = texels_->height;
+    const int w = texels_->width(), h = texels_->height();
     ix = wrapX(static_cast<int>(std::floor(u * w + kNudge)));
     iy = h - 1 - wrapY(static_cast<int>(std::floor(v * h + kNudge)));
 }
 
 int ImageMap::wrapX(int x) const {
-    const int w = texels_->width;
+    const int w = texels_->width();
     if (once_) return std::clamp(x, 0, w - 1);
     x %= w;
     return x < 0 ? x + w : x;
 }
 
 int ImageMap::wrapY(int y) const {
-    const int h = texels_->height;
+    const int h = texels_->height();
     if (once_) return std::clamp(y, 0, h - 1);
     y %= h;
     return y < 0 ? y + h : y;
@@ -196,33 +289,32 @@ T ImageMap::sample(double u, double v, Fetch fetch) const {
 
 Color ImageMap::colorAt(const Vec3& p) const {
     double u = 0, v = 0;
-    if (!texels_ || texels_->colors.empty() || !imageCoordinates(p, u, v))
+    if (!texels_ || !texels_->hasColors() || !imageCoordinates(p, u, v))
         return Color(RGB(1.0), 0.0, 1.0);
     const ImageTexels& t = *texels_;
-    return sample<Color>(u, v, [&t](int x, int y) {
-        return t.colors[static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) +
-                        static_cast<std::size_t>(x)];
+    const auto w = static_cast<std::size_t>(t.width());
+    return sample<Color>(u, v, [&t, w](int x, int y) {
+        return t.color(static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x));
     });
 }
 
 double ImageMap::texelValue(int ix, int iy) const {
     const ImageTexels& t = *texels_;
-    return t.values[static_cast<std::size_t>(wrapY(iy)) * static_cast<std::size_t>(t.width) +
-                    static_cast<std::size_t>(wrapX(ix))];
+    return t.value(static_cast<std::size_t>(wrapY(iy)) * static_cast<std::size_t>(t.width()) +
+                   static_cast<std::size_t>(wrapX(ix)));
 }
 
 double ImageMap::valueAt(const Vec3& p) const {
     double u = 0, v = 0;
-    if (!texels_ || texels_->values.empty() || !imageCoordinates(p, u, v)) return 0.0;
+    if (!texels_ || !texels_->hasValues() || !imageCoordinates(p, u, v)) return 0.0;
     return valueAtImagePoint(u, v);
 }
 
 double ImageMap::valueAtImagePoint(double u, double v) const {
     const ImageTexels& t = *texels_;
-    return sample<double>(u, v, [&t](int x, int y) {
-        return static_cast<double>(
-            t.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) +
-                     static_cast<std::size_t>(x)]);
+    const auto w = static_cast<std::size_t>(t.width());
+    return sample<double>(u, v, [&t, w](int x, int y) {
+        return t.value(static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x));
     });
 }
 
@@ -241,7 +333,7 @@ Vec3 bumpMapNormal(const ImageMap& map, double bumpSize, const Vec3& p, const Ve
         b = map.texelValue(ix + 1, iy + 1);
         c = map.texelValue(ix - 1, iy + 1);
     } else {
-        const double du = 1.0 / t.width, dv = 1.0 / t.height;
+        const double du = 1.0 / t.width(), dv = 1.0 / t.height();
         a = map.valueAtImagePoint(u, v);
         b = map.valueAtImagePoint(u + du, v - dv);
         c = map.valueAtImagePoint(u - du, v - dv);

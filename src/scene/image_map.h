@@ -11,10 +11,13 @@
 // and does not allocate.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "util/color.h"
+#include "util/pixel_buffer.h"
 #include "util/vec3.h"
 
 namespace frameray::scene {
@@ -23,14 +26,64 @@ enum class ImageMapping { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5 
 
 enum class ImageInterpolation { None = 0, Bilinear = 2, Bicubic = 3, NormalizedDistance = 4 };
 
-// The prepared pixels of one image as a pigment, pattern or bump map uses
-// them; row 0 is the image's top row.
-struct ImageTexels {
-    int width = 0;
-    int height = 0;
-    std::vector<Color> colors;  // image_map: colour, filter and transmit
-    std::vector<float> values;  // image_pattern / bump_map: the scalar
+// The texels of one image as a pigment, pattern or bump map reads them:
+// the file's pixels as stored (shared with every other map of the same
+// file) and how a texel becomes a colour or a scalar, computed at each
+// lookup (a table per level for the gamma), so a map costs no more memory
+// than its file's pixels. Row 0 is the image's top row.
+class ImageTexels {
+  public:
+    // What image_pattern, bump_map and material_map read from a texel.
+    enum class Scalar : std::uint8_t {
+        Grey,          // grey() (util/color.h) of the file values (no gamma)
+        Alpha,         // 1 - alpha (use_alpha)
+        Index,         // the palette index itself (bump_map use_index)
+        MaterialIndex  // material_map's texture index (see materialIndex)
+    };
+    // How image_map turns file values into colours.
+    struct ColorDecoding {
+        bool asStored = false;  // the values as they are (no gamma at all)
+        double fileGamma = 1;   // the file's gamma; 0: sRGB
+        double workingGamma = 1;
+        bool premultiplied = false;
+        double filterAll = 0, transmitAll = 0;
+        // Palette images: filter and transmit per entry.
+        std::array<double, 256> paletteFilter{}, paletteTransmit{};
+    };
+
+    // image_map texels.
+    ImageTexels(std::shared_ptr<const util::PixelBuffer> pixels, const ColorDecoding& decoding);
+    // image_pattern / bump_map / material_map texels.
+    ImageTexels(std::shared_ptr<const util::PixelBuffer> pixels, Scalar scalar);
+
+    int width() const { return pixels_->width(); }
+    int height() const { return pixels_->height(); }
+    bool hasColors() const { return colors_; }
+    bool hasValues() const { return !colors_; }
+
+    // Texel p (row-major from the top): colour, filter and transmit.
+    Color color(std::size_t p) const;
+    // Texel p's scalar.
+    double value(std::size_t p) const;
+
+  private:
+    double decode(double fileValue) const;
+    double channel(std::size_t p, int c) const;
+
+    std::shared_ptr<const util::PixelBuffer> pixels_;
+    bool colors_ = false;
+    Scalar scalar_ = Scalar::Grey;
+    ColorDecoding decoding_;
+    std::vector<double> levels_;        // integer samples: each level decoded
+    std::vector<Color> paletteColors_;  // palette images: each entry decoded
 };
+
+// The texture material_map picks at pixel p of `pixels` before the list
+// length is applied: the palette index of palette images, the 8-bit red
+// value of colour images and, for grey images, the grey value taken through
+// povray's single-precision grey weighting (greySingle) times 255,
+// truncated (so 111 gives 110: measured over all 256 grey levels).
+double materialIndex(const util::PixelBuffer& pixels, std::size_t p);
 
 class ImageMap {
   public:

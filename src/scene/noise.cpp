@@ -62,8 +62,10 @@ struct Cell {
 // POV-Ray floors negative coordinates with a 1e-10 tolerance, so a point a
 // hair below an integer still counts as on it.
 inline void latticeAxis(double v, int& cell, double& frac) {
-    const int whole = v >= 0 ? static_cast<int>(v) : static_cast<int>(v - (1.0 - 1e-10));
-    cell = (whole - kLatticeOffset) & 0xFFF;
+    const int whole = v >= 0 ? latticeTruncate(v) : latticeTruncate(v - (1.0 - 1e-10));
+    // Unsigned: INT_MIN and numbers near INT_MAX wrap, as the 12 bits want.
+    cell = static_cast<int>((static_cast<unsigned>(whole) - static_cast<unsigned>(kLatticeOffset)) &
+                            0xFFFu);
     frac = v - whole;
 }
 

@@ -242,6 +242,13 @@ Bounds Object::insideBounds() const {
     return intersectAll(raw, clippedBy, &Object::insideBounds);
 }
 
+Bounds Object::insideBoundsWithin(const Bounds& box) const {
+    if (!shape || inverse || isPatch()) return insideBounds().intersected(box);
+    const Bounds local = shape->insideBoundsWithin(box.transformedAxiswise(transform.inverse()));
+    return intersectAll(local.transformedAxiswise(transform).intersected(box), clippedBy,
+                        &Object::insideBounds);
+}
+
 Bounds Object::insideInvertedBounds() const {
     if (isPatch()) return {};
     Bounds raw = Bounds::infinite();

@@ -141,6 +141,9 @@ struct Object {
     // unbounded.
     Bounds surfaceBounds() const;
     Bounds insideBounds() const;
+    // insideBounds() within the world box `box`, tighter where the shape
+    // can use the box (Shape::insideBoundsWithin).
+    Bounds insideBoundsWithin(const Bounds& box) const;
     // The bounding box the SDL reports (min_extent, max_extent).
     Bounds worldBounds() const { return surfaceBounds(); }
     // Bounds of insideInverted(): infinite, or empty for patches.

@@ -5,8 +5,6 @@
 // the work; these are the parsed values only.
 #pragma once
 
-#include <string>
-
 namespace frameray::scene {
 
 // global_settings { photons { ... } }. Defaults are povray 3.7's.
@@ -17,20 +15,17 @@ struct PhotonSettings {
     int count = 0;  // photons to shoot, povray picking the spacing
     int gatherMin = 20;
     int gatherMax = 100;
-    int mediaMaxSteps = 0;  // 0: no media photons
-    double mediaFactor = 1.0;
-    double jitter = 0.4;          // of the angular spacing, per photon
-    int maxTraceLevel = -1;       // -1: the scene's max_trace_level
-    double adcBailout = -1;       // negative: the scene's adc_bailout
-    double autostop = 0;          // fraction of the target's cone shot before stopping is allowed
-    double expandIncrease = 0.2;  // expand_thresholds: growth of the search radius
-    int expandMin = 40;           // expand_thresholds: fewer photons than this grow it
-    double radius = 0;            // gather radius; 0: estimated from the photons
+    double jitter = 0.4;     // of the angular spacing, per photon
+    int maxTraceLevel = -1;  // -1: the scene's max_trace_level
+    double adcBailout = -1;  // negative: the scene's adc_bailout
+    double autostop = 0;     // fraction of the target's cone shot before stopping is allowed
+    // expand_thresholds: read, and as in povray 3.7 (measured) no effect.
+    double expandIncrease = 0.2;
+    int expandMin = 40;
+    double radius = 0;  // gather radius; 0: estimated from the photons
     double radiusMultiplier = 1.0;
     double mediaRadius = 0;
     double mediaRadiusMultiplier = 1.0;
-    std::string saveFile;
-    std::string loadFile;
 };
 
 // An object's photons { ... } block. povray's defaults: no target,

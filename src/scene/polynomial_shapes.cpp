@@ -162,29 +162,30 @@ void PolynomialSurface::allHits(const Ray& ray, double tMin, double tMax,
     const detail::RecentredRay rr(ray);
     if (!rr.valid()) return;
     // Powers of each coordinate along the ray as polynomials in s:
-    // (b + s u)^n, built up by repeated multiplication.
+    // (b + s u)^n, built up by repeated multiplication. Only the entries
+    // up to the order are written and read (no clearing of the rest: this
+    // runs for every ray that reaches the shape).
     using Poly = std::array<double, kMaxPolynomialDegree + 1>;
     std::array<Poly, kMaxPolynomialDegree + 1> powers[3];
     for (int axis = 0; axis < 3; ++axis) {
         auto& pw = powers[axis];
         const double b = rr.base[axis], u = rr.dir[axis];
-        pw[0].fill(0);
         pw[0][0] = 1;
         for (int n = 1; n <= order_; ++n) {
-            pw[n].fill(0);
-            for (int m = 0; m < n; ++m) {
-                pw[n][m] += pw[n - 1][m] * b;
-                pw[n][m + 1] += pw[n - 1][m] * u;
-            }
+            pw[n][0] = pw[n - 1][0] * b;
+            for (int m = 1; m < n; ++m) pw[n][m] = pw[n - 1][m - 1] * u + pw[n - 1][m] * b;
+            pw[n][n] = pw[n - 1][n - 1] * u;
         }
     }
-    Poly c{};
+    Poly c;
+    std::fill_n(c.begin(), order_ + 1, 0.0);
+    Poly xy;
     for (const Term& t : terms_) {
         const Poly& px = powers[0][t.i];
         const Poly& py = powers[1][t.j];
         const Poly& pz = powers[2][t.k];
         // xy = px * py (degree i + j), then times pz.
-        Poly xy{};
+        std::fill_n(xy.begin(), t.i + t.j + 1, 0.0);
         for (int m = 0; m <= t.i; ++m)
             for (int n = 0; n <= t.j; ++n) xy[m + n] += px[m] * py[n];
         for (int m = 0; m <= t.i + t.j; ++m)

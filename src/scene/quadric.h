@@ -9,7 +9,7 @@
 namespace frameray::scene {
 
 class Quadric final : public Shape {
-public:
+  public:
     struct Coefficients {
         double a, b, c, d, e, f, g, h, i, j;
     };
@@ -21,11 +21,14 @@ public:
     // only when the ellipsoid's inside is its interior.
     Bounds bounds() const override;
     Bounds insideBounds() const override;
+    // Quadrics without cross terms (axis-aligned cylinders, cones,
+    // hyperboloids, paraboloids) bounded by the box's other axes.
+    Bounds insideBoundsWithin(const Bounds& box) const override;
     const char* name() const override { return "quadric"; }
 
     double value(const Vec3& p) const;
 
-private:
+  private:
     // The box around the ellipsoid when the quadratic part is definite;
     // `interiorNegative` tells whether f < 0 inside it.
     bool ellipsoidBounds(Bounds& box, bool& interiorNegative) const;

@@ -20,6 +20,25 @@ Bounds Bounds::transformed(const Transform& t) const {
     return out;
 }
 
+Bounds Bounds::transformedAxiswise(const Transform& t) const {
+    if (isEmpty()) return {};
+    const Matrix4& m = t.matrix();
+    Bounds out;
+    for (int k = 0; k < 3; ++k) {
+        double lo_k = m.m[3][static_cast<size_t>(k)], hi_k = lo_k;
+        for (int j = 0; j < 3; ++j) {
+            const double c = m.m[static_cast<size_t>(j)][static_cast<size_t>(k)];
+            if (c == 0) continue;  // 0 * infinity contributes nothing
+            const double a = c * lo[j], b = c * hi[j];
+            lo_k += std::min(a, b);
+            hi_k += std::max(a, b);
+        }
+        out.lo[k] = lo_k;
+        out.hi[k] = hi_k;
+    }
+    return out;
+}
+
 bool Bounds::clip(const Ray& ray, double& tMin, double& tMax) const {
     if (isEmpty()) return false;
     for (int axis = 0; axis < 3; ++axis) {

@@ -43,6 +43,11 @@ struct Bounds {
     // its eight transformed corners. Empty stays empty; a box that is
     // infinite along any axis becomes infinite along all of them.
     Bounds transformed(const Transform& t) const;
+    // The same by interval arithmetic, axis by axis, so an extent stays
+    // finite wherever only finite extents feed it (an infinite cylinder's
+    // box keeps its two finite axes under scaling and translation). For
+    // bounds refinement (csg.h); transformed() is what the BVH uses.
+    Bounds transformedAxiswise(const Transform& t) const;
     // Narrows [tMin, tMax] to where the ray is inside the box; false when
     // that is empty (a slab test; infinite extents never narrow it).
     bool clip(const Ray& ray, double& tMin, double& tMax) const;

@@ -50,6 +50,14 @@ class Shape {
     // surface bounds unless the inside reaches further (a disc's inside is
     // a half-space) or is empty (patches).
     virtual Bounds insideBounds() const { return bounds(); }
+    // Object-space bounds of where inside() can be true within `box`
+    // (which may be infinite along some axes): what an intersection learns
+    // about an unbounded operand from the others (an infinite cylinder cut
+    // by two planes). Conservative; tighter than insideBounds() ∩ box only
+    // where a shape knows better.
+    virtual Bounds insideBoundsWithin(const Bounds& box) const {
+        return insideBounds().intersected(box);
+    }
     // Whether inside() holds beyond bounds() (a disc's half-space). povray
     // skips a CSG intersection along rays that miss the common part of its
     // operands' bounding boxes, which only shows with such shapes.

@@ -21,9 +21,9 @@ namespace {
 
 // povray's built-in colour maps for patterns given without one (measured
 // from its renders); every other pattern defaults to black to white.
-ColorMap defaultColorMap(PatternKind kind) {
+ColorMap defaultColorMap(const Pattern& pattern) {
     auto rgb = [](double r, double g, double b) { return Color(RGB(r, g, b)); };
-    switch (kind) {
+    switch (pattern.kind) {
         case PatternKind::Bozo:
             return ColorMap({{0.4, rgb(1, 1, 1)},
                              {0.4, rgb(0, 1, 0)},
@@ -43,6 +43,24 @@ ColorMap defaultColorMap(PatternKind kind) {
                              {0.6, rgb(0.9, 0.7, 0.4)},
                              {0.6, rgb(1.0, 0.7, 0.4)},
                              {1.0, rgb(0.6, 0.3, 0.0)}});
+        case PatternKind::Radial:
+            // Cyan, yellow, magenta and back around the circle (measured).
+            return ColorMap({{0.0, rgb(0, 1, 1)},
+                             {1.0 / 3.0, rgb(1, 1, 0)},
+                             {2.0 / 3.0, rgb(1, 0, 1)},
+                             {1.0, rgb(0, 1, 1)}});
+        case PatternKind::Fractal:
+            // Only the plain mandel (exponent 2) has one: black up to 0.001,
+            // then cyan, yellow, magenta by 0.015 and cyan from 0.1 (measured
+            // at 1000 iterations; julia, magnet, other exponents are grey).
+            if (pattern.fractal.kind == FractalSettings::Kind::Mandel &&
+                pattern.fractal.exponent == 2)
+                return ColorMap({{0.001, rgb(0, 0, 0)},
+                                 {0.001, rgb(0, 1, 1)},
+                                 {0.012, rgb(1, 1, 0)},
+                                 {0.015, rgb(1, 0, 1)},
+                                 {0.1, rgb(0, 1, 1)}});
+            return ColorMap::grayscale();
         default:
             return ColorMap::grayscale();
     }
@@ -57,11 +75,19 @@ void Pigment::setPattern(const Pattern& p) {
     kind_ = p.isList()             ? Kind::List
             : !pigmentMap_.empty() ? Kind::PigmentMapped
                                    : Kind::ColorMapped;
-    if (kind_ == Kind::ColorMapped && colorMap_.empty()) colorMap_ = defaultColorMap(p.kind);
+    if (kind_ == Kind::ColorMapped && (colorMap_.empty() || defaultColorMap_)) {
+        colorMap_ = defaultColorMap(p);
+        defaultColorMap_ = true;
+    }
+}
+
+void Pigment::settleDefaultColorMap() {
+    if (defaultColorMap_) colorMap_ = defaultColorMap(pattern_);
 }
 
 void Pigment::setColorMap(ColorMap map) {
     colorMap_ = std::move(map);
+    defaultColorMap_ = false;
     if (kind_ == Kind::PigmentMapped) kind_ = Kind::ColorMapped;
 }
 
@@ -159,7 +185,7 @@ void Texture::stackOn(Texture& upper) const {
 }
 
 void TextureMap::transformBy(const Transform& t) {
-    holder.transform(t);
+    pattern.addTransform(t);
     for (auto& e : entries) {
         auto tex = std::make_shared<Texture>(*e.texture);
         tex->transformBy(t);

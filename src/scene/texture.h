@@ -52,6 +52,10 @@ class Pigment {
     void setList(std::vector<std::shared_ptr<const Pigment>> list) { list_ = std::move(list); }
     const std::vector<std::shared_ptr<const Pigment>>& list() const { return list_; }
     void setColorMap(ColorMap map);
+    // A pattern without a colour_map takes povray's default map for it,
+    // which may depend on items after the pattern keyword (mandel's
+    // exponent): the parser calls this once the pigment block is read.
+    void settleDefaultColorMap();
     void setPigmentMap(std::vector<MapEntry> map);
     // image_map (image_map.h): the image, seen through the pattern's chain.
     void setImageMap(std::shared_ptr<const ImageMap> map) {
@@ -92,6 +96,7 @@ class Pigment {
     std::vector<MapEntry> pigmentMap_;
     std::shared_ptr<const ImageMap> imageMap_;
     bool average_ = false;
+    bool defaultColorMap_ = false;  // colorMap_ is the pattern's default
     bool uvMapping_ = false;
     bool hasTransform_ = false;
     Transform transform_;
@@ -164,15 +169,15 @@ struct Texture;
 // A patterned texture: `texture_map { [v texture body] .. }`, a list
 // pattern's textures (`checker texture {..} texture {..}`, `tiles`), or
 // `average` over a texture_map, or a `material_map` (an image whose pixels
-// pick the textures). The pattern lives in a holder pigment (its pattern
-// with its chain of transformations and warps).
+// pick the textures). The pattern carries its chain of transformations and
+// warps.
 struct TextureMap {
     enum class Mode { Values, List, Average, Material };
     struct Entry {
         double value;  // map value; the weight under `average`
         std::shared_ptr<const Texture> texture;
     };
-    Pigment holder;
+    Pattern pattern;
     Mode mode = Mode::Values;
     std::vector<Entry> entries;
     // material_map: the image whose scalar texels are texture indices.
@@ -196,7 +201,7 @@ struct TextureMap {
     void transformBy(const Transform& t);
 
     // Where the entries are evaluated for texture point p (mapEntryPoint).
-    Vec3 entryPoint(const Vec3& p) const { return mapEntryPoint(holder.pattern(), p); }
+    Vec3 entryPoint(const Vec3& p) const { return mapEntryPoint(pattern, p); }
 };
 
 struct Texture {
@@ -254,12 +259,13 @@ struct Texture {
     // unit normal n facing the viewer (slope and aoi read `surface`).
     // For a uv-mapped texture p is the surface's (u, v, 0), as uv is.
     Vec3 perturbNormal(const Vec3& p, const Vec3& n, const Vec3& uv,
-                      const SurfaceInfo* surface = nullptr) const {
+                       const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
         if (normal->uvMapping) return normalize(normal->perturb(uv, n, surface));
         if (uvObjectTransform.isIdentity()) {
             const Vec3 tn = normalize(transform.inverse().normal(n));
-            return normalize(transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
+            return normalize(
+                transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));
         }
         const Transform frame = transform.then(uvObjectTransform);
         const Vec3 tn = normalize(frame.inverse().normal(n));
@@ -272,7 +278,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
     if (entries.empty()) return;
     switch (mode) {
         case Mode::List: {
-            const auto i = static_cast<std::size_t>(std::max(0, holder.pattern().index(q)));
+            const auto i = static_cast<std::size_t>(std::max(0, pattern.index(q)));
             visit(*entries[std::min(i, entries.size() - 1)].texture, 1.0);
             return;
         }
@@ -289,7 +295,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
             // shows (measured); interpolated indices are truncated.
             double u = 0, w = 0;
             double index = 0;
-            if (material && material->imageCoordinates(holder.pattern().patternPoint(q), u, w))
+            if (material && material->imageCoordinates(pattern.patternPoint(q), u, w))
                 index = std::floor(material->valueAtImagePoint(u, w));
             visit(*entries[materialEntry(index, entries.size())].texture, 1.0);
             return;
@@ -297,7 +303,7 @@ void TextureMap::visit(const Vec3& q, Visit&& visit, const SurfaceInfo* surface)
         case Mode::Values:
             break;
     }
-    const double v = holder.pattern().value(q, surface);
+    const double v = pattern.value(q, surface);
     if (v <= entries.front().value) return visit(*entries.front().texture, 1.0);
     std::size_t hi = 1;
     while (hi < entries.size() && entries[hi].value <= v) ++hi;

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
-Value Interpreter::parseArrayDeclaration() {
+Value Reader::parseArrayDeclaration() {
     const Token at = next();  // array
     auto array = std::make_shared<ArrayValue>();
     size_t total = 1;
@@ -41,7 +41,7 @@ Value Interpreter::parseArrayDeclaration() {
     return array;
 }
 
-void Interpreter::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& nextIndex) {
+void Reader::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& nextIndex) {
     const Token open = peek();
     expect(Sym::LBrace, "'{' starting an array initializer");
     const int size = array.dims[dim];
@@ -67,7 +67,7 @@ void Interpreter::parseArrayInitializer(ArrayValue& array, size_t dim, size_t& n
     expect(Sym::RBrace, "'}' closing the array initializer");
 }
 
-size_t Interpreter::parseArrayIndex(const ArrayValue& array, const Token& at) {
+size_t Reader::parseArrayIndex(const ArrayValue& array, const Token& at) {
     size_t index = 0;
     for (size_t d = 0; d < array.dims.size(); ++d) {
         if (!peek().is(Sym::LBracket))
@@ -86,7 +86,7 @@ size_t Interpreter::parseArrayIndex(const ArrayValue& array, const Token& at) {
     return index;
 }
 
-void Interpreter::setArrayElement(ArrayValue& array, size_t index, Value value, const Token& at) {
+void Reader::setArrayElement(ArrayValue& array, size_t index, Value value, const Token& at) {
     for (const Value& e : array.elements) {
         if (std::holds_alternative<std::monostate>(e)) continue;
         if (std::string_view(valueKindName(e)) != valueKindName(value))

@@ -17,7 +17,10 @@ namespace frameray::sdl {
 enum class Severity { Warning, Error };
 
 // Formats one diagnostic with its source line and caret (no trailing
-// newline). A location without a file prints the message alone.
+// newline). A location without a file prints the message alone. Of a long
+// source line only kSourceContext characters either side of the column
+// are quoted, with "..." where it is cut.
+inline constexpr size_t kSourceContext = 100;
 std::string formatDiagnostic(Severity severity, const SourceLoc& loc, const std::string& message);
 
 // "note: in file included from a.pov:3:2" style lines, one per element.

@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <numbers>
 
 #include "scene/noise.h"
 #include "sdl/float_functions.h"
-#include "sdl/interpreter.h"
+#include "sdl/function_value.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
@@ -91,6 +93,70 @@ int intNumber(double v) {
     return static_cast<int>(std::clamp<int64_t>(wholeNumber(v), -2147483647, 2147483647));
 }
 
+// The value of a built-in constant keyword (pi, true, x, clock, version...),
+// or nullopt when `kw` is none.
+std::optional<Value> builtinConstant(Keyword kw, const FrameContext& frame, double version,
+                                     const std::string& inputFileName) {
+    auto vec = [](double a, double b, double c, double t, uint8_t size) {
+        return VectorValue{{a, b, c, t, 0}, size, false};
+    };
+    switch (kw) {
+        case Keyword::kw_pi:
+            return std::numbers::pi;
+        case Keyword::kw_true:
+        case Keyword::kw_yes:
+        case Keyword::kw_on:
+            return 1.0;
+        case Keyword::kw_false:
+        case Keyword::kw_no:
+        case Keyword::kw_off:
+            return 0.0;
+        case Keyword::kw_x:
+            return vec(1, 0, 0, 0, 3);
+        case Keyword::kw_y:
+            return vec(0, 1, 0, 0, 3);
+        case Keyword::kw_z:
+            return vec(0, 0, 1, 0, 3);
+        case Keyword::kw_t:
+            return vec(0, 0, 0, 1, 4);
+        case Keyword::kw_u:
+            return vec(1, 0, 0, 0, 2);
+        case Keyword::kw_v:
+            return vec(0, 1, 0, 0, 2);
+        case Keyword::kw_clock:
+            return frame.clock;
+        case Keyword::kw_clock_delta:
+            return frame.clockDelta;
+        case Keyword::kw_clock_on:
+            return double(frame.clockOn);
+        case Keyword::kw_frame_number:
+            return double(frame.frameNumber);
+        case Keyword::kw_initial_clock:
+            return frame.initialClock;
+        case Keyword::kw_final_clock:
+            return frame.finalClock;
+        case Keyword::kw_initial_frame:
+            return double(frame.initialFrame);
+        case Keyword::kw_final_frame:
+            return double(frame.finalFrame);
+        case Keyword::kw_image_width:
+            return double(frame.imageWidth);
+        case Keyword::kw_image_height:
+            return double(frame.imageHeight);
+        case Keyword::kw_version:
+            return version;
+        case Keyword::kw_input_file_name:
+            return inputFileName;
+        case Keyword::kw_now: {
+            // Days since 2000-01-01 00:00 UTC, as povray's `now`.
+            const auto since = std::chrono::system_clock::now().time_since_epoch();
+            return std::chrono::duration<double>(since).count() / 86400.0 - 10957.0;
+        }
+        default:
+            return std::nullopt;
+    }
+}
+
 // Keywords other than the colour keywords that start a float or vector
 // expression: the built-in constants and the functions giving a number.
 constexpr Keyword kNumericStarts[] = {Keyword::kw_pi,
@@ -160,12 +226,12 @@ double srgbToLinear(double v) {
 
 }  // namespace
 
-double Interpreter::toFloat(const Value& v, const Token& at) {
+double Reader::toFloat(const Value& v, const Token& at) {
     if (const double* f = std::get_if<double>(&v)) return *f;
     fail(at, fmt::format("expected a float, found a {}", valueKindName(v)));
 }
 
-VectorValue Interpreter::toVector(const Value& v, const Token& at, int size) {
+VectorValue Reader::toVector(const Value& v, const Token& at, int size) {
     if (!isNumeric(v)) fail(at, fmt::format("expected a vector, found a {}", valueKindName(v)));
     return promote(v, size);
 }
@@ -174,25 +240,25 @@ VectorValue Interpreter::toVector(const Value& v, const Token& at, int size) {
 // (measured: `#declare F = 1 < 2;` is an error, `(1 < 2)` is 1). At the top
 // of an expression, in vector components and in arguments, '<' therefore
 // starts the next vector: `box { <0,0,0> <1,1,1> }` needs no comma.
-Value Interpreter::parseExpression() {
+Value Reader::parseExpression() {
     return parseAdditive();
 }
 
-double Interpreter::parseFloat() {
+double Reader::parseFloat() {
     const Token at = peek();
     return toFloat(parseExpression(), at);
 }
 
-VectorValue Interpreter::parseVector() {
+VectorValue Reader::parseVector() {
     const Token at = peek();
     return toVector(parseExpression(), at, 3);
 }
 
-Vec3 Interpreter::parseVec3() {
+Vec3 Reader::parseVec3() {
     return parseVector().xyz();
 }
 
-bool Interpreter::startsStringExpression(const Token& t) {
+bool Reader::startsStringExpression(const Token& t) {
     static constexpr Keyword kStringFunctions[] = {
         Keyword::kw_concat, Keyword::kw_str,      Keyword::kw_chr,
         Keyword::kw_substr, Keyword::kw_strupr,   Keyword::kw_strlwr,
@@ -207,7 +273,7 @@ bool Interpreter::startsStringExpression(const Token& t) {
                std::end(kStringFunctions);
 }
 
-std::string Interpreter::parsePathname() {
+std::string Reader::parsePathname() {
     const bool outer = pathnameMode_;
     pathnameMode_ = true;
     try {
@@ -220,7 +286,7 @@ std::string Interpreter::parsePathname() {
     }
 }
 
-std::string Interpreter::parseString() {
+std::string Reader::parseString() {
     const Token at = peek();
     // A string expression has no operators, so nothing after it is looked
     // at: `#include "x.inc"` runs before whatever the next line holds.
@@ -234,7 +300,7 @@ std::string Interpreter::parseString() {
     fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
 }
 
-bool Interpreter::floatFollows() {
+bool Reader::floatFollows() {
     const Token& t = peek();
     switch (t.kind) {
         case TokenKind::Number:
@@ -256,11 +322,15 @@ bool Interpreter::floatFollows() {
                  std::holds_alternative<ArrayPtr>(*v));
 }
 
-double Interpreter::parseOptionalFloat(double absent) {
+double Reader::parseOptionalFloat(double absent) {
     return floatFollows() ? parseFloat() : absent;
 }
 
-Color Interpreter::parseColor() {
+bool Reader::parseOptionalBool() {
+    return parseOptionalFloat(1.0) != 0;
+}
+
+Color Reader::parseColor() {
     const Token at = peek();
     accept(Keyword::kw_color) || accept(Keyword::kw_colour);
     VectorValue c;
@@ -284,7 +354,7 @@ Color Interpreter::parseColor() {
     return c.color();
 }
 
-Value Interpreter::parseTernary() {
+Value Reader::parseTernary() {
     const Token at = peek();
     Value cond = parseLogical();
     if (!peek().is(Sym::Question)) return cond;
@@ -304,7 +374,7 @@ Value Interpreter::parseTernary() {
 // without ';' before a loop's #end; running the #end here would start the
 // next iteration inside this expression, one nesting level per iteration,
 // and a `#declare J = I` on the next line would not see I yet.
-const Token& Interpreter::peekAfterOperand() {
+const Token& Reader::peekAfterOperand() {
     const Token& t = rawPeek();
     if (t.is(Sym::Hash) && declareValue_.grouping == 0 &&
         declareValue_.cursorDepth == static_cast<int>(cursors_.size()))
@@ -312,7 +382,7 @@ const Token& Interpreter::peekAfterOperand() {
     return peek();
 }
 
-Value Interpreter::parseLogical() {
+Value Reader::parseLogical() {
     Value left = parseRelational();
     for (;;) {
         const Token op = peekAfterOperand();
@@ -324,7 +394,7 @@ Value Interpreter::parseLogical() {
     }
 }
 
-Value Interpreter::parseRelational() {
+Value Reader::parseRelational() {
     Value left = parseAdditive();
     for (;;) {
         const Token op = peekAfterOperand();
@@ -382,7 +452,7 @@ Value Interpreter::parseRelational() {
     }
 }
 
-Value Interpreter::parseAdditive() {
+Value Reader::parseAdditive() {
     Value left = parseMultiplicative();
     for (;;) {
         const Token op = peekAfterOperand();
@@ -397,7 +467,7 @@ Value Interpreter::parseAdditive() {
     }
 }
 
-Value Interpreter::parseMultiplicative() {
+Value Reader::parseMultiplicative() {
     Value left = parseUnary();
     for (;;) {
         const Token op = peekAfterOperand();
@@ -407,16 +477,19 @@ Value Interpreter::parseMultiplicative() {
         if (!isNumeric(left) || !isNumeric(right))
             fail(op, fmt::format("cannot apply '{}' to a {} and a {}", op.text, valueKindName(left),
                                  valueKindName(right)));
-        // Division by zero gives POV-Ray's huge value rather than inf.
-        left = op.is(Sym::Star)
-                   ? combine(left, right, std::multiplies<double>())
-                   : combine(left, right, [](double a, double b) {
-                         return b == 0 ? (a == 0 ? 0.0 : std::copysign(1e10, a)) : a / b;
-                     });
+        // povray warns once per component divided by zero, and the result
+        // is +inf whatever the sign of the dividend (measured: -1/0 and
+        // 0/0 are inf too).
+        left = op.is(Sym::Star) ? combine(left, right, std::multiplies<double>())
+                                : combine(left, right, [&](double a, double b) {
+                                      if (b != 0) return a / b;
+                                      warn(op, "divide by zero; the result is inf");
+                                      return std::numeric_limits<double>::infinity();
+                                  });
     }
 }
 
-Value Interpreter::parseUnary() {
+Value Reader::parseUnary() {
     const Token op = peek();
     const NestingGuard nesting(*this, op);
     if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
@@ -456,7 +529,7 @@ int dotItemSlot(Keyword kw) {
     }
 }
 
-Value Interpreter::parsePostfix() {
+Value Reader::parsePostfix() {
     Value v = parsePrimary();
     while (peekAfterOperand().is(Sym::Dot)) {
         const Token dot = next();
@@ -481,8 +554,8 @@ Value Interpreter::parsePostfix() {
     return v;
 }
 
-Value Interpreter::parseVectorLiteral() {
-    const GroupingGuard grouping(*this);
+Value Reader::parseVectorLiteral() {
+    const GroupingGuard grouping(declareValue_);
     const Token open = next();  // '<'
     VectorValue out;
     int n = 0;
@@ -508,7 +581,7 @@ Value Interpreter::parseVectorLiteral() {
     return out;
 }
 
-Value Interpreter::parseColorKeywords(const Token& first) {
+Value Reader::parseColorKeywords(const Token& first) {
     VectorValue c;
     c.size = 5;
     c.isColor = true;
@@ -530,10 +603,10 @@ Value Interpreter::parseColorKeywords(const Token& first) {
             const VectorValue vec = toVector(v, at, size);
             // sRGB values convert to the working gamma, which must be known
             // by then (povray 3.7 stops the parse otherwise).
-            if (srgb && !scene_.globals.assumedGammaSet)
+            if (srgb && !assumedGamma_)
                 fail(first,
                      "cannot use sRGB colors before assumed_gamma has been set in global_settings");
-            const double gamma = scene_.globals.assumedGamma;
+            const double gamma = assumedGamma_.value_or(1.0);
             for (int i = 0; i < 3; ++i) {
                 c.v[i] = vec.v[i];
                 if (srgb) {
@@ -565,15 +638,11 @@ Value Interpreter::parseColorKeywords(const Token& first) {
     return c;
 }
 
-Value Interpreter::identifierValue(const Token& name, const Value* known) {
+Value Reader::identifierValue(const Token& name, const Value* known) {
     const std::string_view id(name.text);
     const Value* v = known ? known : lookup(name);
     if (!v) fail(name, fmt::format("undeclared identifier '{}'", name.text));
-    if (auto d = deprecated_.empty() ? deprecated_.end() : deprecated_.find(id);
-        d != deprecated_.end() && !(d->second.once && d->second.warned)) {
-        warn(name, d->second.message);
-        d->second.warned = true;
-    }
+    if (const std::string* deprecation = symbols_.deprecationWarning(id)) warn(name, *deprecation);
     Value out = *v;
     // Arrays of arrays index on: Nested[0][1].
     while (std::holds_alternative<ArrayPtr>(out) && peekAfterOperand().is(Sym::LBracket)) {
@@ -604,8 +673,8 @@ Value Interpreter::identifierValue(const Token& name, const Value* known) {
     return out;
 }
 
-std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Token& fn) {
-    const GroupingGuard grouping(*this);
+std::vector<Value> Reader::parseArguments(size_t min, size_t max, const Token& fn) {
+    const GroupingGuard grouping(declareValue_);
     expectAfter(Sym::LParen, "'('", fn.text);
     std::vector<Value> args;
     // A function of exactly one argument reads its parentheses as the
@@ -627,7 +696,7 @@ std::vector<Value> Interpreter::parseArguments(size_t min, size_t max, const Tok
     return args;
 }
 
-Value Interpreter::parsePrimary() {
+Value Reader::parsePrimary() {
     const Token t = peek();
     switch (t.kind) {
         case TokenKind::Number:
@@ -653,7 +722,7 @@ Value Interpreter::parsePrimary() {
         case TokenKind::Symbol:
             if (t.is(Sym::LParen)) {
                 next();
-                const GroupingGuard grouping(*this);
+                const GroupingGuard grouping(declareValue_);
                 Value v = parseTernary();
                 expect(Sym::RParen, "')'");
                 return v;
@@ -669,81 +738,11 @@ Value Interpreter::parsePrimary() {
         next();
         return identifierValue(t, known);
     }
-    auto vec3 = [](double a, double b, double c) { return VectorValue{{a, b, c, 0, 0}, 3, false}; };
+    if (std::optional<Value> constant = builtinConstant(t.kw, frame_, version_, inputFileName_)) {
+        next();
+        return std::move(*constant);
+    }
     switch (t.kw) {
-        case Keyword::kw_pi:
-            next();
-            return std::numbers::pi;
-        case Keyword::kw_true:
-        case Keyword::kw_yes:
-        case Keyword::kw_on:
-            next();
-            return 1.0;
-        case Keyword::kw_false:
-        case Keyword::kw_no:
-        case Keyword::kw_off:
-            next();
-            return 0.0;
-        case Keyword::kw_x:
-            next();
-            return vec3(1, 0, 0);
-        case Keyword::kw_y:
-            next();
-            return vec3(0, 1, 0);
-        case Keyword::kw_z:
-            next();
-            return vec3(0, 0, 1);
-        case Keyword::kw_t:
-            next();
-            return VectorValue{{0, 0, 0, 1, 0}, 4, false};
-        case Keyword::kw_u:
-            next();
-            return VectorValue{{1, 0, 0, 0, 0}, 2, false};
-        case Keyword::kw_v:
-            next();
-            return VectorValue{{0, 1, 0, 0, 0}, 2, false};
-        case Keyword::kw_clock:
-            next();
-            return frame_.clock;
-        case Keyword::kw_clock_delta:
-            next();
-            return frame_.clockDelta;
-        case Keyword::kw_clock_on:
-            next();
-            return double(frame_.clockOn);
-        case Keyword::kw_frame_number:
-            next();
-            return double(frame_.frameNumber);
-        case Keyword::kw_initial_clock:
-            next();
-            return frame_.initialClock;
-        case Keyword::kw_final_clock:
-            next();
-            return frame_.finalClock;
-        case Keyword::kw_initial_frame:
-            next();
-            return double(frame_.initialFrame);
-        case Keyword::kw_final_frame:
-            next();
-            return double(frame_.finalFrame);
-        case Keyword::kw_image_width:
-            next();
-            return double(frame_.imageWidth);
-        case Keyword::kw_image_height:
-            next();
-            return double(frame_.imageHeight);
-        case Keyword::kw_version:
-            next();
-            return version_;
-        case Keyword::kw_input_file_name:
-            next();
-            return inputFileName_;
-        case Keyword::kw_now: {
-            // Days since 2000-01-01 00:00 UTC, as povray's `now`.
-            next();
-            const auto since = std::chrono::system_clock::now().time_since_epoch();
-            return std::chrono::duration<double>(since).count() / 86400.0 - 10957.0;
-        }
         case Keyword::kw_color:
         case Keyword::kw_colour: {
             next();
@@ -780,20 +779,53 @@ Value Interpreter::parsePrimary() {
     return parseBuiltinFunction(t);
 }
 
-Value Interpreter::parseBuiltinFunction(const Token& fn) {
+// povray's domain checks of the float functions at parse time (compiled
+// user functions have none): sqrt, log and ln of a number out of their
+// domain stop the parse; acos and asin warn and take the nearest end of
+// theirs.
+double Reader::checkedArgument(const Token& fn, double a) {
+    switch (fn.kw) {
+        case Keyword::kw_sqrt:
+            if (a < 0) fail(fn, fmt::format("sqrt of a negative number ({})", a));
+            return a;
+        case Keyword::kw_ln:
+        case Keyword::kw_log:
+            if (a <= 0) fail(fn, fmt::format("{} of a number not above zero ({})", fn.text, a));
+            return a;
+        case Keyword::kw_acos:
+        case Keyword::kw_asin:
+            if (a > 1 || a < -1) {
+                warn(fn, fmt::format("domain error in {}: {} is outside -1 to 1; using {}", fn.text,
+                                     a, a > 1 ? 1 : -1));
+                return a > 1 ? 1.0 : -1.0;
+            }
+            return a;
+        default:
+            return a;
+    }
+}
+
+Value Reader::parseBuiltinFunction(const Token& fn) {
     auto f = [&](const Value& v) { return toFloat(v, fn); };
-    auto vec = [&](const Value& v) { return toVector(v, fn, 3).xyz(); };
-    auto str = [&](const Value& v) -> std::string {
-        if (const auto* s = std::get_if<std::string>(&v)) return *s;
-        fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
-    };
     if (const UnaryFloatFunction op = unaryFloatFunction(fn.kw))
-        return op(f(parseArguments(1, 1, fn)[0]));
+        return op(checkedArgument(fn, f(parseArguments(1, 1, fn)[0])));
     if (const BinaryFloatFunction op = binaryFloatFunction(fn.kw)) {
         auto a = parseArguments(2, 2, fn);
-        return op(f(a[0]), f(a[1]));
+        const double x = f(a[0]), y = f(a[1]);
+        if (fn.kw == Keyword::kw_atan2 && x == 0 && y == 0)
+            fail(fn, "domain error in atan2: atan2(0, 0) has no angle");
+        return op(x, y);
     }
+    if (std::optional<Value> v = parseNumericBuiltin(fn)) return std::move(*v);
+    if (std::optional<Value> v = parseStringBuiltin(fn)) return std::move(*v);
+    if (std::optional<Value> v = parseQueryBuiltin(fn)) return std::move(*v);
+    unsupported(fn, fmt::format("'{}' in an expression", fn.text));
+}
 
+// The float and vector functions of more than two arguments, and rand.
+std::optional<Value> Reader::parseNumericBuiltin(const Token& fn) {
+    auto f = [&](const Value& v) { return toFloat(v, fn); };
+    auto vec = [&](const Value& v) { return toVector(v, fn, 3).xyz(); };
     switch (fn.kw) {
         case Keyword::kw_min:
         case Keyword::kw_max: {
@@ -852,6 +884,63 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                                           p.x * m01 + p.y * m11 + p.z * m21,
                                           p.x * m02 + p.y * m12 + p.z * m22});
         }
+        case Keyword::kw_seed: {
+            // The stream's state starts at the seed truncated to a 32-bit
+            // integer; seed() returns the stream's number.
+            const double v = f(parseArguments(1, 1, fn)[0]);
+            randomStreams_.push_back(static_cast<uint32_t>(wholeNumber(v)));
+            return double(randomStreams_.size() - 1);
+        }
+        case Keyword::kw_rand: {
+            // povray 3.7's generator, read off its output: a 32-bit LCG
+            // (multiplier 1812433253, increment 12345) scaled by 2^32-1.
+            const double v = f(parseArguments(1, 1, fn)[0]);
+            const int64_t stream = wholeNumber(std::round(v));
+            if (stream < 0 || static_cast<size_t>(stream) >= randomStreams_.size())
+                fail(fn, fmt::format("rand: {} is not a random stream made by seed()", v));
+            uint32_t& state = randomStreams_[static_cast<size_t>(stream)];
+            state = state * 1812433253u + 12345u;
+            return state / 4294967295.0;
+        }
+        case Keyword::kw_bitwise_and:
+        case Keyword::kw_bitwise_or:
+        case Keyword::kw_bitwise_xor: {
+            auto a = parseArguments(2, 256, fn);
+            auto r = wholeNumber(f(a[0]));
+            for (size_t i = 1; i < a.size(); ++i) {
+                const auto b = wholeNumber(f(a[i]));
+                r = fn.kw == Keyword::kw_bitwise_and  ? (r & b)
+                    : fn.kw == Keyword::kw_bitwise_or ? (r | b)
+                                                      : (r ^ b);
+            }
+            return double(r);
+        }
+        case Keyword::kw_dimensions:
+        case Keyword::kw_dimension_size: {
+            auto a = parseArguments(fn.kw == Keyword::kw_dimensions ? 1 : 2,
+                                    fn.kw == Keyword::kw_dimensions ? 1 : 2, fn);
+            const auto* arr = std::get_if<ArrayPtr>(&a[0]);
+            if (!arr)
+                fail(fn,
+                     fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
+            if (fn.kw == Keyword::kw_dimensions) return double((*arr)->dims.size());
+            const int64_t d = wholeNumber(std::round(f(a[1])));
+            if (d < 1 || static_cast<size_t>(d) > (*arr)->dims.size()) return 0.0;
+            return double((*arr)->dims[static_cast<size_t>(d - 1)]);
+        }
+        default:
+            return std::nullopt;
+    }
+}
+
+// The string functions.
+std::optional<Value> Reader::parseStringBuiltin(const Token& fn) {
+    auto f = [&](const Value& v) { return toFloat(v, fn); };
+    auto str = [&](const Value& v) -> std::string {
+        if (const auto* s = std::get_if<std::string>(&v)) return *s;
+        fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
+    };
+    switch (fn.kw) {
         case Keyword::kw_strlen:
             return double(str(parseArguments(1, 1, fn)[0]).size());
         case Keyword::kw_strupr:
@@ -927,50 +1016,33 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             }
             return out;
         }
-        case Keyword::kw_seed: {
-            // The stream's state starts at the seed truncated to a 32-bit
-            // integer; seed() returns the stream's number.
-            const double v = f(parseArguments(1, 1, fn)[0]);
-            randomStreams_.push_back(static_cast<uint32_t>(wholeNumber(v)));
-            return double(randomStreams_.size() - 1);
+        case Keyword::kw_datetime: {
+            // Days since 2000-01-01 00:00 UTC, formatted by strftime (default
+            // format as povray's).
+            auto a = parseArguments(1, 2, fn);
+            const double days = f(a[0]);
+            const std::string format = a.size() > 1 ? str(a[1]) : "%Y-%m-%d %H:%M:%SZ";
+            const auto seconds =
+                static_cast<std::time_t>(std::floor((days + 10957.0) * 86400.0 + 0.5));
+            std::tm utc{};
+            gmtime_r(&seconds, &utc);
+            char buffer[512];
+            const size_t n = std::strftime(buffer, sizeof buffer, format.c_str(), &utc);
+            return std::string(buffer, n);
         }
-        case Keyword::kw_rand: {
-            // povray 3.7's generator, read off its output: a 32-bit LCG
-            // (multiplier 1812433253, increment 12345) scaled by 2^32-1.
-            const double v = f(parseArguments(1, 1, fn)[0]);
-            const int64_t stream = wholeNumber(std::round(v));
-            if (stream < 0 || static_cast<size_t>(stream) >= randomStreams_.size())
-                fail(fn, fmt::format("rand: {} is not a random stream made by seed()", v));
-            uint32_t& state = randomStreams_[static_cast<size_t>(stream)];
-            state = state * 1812433253u + 12345u;
-            return state / 4294967295.0;
-        }
-        case Keyword::kw_bitwise_and:
-        case Keyword::kw_bitwise_or:
-        case Keyword::kw_bitwise_xor: {
-            auto a = parseArguments(2, 256, fn);
-            auto r = wholeNumber(f(a[0]));
-            for (size_t i = 1; i < a.size(); ++i) {
-                const auto b = wholeNumber(f(a[i]));
-                r = fn.kw == Keyword::kw_bitwise_and  ? (r & b)
-                    : fn.kw == Keyword::kw_bitwise_or ? (r | b)
-                                                      : (r ^ b);
-            }
-            return double(r);
-        }
-        case Keyword::kw_dimensions:
-        case Keyword::kw_dimension_size: {
-            auto a = parseArguments(fn.kw == Keyword::kw_dimensions ? 1 : 2,
-                                    fn.kw == Keyword::kw_dimensions ? 1 : 2, fn);
-            const auto* arr = std::get_if<ArrayPtr>(&a[0]);
-            if (!arr)
-                fail(fn,
-                     fmt::format("'{}' needs an array, found a {}", fn.text, valueKindName(a[0])));
-            if (fn.kw == Keyword::kw_dimensions) return double((*arr)->dims.size());
-            const int64_t d = wholeNumber(std::round(f(a[1])));
-            if (d < 1 || static_cast<size_t>(d) > (*arr)->dims.size()) return 0.0;
-            return double((*arr)->dims[static_cast<size_t>(d - 1)]);
-        }
+        default:
+            return std::nullopt;
+    }
+}
+
+// What the scene and its files hold: file_exists, extents, trace, inside, defined.
+std::optional<Value> Reader::parseQueryBuiltin(const Token& fn) {
+    auto vec = [&](const Value& v) { return toVector(v, fn, 3).xyz(); };
+    auto str = [&](const Value& v) -> std::string {
+        if (const auto* s = std::get_if<std::string>(&v)) return *s;
+        fail(fn, fmt::format("'{}' expects a string, found a {}", fn.text, valueKindName(v)));
+    };
+    switch (fn.kw) {
         case Keyword::kw_file_exists: {
             const std::string name = str(parseArguments(1, 1, fn)[0]);
             // A file the scene may not read is reported missing: its
@@ -988,7 +1060,7 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                 if (!(*pig)->imageMap())
                     fail(fn, "The parameter to max_extent must be an image map pigment");
                 const scene::ImageTexels& t = (*pig)->imageMap()->texels();
-                return VectorValue::fromVec3(Vec3(t.width, t.height, 0));
+                return VectorValue::fromVec3(Vec3(t.width(), t.height(), 0));
             }
             const auto* obj = std::get_if<ObjectPtr>(&a[0]);
             if (!obj)
@@ -1022,7 +1094,8 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                 point = start + direction * hit.t;
                 normal = hit.primitive->normalAt(point);
             }
-            if (!normalName.empty()) declare(normalName, VectorValue::fromVec3(normal), false);
+            if (!normalName.empty())
+                symbols_.declare(normalName, VectorValue::fromVec3(normal), false);
             return VectorValue::fromVec3(point);
         }
         case Keyword::kw_inside: {
@@ -1032,20 +1105,6 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
                 fail(fn, fmt::format("'inside' needs an object, found a {}", valueKindName(a[0])));
             return double((*obj)->object->inside(vec(a[1])));
         }
-        case Keyword::kw_datetime: {
-            // Days since 2000-01-01 00:00 UTC, formatted by strftime (default
-            // format as povray's).
-            auto a = parseArguments(1, 2, fn);
-            const double days = f(a[0]);
-            const std::string format = a.size() > 1 ? str(a[1]) : "%Y-%m-%d %H:%M:%SZ";
-            const auto seconds =
-                static_cast<std::time_t>(std::floor((days + 10957.0) * 86400.0 + 0.5));
-            std::tm utc{};
-            gmtime_r(&seconds, &utc);
-            char buffer[512];
-            const size_t n = std::strftime(buffer, sizeof buffer, format.c_str(), &utc);
-            return std::string(buffer, n);
-        }
         case Keyword::kw_defined: {
             expect(Sym::LParen, "'('");
             const Token id = rawPeek();
@@ -1053,10 +1112,10 @@ Value Interpreter::parseBuiltinFunction(const Token& fn) {
             expect(Sym::RParen, "')'");
             return double(id.isIdentifier() && lookup(id.text) != nullptr);
         }
+
         default:
-            break;
+            return std::nullopt;
     }
-    unsupported(fn, fmt::format("'{}' in an expression", fn.text));
 }
 
 }  // namespace frameray::sdl

@@ -7,7 +7,10 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "util/file_paths.h"
 
 namespace frameray::sdl {
 
@@ -19,6 +22,35 @@ struct FileAccessFolders {
     std::vector<std::filesystem::path> library;     // Library_Path and the standard includes
     std::vector<std::filesystem::path> extraRead;   // Read_Path
     std::vector<std::filesystem::path> extraWrite;  // Write_Path
+};
+
+// A file a scene opened: its descriptor (owned, closed on destruction),
+// or -1 and the whole message saying why not (the refusal, or "cannot open
+// 'NAME' for reading: REASON").
+class OpenedFile {
+  public:
+    OpenedFile() = default;
+    explicit OpenedFile(std::string error) : error_(std::move(error)) {}
+    explicit OpenedFile(int fd) : fd_(fd) {}
+    OpenedFile(OpenedFile&& o) noexcept : fd_(o.release()), error_(std::move(o.error_)) {}
+    OpenedFile& operator=(OpenedFile&& o) noexcept;
+    OpenedFile(const OpenedFile&) = delete;
+    OpenedFile& operator=(const OpenedFile&) = delete;
+    ~OpenedFile();
+
+    bool ok() const { return fd_ >= 0; }
+    int fd() const { return fd_; }
+    const std::string& error() const { return error_; }
+    // Hands the descriptor over to the caller.
+    int release() {
+        const int fd = fd_;
+        fd_ = -1;
+        return fd;
+    }
+
+  private:
+    int fd_ = -1;
+    std::string error_;
 };
 
 class FileAccessPolicy {
@@ -43,7 +75,21 @@ class FileAccessPolicy {
     std::string checkRead(const std::filesystem::path& file, const std::string& shownAs) const;
     std::string checkWrite(const std::filesystem::path& file, const std::string& shownAs) const;
 
+    // Open `file` for a scene as checkRead / checkWrite allow, then check
+    // the descriptor itself, so that a name swapped for a symbolic link
+    // between the check and the open cannot lead elsewhere: it must be a
+    // regular file and, after every link, lie in the allowed folders
+    // (links inside library and Read_Path folders are followed by name
+    // when reading). Writing never follows a link in the last part of the
+    // name while restricted, and truncates only after the check. The error
+    // gives the refusal or the system's reason.
+    OpenedFile openForReading(const std::filesystem::path& file, const std::string& shownAs) const;
+    OpenedFile openForWriting(const std::filesystem::path& file, bool append,
+                              const std::string& shownAs) const;
+
   private:
+    bool linkTrusted(const std::filesystem::path& file) const;
+
     bool restricted_ = false;
     // Canonical (symbolic links resolved) folders.
     std::vector<std::filesystem::path> readFolders_;
@@ -54,11 +100,8 @@ class FileAccessPolicy {
     std::vector<std::filesystem::path> writeFolders_;
 };
 
-// `path` made absolute (from the working folder) with '..', '.' and
-// symbolic links of its existing part resolved.
-std::filesystem::path resolvedPath(const std::filesystem::path& path);
-
-// Whether `path` is `folder` or inside it; both already resolved.
-bool isInsideFolder(const std::filesystem::path& path, const std::filesystem::path& folder);
+// resolvedPath and isInsideFolder (util/file_paths.h) judge the paths.
+using frameray::isInsideFolder;
+using frameray::resolvedPath;
 
 }  // namespace frameray::sdl

@@ -2,26 +2,94 @@
 // are how frames pass state to each other, so they are closed (flushed) at
 // the end of every parse.
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstring>
+#include <string_view>
+#include <vector>
 
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
 namespace fs = std::filesystem;
 
+// A file #fopen opened for writing, through the descriptor the frame's
+// FileAccessPolicy checked (never re-opened by name). #write text is
+// collected and written out at the end of each #write, so a failing write
+// (a full disk, `ulimit -f`) is an error at that #write.
+class FileWriter {
+  public:
+    FileWriter() = default;
+    FileWriter(const FileWriter&) = delete;
+    FileWriter& operator=(const FileWriter&) = delete;
+    ~FileWriter() { close(); }
+
+    void open(int fd) { fd_ = fd; }
+    bool isOpen() const { return fd_ >= 0; }
+    void put(char c) { pending_ += c; }
+    FileWriter& operator<<(std::string_view text) {
+        pending_ += text;
+        return *this;
+    }
+    // Writes what was collected; 0 or the errno that stopped it.
+    int flush() {
+        const char* p = pending_.data();
+        size_t left = pending_.size();
+        while (left > 0 && fd_ >= 0) {
+            const ssize_t n = ::write(fd_, p, left);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) {
+                const int error = n < 0 ? errno : ENOSPC;
+                pending_.clear();
+                return error;
+            }
+            p += n;
+            left -= static_cast<size_t>(n);
+        }
+        pending_.clear();
+        return 0;
+    }
+    void close() {
+        if (fd_ < 0) return;
+        flush();
+        ::close(fd_);
+        fd_ = -1;
+    }
+
+  private:
+    int fd_ = -1;
+    std::string pending_;
+};
+
 struct FileHandle {
     std::string name;
     bool writing = false;
-    std::ofstream out;
+    FileWriter out;
     std::string content;  // a read file, whole
     size_t pos = 0;
 };
 
 namespace {
+
+// The whole of a regular file's descriptor, up to `limit` bytes (a file
+// that grows while read stops there); nullopt-like false on a read error.
+bool readDescriptor(int fd, size_t limit, std::string& text, int& error) {
+    std::vector<char> chunk(size_t(1) << 16);
+    while (text.size() < limit) {
+        const ssize_t n = ::read(fd, chunk.data(), std::min(chunk.size(), limit - text.size()));
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            error = errno;
+            return false;
+        }
+        if (n == 0) break;
+        text.append(chunk.data(), static_cast<size_t>(n));
+    }
+    return true;
+}
 
 void skipSeparators(const FileHandle& f, size_t& pos) {
     while (pos < f.content.size() &&
@@ -31,18 +99,6 @@ void skipSeparators(const FileHandle& f, size_t& pos) {
 
 // One item of a data file: a number, a <vector> or a "string". Returns
 // false with a reason when the text there is none of them.
-// Up to `limit` bytes of `in` (a file that grows while read stops there).
-std::string readAtMost(std::istream& in, size_t limit) {
-    std::string text;
-    std::vector<char> chunk(size_t(1) << 16);
-    while (text.size() < limit && in) {
-        in.read(chunk.data(),
-                static_cast<std::streamsize>(std::min(chunk.size(), limit - text.size())));
-        text.append(chunk.data(), static_cast<size_t>(in.gcount()));
-    }
-    return text;
-}
-
 bool readItem(FileHandle& f, Value& out, std::string& error) {
     size_t& p = f.pos;
     const std::string& s = f.content;
@@ -115,7 +171,7 @@ constexpr BinaryFormat kBinaryFormats[] = {
     {Keyword::kw_sint32be, 4, true, true},  {Keyword::kw_sint32le, 4, true, false},
 };
 
-void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
+void writeBinary(FileWriter& out, const BinaryFormat& f, double value) {
     const double lo = f.isSigned ? -std::ldexp(1.0, f.bytes * 8 - 1) : 0.0;
     const double hi =
         f.isSigned ? std::ldexp(1.0, f.bytes * 8 - 1) - 1 : std::ldexp(1.0, f.bytes * 8) - 1;
@@ -130,9 +186,10 @@ void writeBinary(std::ofstream& out, const BinaryFormat& f, double value) {
 
 }  // namespace
 
-void Interpreter::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
+void Reader::checkReadable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty())
         fail(at, refusal);
+    filesRead_.push_back(path);
     // Scene files, data, images and fonts are read whole: a device or pipe
     // (/dev/zero, a FIFO) could block or never end.
     std::error_code ec;
@@ -141,13 +198,39 @@ void Interpreter::checkReadable(const fs::path& path, const std::string& name, c
              fmt::format("cannot read '{}': not a regular file (a folder, device or pipe)", name));
 }
 
-void Interpreter::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
+void Reader::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty())
         fail(at, refusal);
 }
 
-void Interpreter::directiveFopen(const Token& at) {
+std::string Reader::whyNotFound(const std::string& name) const {
+    std::error_code ec;
+    const fs::path p(name);
+    std::vector<fs::path> dirs;
+    if (p.is_absolute()) {
+        dirs.emplace_back();
+    } else {
+        dirs.push_back(fs::current_path(ec));
+        for (const auto& lib : frame_.libraryPaths) dirs.push_back(lib);
+        dirs.push_back(fs::path(cursors_.back().file->source->path()).parent_path());
+    }
+    for (const auto& dir : dirs)
+        if (fs::is_directory(dir / p, ec)) return fmt::format("'{}' is a folder, not a file", name);
+    return p.is_absolute() ? "no such file"
+                           : "no such file in the working folder, the library path or the "
+                             "scene's folder";
+}
+
+void Reader::directiveFopen(const Token& at) {
+    const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
+    // povray: "Expected 'undeclared identifier', file identifier found".
+    // Opening another file under an open file's name would also leave the
+    // first open until the end of the parse.
+    if (const Value* v = lookup(id); v && std::holds_alternative<FilePtr>(*v))
+        fail(idToken, fmt::format("'{}' is an open file identifier: #fclose {} before opening "
+                                  "another file with it",
+                                  id, id));
     const std::string name = parsePathname();
     const Token mode = next();
     auto handle = std::make_shared<FileHandle>();
@@ -155,17 +238,19 @@ void Interpreter::directiveFopen(const Token& at) {
     switch (mode.kw) {
         case Keyword::kw_read: {
             const fs::path path = findIncludeFile(name);
-            if (!path.empty()) checkReadable(path, name, at);
-            std::ifstream in;
-            if (!path.empty()) in.open(path, std::ios::binary);
-            if (path.empty() || !in)
+            if (path.empty())
                 fail(at,
                      frame_.refuseFileWrites.empty()
-                         ? fmt::format("cannot open '{}' for reading", name)
-                         : fmt::format(
-                               "cannot open '{}' for reading; if an earlier frame writes it, {}",
-                               name, frame_.refuseFileWrites));
-            handle->content = readAtMost(in, frame_.limits.readFileBytes + 1);
+                         ? fmt::format("cannot open '{}' for reading: {}", name, whyNotFound(name))
+                         : fmt::format("cannot open '{}' for reading ({}); if an earlier frame "
+                                       "writes it, {}",
+                                       name, whyNotFound(name), frame_.refuseFileWrites));
+            filesRead_.push_back(path);
+            const OpenedFile file = frame_.fileAccess.openForReading(path, name);
+            if (!file.ok()) fail(at, file.error());
+            int error = 0;
+            if (!readDescriptor(file.fd(), frame_.limits.readFileBytes + 1, handle->content, error))
+                fail(at, fmt::format("cannot read '{}': {}", name, std::strerror(error)));
             if (handle->content.size() > frame_.limits.readFileBytes)
                 fail(at, fmt::format("cannot read '{}': larger than {} MiB, the limit for a file "
                                      "read with #read",
@@ -173,45 +258,46 @@ void Interpreter::directiveFopen(const Token& at) {
             break;
         }
         case Keyword::kw_write:
-        case Keyword::kw_append:
+        case Keyword::kw_append: {
             if (!frame_.refuseFileWrites.empty())
                 fail(at, fmt::format("'{}' is opened for {}: {}", name,
                                      mode.kw == Keyword::kw_append ? "append" : "write",
                                      frame_.refuseFileWrites));
-            checkWritable(name, name, at);
             handle->writing = true;
-            handle->out.open(name,
-                             std::ios::binary |
-                                 (mode.kw == Keyword::kw_append ? std::ios::app : std::ios::trunc));
-            if (!handle->out) fail(at, fmt::format("cannot open '{}' for writing", name));
+            filesWritten_.push_back(name);
+            OpenedFile file =
+                frame_.fileAccess.openForWriting(name, mode.kw == Keyword::kw_append, name);
+            if (!file.ok()) fail(at, file.error());
+            handle->out.open(file.release());
             break;
+        }
         default:
             fail(mode, fmt::format("expected read, write or append after the file name, found {}",
                                    describeToken(mode)));
     }
     openFiles_.push_back(handle);
-    declare(id, FilePtr(handle), false);
+    symbols_.declare(id, FilePtr(handle), false);
 }
 
-void Interpreter::directiveFclose(const Token& at) {
+void Reader::directiveFclose(const Token& at) {
     (void)at;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     // Closing a file that reached its end (and so was undefined) is fine.
     if (!v) return;
     if (!std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("'{}' is a {}, not a file identifier", id, valueKindName(*v)));
     std::get<FilePtr>(*v)->out.close();
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-        if (it->erase(id)) break;
+    symbols_.undefine(id);
+    std::erase_if(openFiles_, [](const std::weak_ptr<FileHandle>& f) { return f.expired(); });
 }
 
-void Interpreter::directiveRead(const Token& at) {
+void Reader::directiveRead(const Token& at) {
     expect(Sym::LParen, "'('");
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     if (!v)
         fail(idToken,
              fmt::format(
@@ -229,7 +315,7 @@ void Interpreter::directiveRead(const Token& at) {
         ArrayPtr array;
         size_t index = 0;
         if (peek().is(Sym::LBracket)) {
-            Value* a = find(name);
+            Value* a = symbols_.find(name);
             if (!a || !std::holds_alternative<ArrayPtr>(*a))
                 fail(target, fmt::format("'{}' is not an array", name));
             array = std::get<ArrayPtr>(*a);
@@ -244,25 +330,22 @@ void Interpreter::directiveRead(const Token& at) {
         if (array)
             setArrayElement(*array, index, std::move(item), target);
         else
-            declare(name, std::move(item), false);
+            symbols_.declare(name, std::move(item), false);
     }
     expect(Sym::RParen, "')'");
     // At the end of the data the file identifier becomes undefined, which
     // is how scenes loop: #while (defined(F)) #read (F, X) ... #end
     skipSeparators(*file, file->pos);
-    if (file->pos >= file->content.size())
-        for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-            if (it->erase(id)) break;
+    if (file->pos >= file->content.size()) symbols_.undefine(id);
 }
 
-void Interpreter::directiveWrite(const Token& at) {
-    (void)at;
+void Reader::directiveWrite(const Token& at) {
     expect(Sym::LParen, "'('");
     // Inside the parentheses directives run as anywhere else.
     cursors_.back().inDirective = false;
     const Token idToken = rawPeek();
     const std::string id = expectIdentifier();
-    Value* v = find(id);
+    Value* v = symbols_.find(id);
     if (!v || !std::holds_alternative<FilePtr>(*v))
         fail(idToken, fmt::format("expected a file identifier opened for writing, found '{}'", id));
     const FilePtr file = std::get<FilePtr>(*v);
@@ -304,11 +387,13 @@ void Interpreter::directiveWrite(const Token& at) {
         }
     }
     expect(Sym::RParen, "')'");
+    if (const int error = file->out.flush(); error != 0)
+        fail(at, fmt::format("cannot write to '{}': {}", file->name, std::strerror(error)));
 }
 
-void Interpreter::closeAllFiles() {
-    for (const FilePtr& f : openFiles_)
-        if (f->out.is_open()) f->out.close();
+void Reader::closeAllFiles() {
+    for (const auto& weak : openFiles_)
+        if (const FilePtr f = weak.lock()) f->out.close();
     openFiles_.clear();
 }
 

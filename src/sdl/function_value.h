@@ -6,9 +6,21 @@
 #include <memory>
 #include <string>
 
+#include "sdl/keywords.h"
 #include "util/function_vm.h"
 
 namespace frameray::sdl {
+
+// The vector component a dot item names: 0..4 for .x .y .z .t (and .u .v
+// .red .green .blue .filter .transmit), kGrayItem for .gray (POV-Ray's
+// grey of the colour), -1 for anything else (expressions.cpp).
+inline constexpr int kGrayItem = 5;
+int dotItemSlot(Keyword kw);
+
+// A compiled function whose whole body is one native function reading the
+// function's own `paramCount` arguments (functions.cpp).
+std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
+                                             std::shared_ptr<const NativeFunction> native);
 
 // A function whose value is a vector: `function { pigment {..} }` (a
 // colour of the point x, y, z), `function { transform {..} }` (the point

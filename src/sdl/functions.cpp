@@ -12,14 +12,11 @@
 #include "scene/texture.h"
 #include "sdl/float_functions.h"
 #include "sdl/function_value.h"
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
+#include "sdl/value_builders.h"
 
 namespace frameray::sdl {
 
-namespace {
-
-// A compiled function whose whole body is one native function reading the
-// function's own `paramCount` arguments.
 std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
                                              std::shared_ptr<const NativeFunction> native) {
     auto fn = std::make_shared<CompiledFunction>();
@@ -30,6 +27,8 @@ std::shared_ptr<CompiledFunction> nativeBody(std::string name, int paramCount,
     fn->countOperations();
     return fn;
 }
+
+namespace {
 
 // One component (or .gray) of a vector-valued function.
 class VectorComponent final : public NativeFunction {
@@ -49,11 +48,11 @@ class VectorComponent final : public NativeFunction {
 
 }  // namespace
 
-// Recursive-descent compiler over the interpreter's token stream, with the
+// Recursive-descent compiler over the reader's token stream, with the
 // same precedence as parse-time expressions.
 class FunctionCompiler {
   public:
-    FunctionCompiler(Interpreter& in, std::vector<std::string> params)
+    FunctionCompiler(Reader& in, std::vector<std::string> params)
         : in_(in), params_(std::move(params)) {
         fn_->paramCount = static_cast<int>(params_.size());
     }
@@ -167,7 +166,7 @@ class FunctionCompiler {
 
     void unary() {
         const Token op = in_.peek();
-        const Interpreter::NestingGuard nesting(in_, op);
+        const Reader::NestingGuard nesting(in_, op);
         if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
             in_.next();
             unary();
@@ -407,7 +406,7 @@ class FunctionCompiler {
         in_.expect(Sym::RParen, "')'");
     }
 
-    Interpreter& in_;
+    Reader& in_;
     std::vector<std::string> params_;
     std::shared_ptr<CompiledFunction> fn_ = std::make_shared<CompiledFunction>();
     int depth_ = 0, maxDepth_ = 0;
@@ -415,7 +414,7 @@ class FunctionCompiler {
     std::vector<std::pair<std::string, int>> loopVars_;
 };
 
-Value Interpreter::parseFunctionDeclaration() {
+Value Reader::parseFunctionDeclaration() {
     next();  // function
     std::vector<std::string> params;
     if (accept(Sym::LParen)) {
@@ -432,12 +431,12 @@ Value Interpreter::parseFunctionDeclaration() {
     return parseFunctionBody(std::move(params));
 }
 
-Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
+Value Reader::parseFunctionBody(std::vector<std::string> params) {
     expect(Sym::LBrace, "'{' starting the function body");
     auto value = std::make_shared<FunctionValue>();
     const Token first = peek();
     if (first.is(Keyword::kw_internal)) return parseInternalFunctionBody();
-    if (first.is(Keyword::kw_pattern)) return parsePatternFunctionBody();
+    if (first.is(Keyword::kw_pattern)) return builders_->patternFunction();
     if (first.is(Keyword::kw_pigment) || first.is(Keyword::kw_transform) ||
         first.is(Keyword::kw_spline)) {
         value->vector = parseVectorFunctionBody();
@@ -452,12 +451,13 @@ Value Interpreter::parseFunctionBody(std::vector<std::string> params) {
     return FunctionPtr(value);
 }
 
-std::shared_ptr<const VectorFunction> Interpreter::parseVectorFunctionBody() {
+std::shared_ptr<const VectorFunction> Reader::parseVectorFunctionBody() {
     auto fn = std::make_shared<VectorFunction>();
     const Token first = peek();
     fn->kind = std::string(first.text);
     if (first.is(Keyword::kw_pigment)) {
-        const PigmentPtr pigment = parsePigment();
+        const std::optional<Value> built = builders_->buildValue(first);
+        const PigmentPtr pigment = std::get<PigmentPtr>(*built);
         if (pigment->uvMapping()) unsupported(first, "a uv_mapping pigment in a function");
         fn->size = 5;
         fn->isColor = true;
@@ -481,7 +481,7 @@ std::shared_ptr<const VectorFunction> Interpreter::parseVectorFunctionBody() {
     return fn;
 }
 
-Value Interpreter::callVectorFunction(const VectorFunction& function, const Token& at) {
+Value Reader::callVectorFunction(const VectorFunction& function, const Token& at) {
     const std::vector<Value> args = parseArguments(0, 64, at);
     if (static_cast<int>(args.size()) != function.paramCount)
         fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, function.paramCount,
@@ -496,7 +496,7 @@ Value Interpreter::callVectorFunction(const VectorFunction& function, const Toke
 }
 
 // Skips tokens until `depth` open braces have closed.
-void Interpreter::skipToClosingBrace(const Token& from, int depth) {
+void Reader::skipToClosingBrace(const Token& from, int depth) {
     while (depth > 0) {
         const Token t = next();
         if (t.kind == TokenKind::End) fail(from, "function body is never closed");
@@ -507,7 +507,7 @@ void Interpreter::skipToClosingBrace(const Token& from, int depth) {
 
 // function { internal(N) }: functions.inc's built-ins, taking x, y, z and
 // their own extra parameters.
-Value Interpreter::parseInternalFunctionBody() {
+Value Reader::parseInternalFunctionBody() {
     FunctionValue value;
     const Token at = next();  // internal
     expect(Sym::LParen, "'(' after 'internal'");
@@ -527,50 +527,11 @@ Value Interpreter::parseInternalFunctionBody() {
     return FunctionPtr(std::make_shared<FunctionValue>(value));
 }
 
-// function { pattern { PATTERN MODIFIERS } }: the pattern's value at x, y, z.
-Value Interpreter::parsePatternFunctionBody() {
-    FunctionValue value;
-    const Token at = next();  // pattern
-    expect(Sym::LBrace, "'{' after 'pattern'");
-    scene::Pigment holder;  // holds the pattern and its chain, as normals do
-    bool havePattern = false;
-    while (!peek().is(Sym::RBrace)) {
-        const Token item = peek();
-        Transform step;
-        if (parseTransformation(step)) {
-            holder.transform(step);
-            continue;
-        }
-        // povray 3.7 refuses square, triangular, slope, aoi, tiling and pavement here
-        // (but not cubic).
-        if (item.is(Keyword::kw_square) || item.is(Keyword::kw_triangular) ||
-            item.is(Keyword::kw_slope) || item.is(Keyword::kw_aoi) || item.is(Keyword::kw_tiling) ||
-            item.is(Keyword::kw_pavement))
-            fail(item, fmt::format("'{}' cannot be used in a pattern function", item.text));
-        if (isPatternKeyword(item)) havePattern = true;
-        if (parsePigmentPatternItem(holder)) continue;
-        if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
-            // functions.inc declares pattern functions for every pattern:
-            // declaring one frameray lacks is fine, using it is not.
-            value.unsupported = fmt::format("'{}' in a pattern function", item.text);
-            skipToClosingBrace(at, 2);
-            return FunctionPtr(std::make_shared<FunctionValue>(value));
-        }
-        fail(item, fmt::format("expected a pattern or '}}', found {}", describeToken(item)));
-    }
-    next();  // }
-    expect(Sym::RBrace, "'}' closing the function body");
-    if (!havePattern) fail(at, "a pattern function needs a pattern");
-    value.compiled = nativeBody("pattern function", 3,
-                                std::make_shared<scene::PatternFunction>(holder.pattern()));
-    return FunctionPtr(std::make_shared<FunctionValue>(value));
-}
-
 // A `function { ... }` of x, y, z that the renderer will evaluate (patterns,
 // isosurfaces, height fields): a body frameray cannot run yet stops here
 // rather than mid-render.
-std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Token& at,
-                                                                      bool colourAsGray) {
+std::shared_ptr<const CompiledFunction> Reader::parseXyzFunction(const Token& at,
+                                                                 bool colourAsGray) {
     const Value body = parseFunctionBody({"x", "y", "z"});
     const FunctionValue& fn = *std::get<FunctionPtr>(body);
     if (!fn.unsupported.empty()) unsupported(at, fn.unsupported);
@@ -591,7 +552,7 @@ std::shared_ptr<const CompiledFunction> Interpreter::parseXyzFunction(const Toke
     return fn.compiled;
 }
 
-void Interpreter::checkFunctionCost(const CompiledFunction& function, const Token& at) {
+void Reader::checkFunctionCost(const CompiledFunction& function, const Token& at) {
     const double limit = frame_.limits.functionOperations;
     if (limit > 0 && function.operations > limit)
         fail(at,
@@ -601,7 +562,7 @@ void Interpreter::checkFunctionCost(const CompiledFunction& function, const Toke
                  function.operations, limit));
 }
 
-Value Interpreter::callFunction(const FunctionValue& function, const Token& at) {
+Value Reader::callFunction(const FunctionValue& function, const Token& at) {
     if (!function.unsupported.empty()) unsupported(at, function.unsupported);
     if (function.vector) return callVectorFunction(*function.vector, at);
     const std::vector<Value> args = parseArguments(0, 64, at);

@@ -216,7 +216,11 @@ class Lexer {
         }
         t.kind = TokenKind::Number;
         t.text = std::string_view(text_).substr(begin, pos_ - begin);
-        std::from_chars(t.text.data(), t.text.data() + t.text.size(), t.number);
+        // Out of double's range: povray reads 1e400 as inf and 1e-400 as 0
+        // (from_chars would leave the value unset).
+        if (std::from_chars(t.text.data(), t.text.data() + t.text.size(), t.number).ec ==
+            std::errc::result_out_of_range)
+            t.number = std::strtod(std::string(t.text).c_str(), nullptr);
     }
 
     void lexString(Token& t) {

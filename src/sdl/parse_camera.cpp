@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "scene/mesh_camera.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -41,50 +41,55 @@ bool isUnsupportedCameraWord(const Token& t) {
     return t.text == "bokeh";
 }
 
+// camera { CAMERA_IDENTIFIER transformations }, at the identifier.
+scene::Camera parseDeclaredCamera(Reader& r, const Token& first) {
+    r.next();
+    const Value v = r.identifierValue(first);
+    const auto* cp = std::get_if<CameraPtr>(&v);
+    if (!cp) r.fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
+    scene::Camera cam = **cp;
+    // povray 3.7 accepts only transformations after a camera identifier.
+    scene::CameraEdits edits;
+    edits.sized = true;  // the declared camera has its final size
+    for (;;) {
+        if (r.accept(Sym::RBrace)) break;
+        Transform step;
+        if (!r.parseTransformation(step)) {
+            const Token t = r.peek();
+            r.fail(t, fmt::format("only transformations may follow a camera identifier, found {}",
+                                  describeToken(t)));
+        }
+        edits.transform = edits.transform.then(step);
+    }
+    scene::finalizeCamera(cam, edits);
+    return cam;
+}
+
 }  // namespace
 
-scene::Camera Interpreter::parseCamera() {
-    next();  // camera
-    expect(Sym::LBrace, "'{' after 'camera'");
+scene::Camera parseCamera(BuildContext& c) {
+    Reader& r = c.reader;
+    r.next();  // camera
+    r.expect(Sym::LBrace, "'{' after 'camera'");
     scene::Camera cam;
-    const Token first = peek();
-    if (first.isIdentifier() && !isUnsupportedCameraWord(first) && first.text != "mesh_camera") {
-        next();
-        const Value v = identifierValue(first);
-        const auto* cp = std::get_if<CameraPtr>(&v);
-        if (!cp)
-            fail(first, fmt::format("'{}' is a {}, not a camera", first.text, valueKindName(v)));
-        cam = **cp;
-        // povray 3.7 accepts only transformations after a camera identifier.
-        scene::CameraEdits edits;
-        for (;;) {
-            if (accept(Sym::RBrace)) break;
-            Transform step;
-            if (!parseTransformation(step)) {
-                const Token t = peek();
-                fail(t, fmt::format("only transformations may follow a camera identifier, found {}",
-                                    describeToken(t)));
-            }
-            edits.transform = edits.transform.then(step);
-        }
-        scene::finalizeCamera(cam, edits);
-        return cam;
-    }
-    const Token typeToken = peek();
-    if (isUnsupportedCameraWord(typeToken)) unsupported(typeToken, std::string(typeToken.text));
+    const Token first = r.peek();
+    if (first.isIdentifier() && !isUnsupportedCameraWord(first) && first.text != "mesh_camera")
+        return parseDeclaredCamera(r, first);
+    const Token typeToken = r.peek();
+    if (isUnsupportedCameraWord(typeToken)) r.unsupported(typeToken, std::string(typeToken.text));
     std::shared_ptr<scene::MeshCamera> meshCamera;
     if (typeToken.text == "mesh_camera") {
-        next();
-        meshCamera = parseMeshCamera(typeToken);
+        r.next();
+        meshCamera = parseMeshCamera(c, typeToken);
         cam.projection = scene::Projection::Mesh;
     } else if (const auto projection = projectionKeyword(typeToken.kw)) {
-        next();
+        r.next();
         cam.projection = *projection;
         if (*projection == scene::Projection::Cylinder1) {
-            const double kind = parseFloat();
+            const double kind = r.parseFloat();
             const int n = static_cast<int>(kind);
             if (n < 1 || n > 4 || n != kind)
-                fail(typeToken, "cylinder camera type must be 1, 2, 3 or 4");
+                r.fail(typeToken, "cylinder camera type must be 1, 2, 3 or 4");
             cam.projection = static_cast<scene::Projection>(
                 static_cast<int>(scene::Projection::Cylinder1) + n - 1);
         }
@@ -93,91 +98,95 @@ scene::Camera Interpreter::parseCamera() {
     }
 
     scene::CameraEdits edits;
-    Token closing = peek();
+    Token closing = r.peek();
     for (;;) {
-        closing = peek();
-        if (accept(Sym::RBrace)) break;
-        const Token t = peek();
+        closing = r.peek();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.peek();
         Transform step;
-        if (parseTransformation(step)) {
+        if (r.parseTransformation(step)) {
             edits.transform = edits.transform.then(step);
             continue;
         }
-        if (isUnsupportedCameraWord(t)) unsupported(t, fmt::format("{} in camera", t.text));
+        if (isUnsupportedCameraWord(t)) r.unsupported(t, fmt::format("{} in camera", t.text));
         if (t.is(Keyword::kw_normal)) {
-            cam.normal = parseNormal(cam.normal.get());
+            cam.normal = parseNormal(c, cam.normal.get());
             continue;
         }
-        next();
-        if (projectionKeyword(t.kw)) fail(t, "the camera type must come first in the camera block");
+        r.next();
+        if (projectionKeyword(t.kw))
+            r.fail(t, "the camera type must come first in the camera block");
         switch (t.kw) {
             case Keyword::kw_location:
-                cam.location = parseVec3();
+                cam.location = r.parseVec3();
                 break;
             case Keyword::kw_direction:
-                cam.direction = parseVec3();
+                cam.direction = r.parseVec3();
                 break;
             case Keyword::kw_right:
-                cam.right = parseVec3();
+                cam.right = r.parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_up:
-                cam.up = parseVec3();
+                cam.up = r.parseVec3();
+                edits.sized = true;
                 break;
             case Keyword::kw_sky:
-                cam.sky = parseVec3();
+                cam.sky = r.parseVec3();
                 break;
             case Keyword::kw_look_at:
-                cam.lookAt = parseVec3();
+                cam.lookAt = r.parseVec3();
                 edits.lookAt = true;
                 break;
             case Keyword::kw_angle: {
-                const double angle = parseFloat();
-                if (angle <= 0) fail(t, "camera angle must be positive");
+                const double angle = r.parseFloat();
+                if (angle <= 0) r.fail(t, "camera angle must be positive");
                 if (cam.projection == scene::Projection::Perspective && angle >= 180)
-                    fail(t, "a perspective camera's angle must be smaller than 180 degrees");
+                    r.fail(t, "a perspective camera's angle must be smaller than 180 degrees");
                 edits.angle = angle;
                 cam.angle = angle;
                 cam.verticalAngle = 0;
                 // spherical: `angle H, V`.
-                if (accept(Sym::Comma)) {
-                    const double vertical = parseFloat();
-                    if (vertical <= 0) fail(t, "camera angle must be positive");
+                if (r.accept(Sym::Comma)) {
+                    const double vertical = r.parseFloat();
+                    if (vertical <= 0) r.fail(t, "camera angle must be positive");
                     cam.verticalAngle = vertical;
                 }
                 break;
             }
             case Keyword::kw_aperture:
-                cam.blur.aperture = parseFloat();
+                cam.blur.aperture = r.parseFloat();
                 break;
             case Keyword::kw_blur_samples: {
                 // `blur_samples [MIN,] MAX`.
-                int value = static_cast<int>(parseFloat());
+                int value = static_cast<int>(r.parseFloat());
                 cam.blur.minSamples = 0;
-                if (accept(Sym::Comma)) {
+                if (r.accept(Sym::Comma)) {
                     cam.blur.minSamples = value;
-                    value = static_cast<int>(parseFloat());
+                    value = static_cast<int>(r.parseFloat());
                 }
-                if (value < 0 || cam.blur.minSamples > value) fail(t, "invalid blur_samples");
+                if (value < 0 || cam.blur.minSamples > value) r.fail(t, "invalid blur_samples");
                 cam.blur.blurSamples = value;
                 break;
             }
             case Keyword::kw_focal_point:
-                cam.blur.focalPoint = parseVec3();
+                cam.blur.focalPoint = r.parseVec3();
                 break;
             case Keyword::kw_confidence:
-                cam.blur.confidence = parseFloat();
+                cam.blur.confidence = r.parseFloat();
                 break;
             case Keyword::kw_variance:
-                cam.blur.variance = parseFloat();
+                cam.blur.variance = r.parseFloat();
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in camera", t.text));
-                fail(t, fmt::format("expected a camera item or '}}', found {}", describeToken(t)));
+                    r.unsupported(t, fmt::format("'{}' in camera", t.text));
+                r.fail(t,
+                       fmt::format("expected a camera item or '}}', found {}", describeToken(t)));
         }
     }
     if (edits.lookAt && length(cam.lookAt - cam.location) < 1e-10)
-        fail(closing, "camera location and look_at point must be different");
+        r.fail(closing, "camera location and look_at point must be different");
     if (meshCamera) {
         // Only location's and direction's z count, as written (measured).
         meshCamera->startOffset = cam.location.z;

@@ -6,8 +6,8 @@
 //   - colours are decoded with the file's gamma - the `gamma` given, else
 //     the one a PNG declares, else sRGB for PNG, TGA, GIF, JPEG, IFF and
 //     sys files and linear for PPM, PGM, TIFF, EXR and HDR - and re-encoded
-//     in the scene's working gamma; a scene without assumed_gamma from
-//     before 3.7 uses the file values as they are;
+//     in the scene's working gamma; before 3.7 a file of unknown gamma
+//     (no `gamma`, no gAMA) gives its values as they are;
 //   - alpha becomes transmit (1 - alpha) on top of `transmit all`; the
 //     colour is taken as not premultiplied unless `premultiplied` says so;
 //   - `filter N` / `transmit N` set palette entries of palette images (GIF)
@@ -31,7 +31,7 @@
 
 #include "image/image_io.h"
 #include "scene/image_map.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -85,10 +85,6 @@ double defaultFileGamma(Keyword type, const std::string& name) {
     }
 }
 
-double srgbDecode(double v) {
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
 struct ImageSettings {
     Keyword type = Keyword::None;
     std::string name;
@@ -112,323 +108,299 @@ struct ImageSettings {
     bool bumpSizeGiven = false;
 };
 
-// The texture a material_map pixel picks before the list length is
-// applied (see the header comment for the rules measured).
-double materialIndex(const image::SourceImage& src, std::size_t p) {
-    if (src.isPalette()) return src.indices[p];
-    const image::EncodedImage& px = src.pixels;
-    const auto ch = static_cast<std::size_t>(px.channels);
-    const double byte = std::floor(static_cast<double>(px.values[p * ch]) * 255.0 + 0.5);
-    if (px.channels >= 3) return byte;
-    const float g = static_cast<float>(byte) / 255.0f;
-    return std::floor(static_cast<double>(greySingle(g, g, g)) * 255.0);
-}
-
 }  // namespace
 
-const image::SourceImage& Interpreter::loadSourceImage(const std::string& name, const Token& at) {
-    const std::filesystem::path path = findIncludeFile(name);
-    if (path.empty()) fail(at, fmt::format("Cannot open file '{}'.", name));
-    checkReadable(path, name, at);
+const image::SourceImage& loadSourceImage(BuildContext& c, const std::string& name,
+                                          const Token& at) {
+    Reader& r = c.reader;
+    const std::filesystem::path path = r.findIncludeFile(name);
+    if (path.empty()) r.fail(at, fmt::format("Cannot open file '{}'.", name));
+    r.checkReadable(path, name, at);
     const std::string key = path.lexically_normal().string();
-    auto found = images_.find(key);
-    if (found != images_.end()) return *found->second;
+    auto found = c.images.find(key);
+    if (found != c.images.end()) return *found->second;
     std::shared_ptr<const image::SourceImage> img;
     try {
         img = std::make_shared<const image::SourceImage>(image::readSource(path));
     } catch (const std::runtime_error& e) {
-        fail(at, e.what());
+        r.fail(at, e.what());
     }
-    if (img->pixels.width <= 0 || img->pixels.height <= 0)
-        fail(at, fmt::format("image '{}' has no pixels", name));
-    return *images_.emplace(key, std::move(img)).first->second;
+    if (img->width() <= 0 || img->height() <= 0)
+        r.fail(at, fmt::format("image '{}' has no pixels", name));
+    return *c.images.emplace(key, std::move(img)).first->second;
 }
 
-image::SourceImage Interpreter::functionSourceImage(const Token& at) {
-    const Token sizeAt = peek();
-    const double w = parseFloat();
-    accept(Sym::Comma);
-    const double h = parseFloat();
-    if (!(w >= 2 && h >= 2)) fail(sizeAt, "a function image needs a resolution of at least 2 x 2");
-    if (w * h > double(frame_.limits.arrayElements))
-        fail(sizeAt, fmt::format("function image resolution {} x {} has more than {} samples", w, h,
-                                 frame_.limits.arrayElements));
-    const std::shared_ptr<const CompiledFunction> fn = parseXyzFunction(at);
-    image::SourceImage src;
-    image::EncodedImage& img = src.pixels;
-    img.width = static_cast<int>(w);
-    img.height = static_cast<int>(h);
-    img.channels = 1;
-    img.bitDepth = 16;
-    img.values.resize(static_cast<size_t>(img.width) * static_cast<size_t>(img.height));
+static image::SourceImage functionSourceImage(BuildContext& c, const Token& at) {
+    Reader& r = c.reader;
+    const Token sizeAt = r.peek();
+    const double w = r.parseFloat();
+    r.accept(Sym::Comma);
+    const double h = r.parseFloat();
+    if (!(w >= 2 && h >= 2))
+        r.fail(sizeAt, "a function image needs a resolution of at least 2 x 2");
+    if (w * h > double(r.frame().limits.arrayElements))
+        r.fail(sizeAt, fmt::format("function image resolution {} x {} has more than {} samples", w,
+                                   h, r.frame().limits.arrayElements));
+    const std::shared_ptr<const CompiledFunction> fn = r.parseXyzFunction(at);
+    const int width = static_cast<int>(w), height = static_cast<int>(h);
+    auto pixels =
+        std::make_shared<util::PixelBuffer>(width, height, 1, util::PixelBuffer::Sample::U16);
     // As a height_field function (measured with pigment functions): pixel
     // (i, j), j = 0 the top row, holds f(i / (W - 1), j / (H - 1), 0) as
     // 16 bits, truncated and wrapped (1.1 reads back as 0.1).
-    for (int j = 0; j < img.height; ++j)
-        for (int i = 0; i < img.width; ++i) {
-            double args[3] = {static_cast<double>(i) / (img.width - 1),
-                              static_cast<double>(j) / (img.height - 1), 0.0};
+    for (int j = 0; j < height; ++j) {
+        auto* row = reinterpret_cast<std::uint16_t*>(pixels->row(j));
+        for (int i = 0; i < width; ++i) {
+            double args[3] = {static_cast<double>(i) / (width - 1),
+                              static_cast<double>(j) / (height - 1), 0.0};
             double value;
             try {
                 value = fn->eval(args);
             } catch (const std::runtime_error& e) {
-                fail(at, e.what());
+                r.fail(at, e.what());
             }
             const auto level = static_cast<long long>(value * 65535.0);
-            const auto wrapped = static_cast<unsigned long long>(level) & 0xFFFFu;
-            img.values[static_cast<size_t>(j) * static_cast<size_t>(img.width) +
-                       static_cast<size_t>(i)] = static_cast<float>(wrapped) / 65535.0f;
+            row[i] = static_cast<std::uint16_t>(static_cast<unsigned long long>(level) & 0xFFFFu);
         }
+    }
+    image::SourceImage src;
+    src.pixels = std::move(pixels);
     return src;
 }
 
-std::shared_ptr<const scene::ImageMap> Interpreter::parseImageBlock(
-    const Token& keyword, double* bumpSize,
+// One item of an image block (gamma, map_type, interpolate, filter...)
+// into `s`; `keyword` names the block, a material_map's textures go to
+// `materials`.
+static void parseImageSetting(BuildContext& c, const Token& keyword, ImageUse use, ImageSettings& s,
+                              std::vector<std::shared_ptr<const scene::Texture>>* materials) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
+    switch (item.kw) {
+        case Keyword::kw_pattern:
+            // povray 3.7 has no pattern images (measured).
+            r.fail(item, "Expected 'map file spec', pattern found");
+        case Keyword::kw_gamma: {
+            r.next();
+            if (r.accept(Keyword::kw_srgb)) {
+                s.gamma = 0.0;
+            } else {
+                const double g = r.parseFloat();
+                if (g <= 0) r.fail(item, "image gamma must be positive");
+                s.gamma = g;
+            }
+            break;
+        }
+        case Keyword::kw_premultiplied:
+            r.next();
+            s.premultiplied = r.parseOptionalBool();
+            break;
+        case Keyword::kw_map_type: {
+            r.next();
+            const Token at = r.peek();
+            const int m = static_cast<int>(r.parseFloat());
+            // povray 3.7 (measured): image_map takes only 0, 1, 2 and 5;
+            // image_pattern, bump_map and material_map map every other
+            // value (3, 4, 6, 7 ...) as 0.
+            if (m == 0 || m == 1 || m == 2 || m == 5)
+                s.mapping = static_cast<scene::ImageMapping>(m);
+            else if (use == ImageUse::Pigment)
+                r.fail(at, "Invalid map_type value.");
+            else
+                s.mapping = scene::ImageMapping::Planar;
+            break;
+        }
+        case Keyword::kw_once:
+            r.next();
+            s.once = true;
+            break;
+        case Keyword::kw_interpolate: {
+            r.next();
+            const Token at = r.peek();
+            const int i = static_cast<int>(r.parseFloat());
+            if (i == 2)
+                s.interpolation = scene::ImageInterpolation::Bilinear;
+            else if (i == 4)
+                s.interpolation = scene::ImageInterpolation::NormalizedDistance;
+            else if (i == 3)
+                s.interpolation = scene::ImageInterpolation::Bicubic;
+            else
+                r.fail(at, "Invalid interpolate value.");
+            break;
+        }
+        case Keyword::kw_texture:
+            if (use != ImageUse::Material || !materials)
+                r.fail(item, fmt::format("'texture' is not allowed in {}", keyword.text));
+            materials->push_back(parseTexture(c, nullptr));
+            break;
+        case Keyword::kw_filter:
+        case Keyword::kw_transmit: {
+            r.next();
+            if (use == ImageUse::Bump || use == ImageUse::Material)
+                r.fail(item, fmt::format("'{}' is not allowed in bump_map", item.text));
+            ImageSettings::Amount a{item.is(Keyword::kw_filter), -1, 0, item};
+            if (!r.accept(Keyword::kw_all)) {
+                const double index = r.parseFloat();
+                if (index < 0 || index > 255)
+                    r.fail(item, fmt::format("palette index {} out of range", index));
+                a.index = static_cast<int>(index);
+                r.accept(Sym::Comma);
+            }
+            a.value = r.parseFloat();
+            s.amounts.push_back(a);
+            break;
+        }
+        case Keyword::kw_use_index:
+        case Keyword::kw_use_color:
+        case Keyword::kw_use_colour:
+            r.next();
+            s.useIndex = item.is(Keyword::kw_use_index);
+            break;
+        case Keyword::kw_use_alpha:
+            r.next();
+            s.useAlpha = true;
+            break;
+        case Keyword::kw_bump_size:
+            if (use != ImageUse::Bump)
+                r.fail(item, fmt::format("'bump_size' is not allowed in {}", keyword.text));
+            r.next();
+            s.bumpSize = r.parseFloat();
+            s.bumpSizeGiven = true;
+            break;
+        default:
+            if (item.kind == TokenKind::Word && item.kw != Keyword::None)
+                r.unsupported(item, fmt::format("'{}' in {}", item.text, keyword.text));
+            r.fail(item, fmt::format("expected a {} item or '}}', found {}", keyword.text,
+                                     describeToken(item)));
+    }
+}
+
+// The texels of `src` for an image block: colours for an image_map (in the
+// working gamma), scalars for the others, read from the file's pixels.
+static std::shared_ptr<const scene::ImageTexels> imageTexels(BuildContext& c,
+                                                             const image::SourceImage& src,
+                                                             const ImageSettings& s, ImageUse use,
+                                                             bool fromFunction) {
+    if (use != ImageUse::Pigment) {
+        using Scalar = scene::ImageTexels::Scalar;
+        const Scalar scalar = use == ImageUse::Bump && s.useIndex && src.isPalette() ? Scalar::Index
+                              : use == ImageUse::Material ? Scalar::MaterialIndex
+                              : s.useAlpha                ? Scalar::Alpha
+                                                          : Scalar::Grey;
+        return std::make_shared<const scene::ImageTexels>(src.pixels, scalar);
+    }
+    // File values -> linear light -> the working gamma in force now.
+    scene::ImageTexels::ColorDecoding d;
+    // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
+    // file (PNG gAMA) gives holds working-space values, whatever the
+    // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows the
+    // file value v as v^2.2 of linear light). A function image's values are
+    // working-space values whatever the assumed_gamma (measured).
+    const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
+    d.asStored = (!fileGammaKnown && c.reader.version() < 3.7 - 1e-9) || fromFunction;
+    d.workingGamma = c.scene.globals.assumedGammaSet ? c.scene.globals.assumedGamma : 1.0;
+    d.fileGamma = s.gamma                 ? *s.gamma
+                  : src.declaredGamma > 0 ? src.declaredGamma
+                                          : defaultFileGamma(s.type, s.name);
+    d.premultiplied = s.premultiplied;
+    // Palette images: filter and transmit per palette entry.
+    for (const auto& a : s.amounts) {
+        auto& table = a.filter ? d.paletteFilter : d.paletteTransmit;
+        if (a.index >= 0) {
+            table[static_cast<std::size_t>(a.index)] = a.value;
+        } else {
+            table.fill(a.value);
+            (a.filter ? d.filterAll : d.transmitAll) = a.value;
+        }
+    }
+    return std::make_shared<const scene::ImageTexels>(src.pixels, d);
+}
+
+std::shared_ptr<const scene::ImageMap> parseImageBlock(
+    BuildContext& c, const Token& keyword, double* bumpSize,
     std::vector<std::shared_ptr<const scene::Texture>>* materials) {
+    Reader& r = c.reader;
     const ImageUse use = keyword.is(Keyword::kw_image_map)       ? ImageUse::Pigment
                          : keyword.is(Keyword::kw_image_pattern) ? ImageUse::Pattern
                          : keyword.is(Keyword::kw_material_map)  ? ImageUse::Material
                                                                  : ImageUse::Bump;
-    expectAfter(Sym::LBrace, "{", keyword.text);
+    r.expectAfter(Sym::LBrace, "{", keyword.text);
     ImageSettings s;
     bool haveFile = false;
     std::optional<image::SourceImage> functionImage;  // `function W, H { }`
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token item = peek();
+        if (r.accept(Sym::RBrace)) break;
+        const Token item = r.peek();
         if (!haveFile &&
             (isImageType(item.kw) || item.kind == TokenKind::String || item.isIdentifier())) {
             if (isImageType(item.kw)) {
-                next();
+                r.next();
                 s.type = item.kw;
             }
-            s.nameAt = peek();
-            s.name = parsePathname();
+            s.nameAt = r.peek();
+            s.name = r.parsePathname();
             haveFile = true;
             continue;
         }
         if (!haveFile && item.is(Keyword::kw_function)) {
-            next();
-            functionImage = functionSourceImage(item);
+            r.next();
+            functionImage = functionSourceImage(c, item);
             haveFile = true;
             continue;
         }
-        switch (item.kw) {
-            case Keyword::kw_pattern:
-                // povray 3.7 has no pattern images (measured).
-                fail(item, "Expected 'map file spec', pattern found");
-            case Keyword::kw_gamma: {
-                next();
-                if (accept(Keyword::kw_srgb)) {
-                    s.gamma = 0.0;
-                } else {
-                    const double g = parseFloat();
-                    if (g <= 0) fail(item, "image gamma must be positive");
-                    s.gamma = g;
-                }
-                break;
-            }
-            case Keyword::kw_premultiplied:
-                next();
-                s.premultiplied = parseOptionalBool();
-                break;
-            case Keyword::kw_map_type: {
-                next();
-                const Token at = peek();
-                const int m = static_cast<int>(parseFloat());
-                // povray 3.7 (measured): image_map takes only 0, 1, 2 and 5;
-                // image_pattern, bump_map and material_map map every other
-                // value (3, 4, 6, 7 ...) as 0.
-                if (m == 0 || m == 1 || m == 2 || m == 5)
-                    s.mapping = static_cast<scene::ImageMapping>(m);
-                else if (use == ImageUse::Pigment)
-                    fail(at, "Invalid map_type value.");
-                else
-                    s.mapping = scene::ImageMapping::Planar;
-                break;
-            }
-            case Keyword::kw_once:
-                next();
-                s.once = true;
-                break;
-            case Keyword::kw_interpolate: {
-                next();
-                const Token at = peek();
-                const int i = static_cast<int>(parseFloat());
-                if (i == 2)
-                    s.interpolation = scene::ImageInterpolation::Bilinear;
-                else if (i == 4)
-                    s.interpolation = scene::ImageInterpolation::NormalizedDistance;
-                else if (i == 3)
-                    s.interpolation = scene::ImageInterpolation::Bicubic;
-                else
-                    fail(at, "Invalid interpolate value.");
-                break;
-            }
-            case Keyword::kw_texture:
-                if (use != ImageUse::Material || !materials)
-                    fail(item, fmt::format("'texture' is not allowed in {}", keyword.text));
-                materials->push_back(parseTexture(nullptr));
-                break;
-            case Keyword::kw_filter:
-            case Keyword::kw_transmit: {
-                next();
-                if (use == ImageUse::Bump || use == ImageUse::Material)
-                    fail(item, fmt::format("'{}' is not allowed in bump_map", item.text));
-                ImageSettings::Amount a{item.is(Keyword::kw_filter), -1, 0, item};
-                if (!accept(Keyword::kw_all)) {
-                    const double index = parseFloat();
-                    if (index < 0 || index > 255)
-                        fail(item, fmt::format("palette index {} out of range", index));
-                    a.index = static_cast<int>(index);
-                    accept(Sym::Comma);
-                }
-                a.value = parseFloat();
-                s.amounts.push_back(a);
-                break;
-            }
-            case Keyword::kw_use_index:
-            case Keyword::kw_use_color:
-            case Keyword::kw_use_colour:
-                next();
-                s.useIndex = item.is(Keyword::kw_use_index);
-                break;
-            case Keyword::kw_use_alpha:
-                next();
-                s.useAlpha = true;
-                break;
-            case Keyword::kw_bump_size:
-                if (use != ImageUse::Bump)
-                    fail(item, fmt::format("'bump_size' is not allowed in {}", keyword.text));
-                next();
-                s.bumpSize = parseFloat();
-                s.bumpSizeGiven = true;
-                break;
-            default:
-                if (item.kind == TokenKind::Word && item.kw != Keyword::None)
-                    unsupported(item, fmt::format("'{}' in {}", item.text, keyword.text));
-                fail(item, fmt::format("expected a {} item or '}}', found {}", keyword.text,
-                                       describeToken(item)));
-        }
+        parseImageSetting(c, keyword, use, s, materials);
     }
-    if (!haveFile) fail(keyword, fmt::format("{} needs an image file", keyword.text));
+    if (!haveFile) r.fail(keyword, fmt::format("{} needs an image file", keyword.text));
     if (use == ImageUse::Material && materials->empty())
-        fail(keyword, "material_map needs at least one texture");
+        r.fail(keyword, "material_map needs at least one texture");
     if (s.mapping == scene::ImageMapping::Spherical || s.mapping == scene::ImageMapping::Torus)
         s.once = false;  // the image covers these exactly once anyway
 
     const image::SourceImage& src =
-        functionImage ? *functionImage : loadSourceImage(s.name, s.nameAt);
-    const image::EncodedImage& px = src.pixels;
+        functionImage ? *functionImage : loadSourceImage(c, s.name, s.nameAt);
     for (const auto& a : s.amounts)
         if (a.index >= 0 && !src.isPalette())
-            fail(a.at, fmt::format("Keyword '{}' cannot be used with non color-mapped image.",
-                                   a.at.text));
+            r.fail(a.at, fmt::format("Keyword '{}' cannot be used with non color-mapped image.",
+                                     a.at.text));
 
-    auto texels = std::make_shared<scene::ImageTexels>();
-    texels->width = px.width;
-    texels->height = px.height;
-    const std::size_t count =
-        static_cast<std::size_t>(px.width) * static_cast<std::size_t>(px.height);
-    const int ch = px.channels;
-    const bool greyImage = ch < 3;
-    const bool hasAlpha = ch == 2 || ch == 4;
-    auto channel = [&](std::size_t p, int c) {
-        return static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
-                                             static_cast<std::size_t>(greyImage ? 0 : c)]);
-    };
-    auto alphaOf = [&](std::size_t p) {
-        return hasAlpha ? static_cast<double>(px.values[p * static_cast<std::size_t>(ch) +
-                                                        static_cast<std::size_t>(ch - 1)])
-                        : 1.0;
-    };
-
-    if (use == ImageUse::Pigment) {
-        // File values -> linear light -> the working gamma in force now.
-        const bool legacy = !scene_.globals.assumedGammaSet && version_ < 3.7 - 1e-9;
-        const double working = scene_.globals.assumedGammaSet ? scene_.globals.assumedGamma : 1.0;
-        const double fileGamma = s.gamma                 ? *s.gamma
-                                 : src.declaredGamma > 0 ? src.declaredGamma
-                                                         : defaultFileGamma(s.type, s.name);
-        auto decode = [&](double v) {
-            // A function image's values are working-space values whatever
-            // the assumed_gamma (measured).
-            if (legacy || functionImage) return v;
-            double linear = fileGamma == 0   ? srgbDecode(v)
-                            : fileGamma == 1 ? v
-                                             : std::pow(v, fileGamma);
-            return working == 1.0 ? linear : std::pow(linear, 1.0 / working);
-        };
-        // Palette images: filter and transmit per palette entry.
-        std::array<double, 256> filter{}, transmit{};
-        double filterAll = 0, transmitAll = 0;
-        for (const auto& a : s.amounts) {
-            auto& table = a.filter ? filter : transmit;
-            if (a.index >= 0) {
-                table[static_cast<std::size_t>(a.index)] = a.value;
-            } else {
-                table.fill(a.value);
-                (a.filter ? filterAll : transmitAll) = a.value;
-            }
-        }
-        texels->colors.resize(count);
-        for (std::size_t p = 0; p < count; ++p) {
-            RGB rgb(decode(channel(p, 0)), decode(channel(p, 1)), decode(channel(p, 2)));
-            const double alpha = alphaOf(p);
-            if (s.premultiplied && alpha > 0) rgb *= 1.0 / alpha;
-            double f = filterAll, t = transmitAll;
-            if (src.isPalette()) {
-                f = filter[src.indices[p]];
-                t = transmit[src.indices[p]];
-            }
-            texels->colors[p] = Color(rgb, f, t + (1.0 - alpha));
-        }
-    } else {
-        texels->values.resize(count);
-        for (std::size_t p = 0; p < count; ++p) {
-            double v;
-            if (use == ImageUse::Bump && s.useIndex && src.isPalette())
-                v = src.indices[p];  // the raw index (measured: a step of 1 per entry)
-            else if (use == ImageUse::Material)
-                v = materialIndex(src, p);
-            else if (s.useAlpha)
-                v = 1.0 - alphaOf(p);
-            else
-                v = grey(channel(p, 0), channel(p, 1), channel(p, 2));
-            texels->values[p] = static_cast<float>(v);
-        }
-    }
+    auto texels = imageTexels(c, src, s, use, functionImage.has_value());
     if (bumpSize && s.bumpSizeGiven) *bumpSize = s.bumpSize;
     return std::make_shared<const scene::ImageMap>(std::move(texels), s.mapping, s.once,
                                                    s.interpolation);
 }
 
-bool Interpreter::parseImagePigmentItem(scene::Pigment& pigment) {
-    const Token item = peek();
+bool parseImagePigmentItem(BuildContext& c, scene::Pigment& pigment) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
     if (item.is(Keyword::kw_image_map)) {
-        next();
-        pigment.setImageMap(parseImageBlock(item, nullptr));
+        r.next();
+        pigment.setImageMap(parseImageBlock(c, item, nullptr));
         return true;
     }
-    if (item.is(Keyword::kw_image_pattern)) {
-        next();
-        scene::Pattern pattern = pigment.pattern();
-        pattern.kind = scene::PatternKind::Image;
-        pattern.image = parseImageBlock(item, nullptr);
-        pigment.setPattern(pattern);
-        return true;
-    }
-    return false;
+    scene::Pattern pattern = pigment.pattern();
+    if (!parseImagePatternItem(c, pattern)) return false;
+    pigment.setPattern(pattern);
+    return true;
 }
 
-bool Interpreter::parseImageNormalItem(scene::Normal& normal, scene::Pigment& holder) {
-    const Token item = peek();
+bool parseImagePatternItem(BuildContext& c, scene::Pattern& pattern) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
+    if (!item.is(Keyword::kw_image_pattern)) return false;
+    r.next();
+    pattern.kind = scene::PatternKind::Image;
+    pattern.image = parseImageBlock(c, item, nullptr);
+    return true;
+}
+
+bool parseImageNormalItem(BuildContext& c, scene::Normal& normal, scene::Pattern& pattern) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
     if (item.is(Keyword::kw_bump_map)) {
-        next();
-        normal.bumpMap = parseImageBlock(item, &normal.amount);
+        r.next();
+        normal.bumpMap = parseImageBlock(c, item, &normal.amount);
         return true;
     }
-    return item.is(Keyword::kw_image_pattern) && parseImagePigmentItem(holder);
+    return parseImagePatternItem(c, pattern);
 }
 
 }  // namespace frameray::sdl

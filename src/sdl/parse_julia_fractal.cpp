@@ -5,37 +5,38 @@
 #include <fmt/format.h>
 
 #include "scene/julia_fractal.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
-std::shared_ptr<const scene::Shape> Interpreter::parseJuliaFractal(const Token& kind) {
+std::shared_ptr<const scene::Shape> parseJuliaFractal(BuildContext& c, const Token& kind) {
+    Reader& r = c.reader;
     using Algebra = scene::JuliaFractal::Algebra;
     using Function = scene::JuliaFractal::Function;
-    const Token paramAt = peek();
-    const VectorValue param = toVector(parseExpression(), paramAt, 4);
-    const std::array<double, 4> c = {param.v[0], param.v[1], param.v[2], param.v[3]};
+    const Token paramAt = r.peek();
+    const VectorValue param = r.toVector(r.parseExpression(), paramAt, 4);
+    const std::array<double, 4> constant = {param.v[0], param.v[1], param.v[2], param.v[3]};
     Algebra algebra = Algebra::Quaternion;
     Function function = Function::Sqr;
     Token functionAt = kind;
     double maxIterations = 20, precision = 20;
     for (;;) {
-        const Token t = peek();
+        const Token t = r.peek();
         switch (t.kw) {
             case Keyword::kw_quaternion:
-                next();
+                r.next();
                 algebra = Algebra::Quaternion;
                 continue;
             case Keyword::kw_hypercomplex:
-                next();
+                r.next();
                 algebra = Algebra::Hypercomplex;
                 continue;
             case Keyword::kw_sqr:
-                next();
+                r.next();
                 function = Function::Sqr;
                 continue;
             case Keyword::kw_cube:
-                next();
+                r.next();
                 function = Function::Cube;
                 functionAt = t;
                 continue;
@@ -55,23 +56,23 @@ std::shared_ptr<const scene::Shape> Interpreter::parseJuliaFractal(const Token& 
             case Keyword::kw_atanh:
             case Keyword::kw_ln:
             case Keyword::kw_pwr:
-                unsupported(t, fmt::format("julia_fractal function '{}'", t.text));
+                r.unsupported(t, fmt::format("julia_fractal function '{}'", t.text));
             case Keyword::kw_max_iteration:
-                next();
-                maxIterations = parseFloat();
+                r.next();
+                maxIterations = r.parseFloat();
                 continue;
             case Keyword::kw_precision:
-                next();
-                precision = parseFloat();
+                r.next();
+                precision = r.parseFloat();
                 continue;
             case Keyword::kw_slice: {
-                next();
-                const Token at = peek();
-                const VectorValue n = toVector(parseExpression(), at, 4);
-                accept(Sym::Comma);
-                const double distance = parseFloat();
+                r.next();
+                const Token at = r.peek();
+                const VectorValue n = r.toVector(r.parseExpression(), at, 4);
+                r.accept(Sym::Comma);
+                const double distance = r.parseFloat();
                 if (n.v[0] != 0 || n.v[1] != 0 || n.v[2] != 0 || n.v[3] <= 0 || distance != 0)
-                    unsupported(at, "julia_fractal slice other than <0, 0, 0, 1>, 0");
+                    r.unsupported(at, "julia_fractal slice other than <0, 0, 0, 1>, 0");
                 continue;
             }
             default:
@@ -82,10 +83,10 @@ std::shared_ptr<const scene::Shape> Interpreter::parseJuliaFractal(const Token& 
     // Cubing hypercomplex numbers does not give povray's shape (measured);
     // only their square is reproduced.
     if (algebra == Algebra::Hypercomplex && function == Function::Cube)
-        unsupported(functionAt, "julia_fractal hypercomplex cube");
-    if (maxIterations < 1) fail(kind, "julia_fractal needs max_iteration 1 or more");
-    if (!(precision > 0)) fail(kind, "julia_fractal needs a precision above 0");
-    return std::make_shared<scene::JuliaFractal>(c, algebra, function,
+        r.unsupported(functionAt, "julia_fractal hypercomplex cube");
+    if (maxIterations < 1) r.fail(kind, "julia_fractal needs max_iteration 1 or more");
+    if (!(precision > 0)) r.fail(kind, "julia_fractal needs a precision above 0");
+    return std::make_shared<scene::JuliaFractal>(constant, algebra, function,
                                                  static_cast<int>(maxIterations), precision);
 }
 

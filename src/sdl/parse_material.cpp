@@ -3,48 +3,50 @@
 // together (povray 3.7). Transformations inside move the texture.
 #include <fmt/format.h>
 
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
-MaterialPtr Interpreter::parseMaterial() {
-    const Token keyword = next();  // material
-    expect(Sym::LBrace, "'{' after 'material'");
+MaterialPtr parseMaterial(BuildContext& c) {
+    Reader& r = c.reader;
+    const Token keyword = r.next();  // material
+    r.expect(Sym::LBrace, "'{' after 'material'");
     MaterialValue m;
-    const Token first = peek();
+    const Token first = r.peek();
     if (first.isIdentifier()) {
-        next();
-        const Value v = identifierValue(first);
+        r.next();
+        const Value v = r.identifierValue(first);
         const auto* mp = std::get_if<MaterialPtr>(&v);
         if (!mp)
-            fail(first, fmt::format("'{}' is a {}, not a material", first.text, valueKindName(v)));
+            r.fail(first,
+                   fmt::format("'{}' is a {}, not a material", first.text, valueKindName(v)));
         m = **mp;
     }
     std::optional<scene::Texture> texture;
     if (m.texture) texture = *m.texture;
     for (;;) {
-        if (accept(Sym::RBrace)) break;
+        if (r.accept(Sym::RBrace)) break;
         Transform step;
-        if (parseTransformation(step)) {
+        if (r.parseTransformation(step)) {
             if (texture) texture->transformBy(step);
             continue;
         }
-        const Token t = peek();
+        const Token t = r.peek();
         switch (t.kw) {
             case Keyword::kw_texture:
                 // A material's texture starts afresh, as an object's first
                 // texture block does.
-                texture = parseLayeredTextures(nullptr);
+                texture = parseLayeredTextures(c, nullptr);
                 break;
             case Keyword::kw_interior:
-                m.interior = parseInterior(m.interior.get());
+                m.interior = parseInterior(c, m.interior.get());
                 break;
             case Keyword::kw_interior_texture:
-                unsupported(t, "interior_texture");
+                r.unsupported(t, "interior_texture");
             default:
-                fail(t, fmt::format("expected texture, interior or a transformation in '{}', "
-                                    "found {}",
-                                    keyword.text, describeToken(t)));
+                r.fail(t, fmt::format("expected texture, interior or a transformation in '{}', "
+                                      "found {}",
+                                      keyword.text, describeToken(t)));
         }
     }
     if (texture) m.texture = std::make_shared<const scene::Texture>(std::move(*texture));

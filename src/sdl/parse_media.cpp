@@ -4,7 +4,7 @@
 // is a pigment whose colour is the density per channel.
 #include <fmt/format.h>
 
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -44,164 +44,172 @@ bool startsDensityColor(const Token& t) {
 
 }  // namespace
 
-DensityPtr Interpreter::parseDensity() {
-    next();  // density
-    expect(Sym::LBrace, "'{' after 'density'");
-    DensityPtr d = parseDensityBody(Sym::RBrace);
-    expect(Sym::RBrace, "'}' closing 'density'");
+// Defined below.
+static DensityPtr parseDensityBody(BuildContext& c, Sym closing);
+static std::vector<scene::Pigment::MapEntry> parseDensityMap(BuildContext& c);
+
+DensityPtr parseDensity(BuildContext& c) {
+    Reader& r = c.reader;
+    r.next();  // density
+    r.expect(Sym::LBrace, "'{' after 'density'");
+    DensityPtr d = parseDensityBody(c, Sym::RBrace);
+    r.expect(Sym::RBrace, "'}' closing 'density'");
     return d;
 }
 
-DensityPtr Interpreter::parseDensityBody(Sym closing) {
+static DensityPtr parseDensityBody(BuildContext& c, Sym closing) {
+    Reader& r = c.reader;
     auto pigment = std::make_shared<scene::Pigment>(scene::defaultDensity());
-    const Token first = peek();
+    const Token first = r.peek();
     if (first.isIdentifier()) {
-        const Value* v = lookup(first);
+        const Value* v = r.lookup(first);
         if (v && std::holds_alternative<DensityPtr>(*v)) {
-            next();
+            r.next();
             *pigment = *std::get<DensityPtr>(*v)->pigment;
         }
     }
-    while (!peek().is(closing)) {
-        const Token item = peek();
+    while (!r.peek().is(closing)) {
+        const Token item = r.peek();
         Transform step;
-        if (parseTransformation(step)) {
+        if (r.parseTransformation(step)) {
             pigment->transform(step);
             continue;
         }
         if (item.is(Keyword::kw_density_map)) {
-            pigment->setPigmentMap(parseDensityMap());
+            pigment->setPigmentMap(parseDensityMap(c));
             continue;
         }
         if (item.is(Keyword::kw_pigment_map) || item.is(Keyword::kw_uv_mapping) ||
             item.is(Keyword::kw_image_map))
-            fail(item, fmt::format("'{}' is not allowed in a density", item.text));
-        if (parsePigmentPatternItem(*pigment)) continue;
+            r.fail(item, fmt::format("'{}' is not allowed in a density", item.text));
+        if (parsePigmentPatternItem(c, *pigment)) continue;
         if (startsDensityColor(item)) {
-            pigment->setSolid(parseColor());
+            pigment->setSolid(r.parseColor());
             continue;
         }
         if (item.kind == TokenKind::Word && item.kw != Keyword::None)
-            unsupported(item, fmt::format("'{}' in density", item.text));
-        fail(item, fmt::format("expected a density item or '}}', found {}", describeToken(item)));
+            r.unsupported(item, fmt::format("'{}' in density", item.text));
+        r.fail(item, fmt::format("expected a density item or '}}', found {}", describeToken(item)));
     }
     return std::make_shared<const DensityValue>(DensityValue{pigment});
 }
 
-std::vector<scene::Pigment::MapEntry> Interpreter::parseDensityMap() {
-    next();  // density_map
-    expect(Sym::LBrace, "'{' after 'density_map'");
+static std::vector<scene::Pigment::MapEntry> parseDensityMap(BuildContext& c) {
+    Reader& r = c.reader;
+    r.next();  // density_map
+    r.expect(Sym::LBrace, "'{' after 'density_map'");
     std::vector<scene::Pigment::MapEntry> entries;
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        expect(Sym::LBracket, "'[' or '}' in density_map");
-        const double value = parseMapValue();
-        accept(Sym::Comma);
+        if (r.accept(Sym::RBrace)) break;
+        r.expect(Sym::LBracket, "'[' or '}' in density_map");
+        const double value = parseMapValue(c);
+        r.accept(Sym::Comma);
         // An entry is a density's body: a density identifier, a pattern or
         // a colour, with modifiers.
-        PigmentPtr pigment = parseDensityBody(Sym::RBracket)->pigment;
-        expect(Sym::RBracket, "']' after a density_map entry");
+        PigmentPtr pigment = parseDensityBody(c, Sym::RBracket)->pigment;
+        r.expect(Sym::RBracket, "']' after a density_map entry");
         entries.push_back({value, std::move(pigment)});
     }
     return entries;
 }
 
-MediaPtr Interpreter::parseMedia() {
-    next();  // media
-    expect(Sym::LBrace, "'{' after 'media'");
+MediaPtr parseMedia(BuildContext& c) {
+    Reader& r = c.reader;
+    r.next();  // media
+    r.expect(Sym::LBrace, "'{' after 'media'");
     scene::Media m;
-    const Token first = peek();
+    const Token first = r.peek();
     if (first.isIdentifier()) {
-        const Value* v = lookup(first);
+        const Value* v = r.lookup(first);
         if (v && std::holds_alternative<MediaPtr>(*v)) {
-            next();
+            r.next();
             m = *std::get<MediaPtr>(*v);
         }
     }
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = peek();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.peek();
         Transform step;
-        if (parseTransformation(step)) {
+        if (r.parseTransformation(step)) {
             m.transformBy(step);
             continue;
         }
         if (t.is(Keyword::kw_density)) {
-            m.densities.push_back(parseDensity()->pigment);
+            m.densities.push_back(parseDensity(c)->pigment);
             continue;
         }
-        next();
+        r.next();
         switch (t.kw) {
             case Keyword::kw_method: {
-                const int method = static_cast<int>(parseFloat());
-                if (method < 1 || method > 3) fail(t, "Unknown media sampling method.");
-                if (method != 3) unsupported(t, fmt::format("media method {}", method));
+                const int method = static_cast<int>(r.parseFloat());
+                if (method < 1 || method > 3) r.fail(t, "Unknown media sampling method.");
+                if (method != 3) r.unsupported(t, fmt::format("media method {}", method));
                 m.method = method;
                 break;
             }
             case Keyword::kw_intervals:
-                m.intervals = static_cast<int>(parseFloat());
-                if (m.intervals < 1) fail(t, "At least one interval is needed in media.");
+                m.intervals = static_cast<int>(r.parseFloat());
+                if (m.intervals < 1) r.fail(t, "At least one interval is needed in media.");
                 break;
             case Keyword::kw_samples:
-                m.samplesMin = static_cast<int>(parseFloat());
+                m.samplesMin = static_cast<int>(r.parseFloat());
                 m.samplesMax = m.samplesMin;
-                if (accept(Sym::Comma)) m.samplesMax = static_cast<int>(parseFloat());
+                if (r.accept(Sym::Comma)) m.samplesMax = static_cast<int>(r.parseFloat());
                 if (m.samplesMin < 1)
-                    fail(t, "At least one sample per interval is needed in media.");
+                    r.fail(t, "At least one sample per interval is needed in media.");
                 break;
             case Keyword::kw_confidence:
-                m.confidence = parseFloat();
+                m.confidence = r.parseFloat();
                 break;
             case Keyword::kw_variance:
-                m.variance = parseFloat();
+                m.variance = r.parseFloat();
                 break;
             case Keyword::kw_ratio:
-                m.ratio = parseFloat();
+                m.ratio = r.parseFloat();
                 break;
             case Keyword::kw_aa_level:
-                m.aaLevel = static_cast<int>(parseFloat());
-                if (m.aaLevel < 1) fail(t, "aa_level in media must be at least one.");
+                m.aaLevel = static_cast<int>(r.parseFloat());
+                if (m.aaLevel < 1) r.fail(t, "aa_level in media must be at least one.");
                 break;
             case Keyword::kw_aa_threshold:
-                m.aaThreshold = parseFloat();
+                m.aaThreshold = r.parseFloat();
                 break;
             case Keyword::kw_jitter:
-                m.jitter = parseFloat();
+                m.jitter = r.parseFloat();
                 break;
             case Keyword::kw_absorption:
-                m.absorption = parseColor().rgb;
+                m.absorption = r.parseColor().rgb;
                 break;
             case Keyword::kw_emission:
-                m.emission = parseColor().rgb;
+                m.emission = r.parseColor().rgb;
                 break;
             case Keyword::kw_scattering: {
-                expect(Sym::LBrace, "'{' after 'scattering'");
-                const Token type = peek();
-                const int number = static_cast<int>(parseFloat());
+                r.expect(Sym::LBrace, "'{' after 'scattering'");
+                const Token type = r.peek();
+                const int number = static_cast<int>(r.parseFloat());
                 m.scatteringType = scatteringType(number);
                 if (m.scatteringType == scene::ScatteringType::None)
-                    fail(type, "Unknown media scattering type.");
-                accept(Sym::Comma);
-                m.scattering = parseColor().rgb;
+                    r.fail(type, "Unknown media scattering type.");
+                r.accept(Sym::Comma);
+                m.scattering = r.parseColor().rgb;
                 for (;;) {
-                    if (accept(Sym::RBrace)) break;
-                    const Token s = next();
+                    if (r.accept(Sym::RBrace)) break;
+                    const Token s = r.next();
                     if (s.is(Keyword::kw_eccentricity))
-                        m.eccentricity = parseFloat();
+                        m.eccentricity = r.parseFloat();
                     else if (s.is(Keyword::kw_extinction))
-                        m.extinction = parseFloat();
+                        m.extinction = r.parseFloat();
                     else
-                        fail(s, fmt::format("expected eccentricity, extinction or '}}' in "
-                                            "scattering, found {}",
-                                            describeToken(s)));
+                        r.fail(s, fmt::format("expected eccentricity, extinction or '}}' in "
+                                              "scattering, found {}",
+                                              describeToken(s)));
                 }
                 break;
             }
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in media", t.text));
-                fail(t, fmt::format("expected a media item or '}}', found {}", describeToken(t)));
+                    r.unsupported(t, fmt::format("'{}' in media", t.text));
+                r.fail(t, fmt::format("expected a media item or '}}', found {}", describeToken(t)));
         }
     }
     return std::make_shared<const scene::Media>(std::move(m));

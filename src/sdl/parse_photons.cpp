@@ -5,10 +5,11 @@
 // checked against povray 3.7 (gather and expand_thresholds need both
 // values, radius takes up to four with any left out, count wins over
 // spacing whatever their order, refraction/reflection/collect need a
-// value).
+// value). Media photons and photon map files (save_file, load_file) stop
+// as not supported yet.
 #include <fmt/format.h>
 
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -22,43 +23,43 @@ int positiveInt(double v) {
 
 }  // namespace
 
-void Interpreter::parseGlobalPhotons(scene::PhotonSettings& s) {
-    expect(Sym::LBrace, "'{' after 'photons'");
+void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
+    Reader& r = c.reader;
+    r.expect(Sym::LBrace, "'{' after 'photons'");
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = next();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.next();
         switch (t.kw) {
             case Keyword::kw_spacing:
-                s.spacing = parseFloat();
+                s.spacing = r.parseFloat();
                 break;
             case Keyword::kw_count:
-                s.count = positiveInt(parseFloat());
+                s.count = positiveInt(r.parseFloat());
                 break;
             case Keyword::kw_gather:
-                s.gatherMin = static_cast<int>(parseFloat());
-                expect(Sym::Comma, "',' between the two gather values");
-                s.gatherMax = static_cast<int>(parseFloat());
+                s.gatherMin = static_cast<int>(r.parseFloat());
+                r.expect(Sym::Comma, "',' between the two gather values");
+                s.gatherMax = static_cast<int>(r.parseFloat());
                 break;
             case Keyword::kw_media:
-                s.mediaMaxSteps = static_cast<int>(parseFloat());
-                if (accept(Sym::Comma)) s.mediaFactor = parseFloat();
-                break;
+                // Photons are neither stored in media nor gathered there yet.
+                r.unsupported(t, "photons in media (global photons 'media')");
             case Keyword::kw_jitter:
-                s.jitter = parseFloat();
+                s.jitter = r.parseFloat();
                 break;
             case Keyword::kw_max_trace_level:
-                s.maxTraceLevel = static_cast<int>(parseFloat());
+                s.maxTraceLevel = static_cast<int>(r.parseFloat());
                 break;
             case Keyword::kw_adc_bailout:
-                s.adcBailout = parseFloat();
+                s.adcBailout = r.parseFloat();
                 break;
             case Keyword::kw_autostop:
-                s.autostop = parseFloat();
+                s.autostop = r.parseFloat();
                 break;
             case Keyword::kw_expand_thresholds:
-                s.expandIncrease = parseFloat();
-                expect(Sym::Comma, "',' between the two expand_thresholds values");
-                s.expandMin = static_cast<int>(parseFloat());
+                s.expandIncrease = r.parseFloat();
+                r.expect(Sym::Comma, "',' between the two expand_thresholds values");
+                s.expandMin = static_cast<int>(r.parseFloat());
                 break;
             case Keyword::kw_radius: {
                 // radius [R] [, [M] [, [R media] [, [M media]]]]: any value may
@@ -66,83 +67,82 @@ void Interpreter::parseGlobalPhotons(scene::PhotonSettings& s) {
                 double* slots[] = {&s.radius, &s.radiusMultiplier, &s.mediaRadius,
                                    &s.mediaRadiusMultiplier};
                 for (size_t i = 0; i < 4; ++i) {
-                    if (i > 0 && !accept(Sym::Comma)) break;
-                    if (floatFollows()) *slots[i] = parseFloat();
+                    if (i > 0 && !r.accept(Sym::Comma)) break;
+                    if (r.floatFollows()) *slots[i] = r.parseFloat();
                 }
                 break;
             }
             case Keyword::kw_save_file:
-                s.saveFile = parsePathname();
-                break;
             case Keyword::kw_load_file:
-                s.loadFile = parsePathname();
-                break;
+                r.unsupported(t, fmt::format("photon map files ('{}')", t.text));
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in global photons", t.text));
-                fail(t,
-                     fmt::format("expected a photons setting or '}}', found {}", describeToken(t)));
+                    r.unsupported(t, fmt::format("'{}' in global photons", t.text));
+                r.fail(t, fmt::format("expected a photons setting or '}}', found {}",
+                                      describeToken(t)));
         }
     }
 }
 
-void Interpreter::parseObjectPhotons(scene::ObjectPhotons& p, const Token& block) {
-    expect(Sym::LBrace, "'{' after 'photons'");
+void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& p, const Token& block) {
+    Reader& r = c.reader;
+    r.expect(Sym::LBrace, "'{' after 'photons'");
     p.given = true;
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = next();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.next();
         switch (t.kw) {
             case Keyword::kw_target:
-                p.target = floatFollows() ? parseFloat() : 1.0;
+                p.target = r.floatFollows() ? r.parseFloat() : 1.0;
                 break;
             case Keyword::kw_refraction:
-                p.refraction = parseFloat() != 0;
+                p.refraction = r.parseFloat() != 0;
                 break;
             case Keyword::kw_reflection:
-                p.reflection = parseFloat() != 0;
+                p.reflection = r.parseFloat() != 0;
                 break;
             case Keyword::kw_collect:
-                p.collect = parseFloat() != 0;
+                p.collect = r.parseFloat() != 0;
                 break;
             case Keyword::kw_pass_through:
-                p.passThrough = parseOptionalBool();
+                p.passThrough = r.parseOptionalBool();
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in object photons", t.text));
-                fail(t, fmt::format("expected an object photons setting or '}}', found {}",
-                                    describeToken(t)));
+                    r.unsupported(t, fmt::format("'{}' in object photons", t.text));
+                r.fail(t, fmt::format("expected an object photons setting or '}}', found {}",
+                                      describeToken(t)));
         }
     }
     // povray 3.7's check, made when the block ends (measured wording; it
     // warns whether or not refraction was asked for).
     if (p.passThrough && p.target > 0) {
-        warn(block, "Cannot use pass_through with refraction & target. Turning off refraction.");
+        r.warn(block, "Cannot use pass_through with refraction & target. Turning off refraction.");
         p.refraction = false;
     }
 }
 
-void Interpreter::parseLightPhotons(scene::LightPhotons& p) {
-    expect(Sym::LBrace, "'{' after 'photons'");
+void parseLightPhotons(BuildContext& c, scene::LightPhotons& p) {
+    Reader& r = c.reader;
+    r.expect(Sym::LBrace, "'{' after 'photons'");
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = next();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.next();
         switch (t.kw) {
             case Keyword::kw_refraction:
-                p.refraction = parseFloat() != 0;
+                p.refraction = r.parseFloat() != 0;
                 break;
             case Keyword::kw_reflection:
-                p.reflection = parseFloat() != 0;
+                p.reflection = r.parseFloat() != 0;
                 break;
             case Keyword::kw_area_light:
-                p.areaLight = parseOptionalBool();
+                p.areaLight = r.parseOptionalBool();
                 break;
             default:
                 if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    unsupported(t, fmt::format("'{}' in light photons", t.text));
-                fail(t, fmt::format("expected a light photons setting or '}}', found {}",
-                                    describeToken(t)));
+                    r.unsupported(t, fmt::format("'{}' in light photons", t.text));
+                r.fail(t, fmt::format("expected a light photons setting or '}}', found {}",
+                                      describeToken(t)));
         }
     }
 }

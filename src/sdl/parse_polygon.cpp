@@ -7,19 +7,20 @@
 #include <cmath>
 
 #include "scene/polygon.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
-std::shared_ptr<const scene::Shape> Interpreter::parsePolygon(const Token& kind) {
-    const Token countAt = peek();
-    const double count = parseFloat();
-    if (count < 3) fail(countAt, "Polygon needs at least three points.");
+std::shared_ptr<const scene::Shape> parsePolygon(BuildContext& c, const Token& kind) {
+    Reader& r = c.reader;
+    const Token countAt = r.peek();
+    const double count = r.parseFloat();
+    if (count < 3) r.fail(countAt, "Polygon needs at least three points.");
     std::vector<std::vector<Vec3>> loops;
     std::vector<Vec3> loop;
     for (int i = 0; i < static_cast<int>(count); ++i) {
-        accept(Sym::Comma);
-        const Vec3 p = parseVec3();
+        r.accept(Sym::Comma);
+        const Vec3 p = r.parseVec3();
         if (loop.empty()) {
             loop.push_back(p);
             continue;
@@ -34,7 +35,7 @@ std::shared_ptr<const scene::Shape> Interpreter::parsePolygon(const Token& kind)
         loop.push_back(p);
     }
     if (!loop.empty()) {
-        warn(kind, "Polygon not closed. Closing it.");
+        r.warn(kind, "Polygon not closed. Closing it.");
         loops.push_back(std::move(loop));
     }
     return std::make_shared<scene::Polygon>(loops);

@@ -17,175 +17,177 @@
 
 #include "scene/blob.h"
 #include "scene/polynomial_shapes.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 #include "util/roots.h"
 
 namespace frameray::sdl {
 
-std::vector<double> Interpreter::parseCoefficientVector(int count, const Token& kind) {
-    expect(Sym::Less,
-           fmt::format("'<' starting the {} coefficients of '{}'", count, kind.text).c_str());
+static std::vector<double> parseCoefficientVector(BuildContext& c, int count, const Token& kind) {
+    Reader& r = c.reader;
+    r.expect(Sym::Less,
+             fmt::format("'<' starting the {} coefficients of '{}'", count, kind.text).c_str());
     std::vector<double> values;
     values.reserve(count);
     // Commas between coefficients are optional (povray reads them as a
     // list of floats, not as a vector literal).
-    while (!peek().is(Sym::Greater) && peek().kind != TokenKind::End) {
-        const Token at = peek();
-        values.push_back(toFloat(parseAdditive(), at));
-        accept(Sym::Comma);
+    while (!r.peek().is(Sym::Greater) && r.peek().kind != TokenKind::End) {
+        const Token at = r.peek();
+        values.push_back(r.toFloat(r.parseAdditive(), at));
+        r.accept(Sym::Comma);
     }
-    const Token close = peek();
-    expect(Sym::Greater, "'>' closing the coefficients");
+    const Token close = r.peek();
+    r.expect(Sym::Greater, "'>' closing the coefficients");
     if (static_cast<int>(values.size()) != count)
-        fail(close,
-             fmt::format("'{}' needs {} coefficients, found {}", kind.text, count, values.size()));
+        r.fail(close, fmt::format("'{}' needs {} coefficients, found {}", kind.text, count,
+                                  values.size()));
     return values;
 }
 
-std::shared_ptr<const scene::Shape> Interpreter::parsePolynomialShape(const Token& kind) {
+std::shared_ptr<const scene::Shape> parsePolynomialShape(BuildContext& c, const Token& kind) {
+    Reader& r = c.reader;
     switch (kind.kw) {
         case Keyword::kw_torus: {
-            const double major = parseFloat();
-            accept(Sym::Comma);  // optional, as in povray
-            const double minor = parseFloat();
+            const double major = r.parseFloat();
+            r.accept(Sym::Comma);  // optional, as in povray
+            const double minor = r.parseFloat();
             return std::make_shared<scene::Torus>(major, minor, false);
         }
         case Keyword::kw_poly: {
-            const Token at = peek();
-            const double order = parseFloat();
+            const Token at = r.peek();
+            const double order = r.parseFloat();
             if (order < 2 || order > kMaxPolynomialDegree)
-                fail(at, "Order of poly is out of range.");
+                r.fail(at, "Order of poly is out of range.");
             const int n = static_cast<int>(order);
-            accept(Sym::Comma);  // optional, as between any parameters (povray)
+            r.accept(Sym::Comma);  // optional, as between any parameters (povray)
             const std::vector<double> coefficients =
-                parseCoefficientVector(scene::PolynomialSurface::coefficientCount(n), kind);
+                parseCoefficientVector(c, scene::PolynomialSurface::coefficientCount(n), kind);
             return std::make_shared<scene::PolynomialSurface>(n, coefficients, false, "poly");
         }
         case Keyword::kw_cubic:
-            return std::make_shared<scene::PolynomialSurface>(3, parseCoefficientVector(20, kind),
-                                                              false, "cubic");
+            return std::make_shared<scene::PolynomialSurface>(
+                3, parseCoefficientVector(c, 20, kind), false, "cubic");
         case Keyword::kw_quartic:
-            return std::make_shared<scene::PolynomialSurface>(4, parseCoefficientVector(35, kind),
-                                                              false, "quartic");
-        case Keyword::kw_blob:
-            return parseBlob();
+            return std::make_shared<scene::PolynomialSurface>(
+                4, parseCoefficientVector(c, 35, kind), false, "quartic");
         default:
-            unsupported(kind, std::string(kind.text));
+            r.unsupported(kind, std::string(kind.text));
     }
 }
 
-std::shared_ptr<const scene::Shape> Interpreter::parseBlob() {
+void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
+    Reader& r = c.reader;
     using Component = scene::Blob::Component;
     std::vector<Component> components;
     // Each component's own texture (null: the blob object's), in blob
-    // space; handed to parseObject through blobComponentTextures_.
+    // space; the object keeps them when any component has one.
     std::vector<std::shared_ptr<const scene::Texture>> textures;
     double threshold = 1;
     // A component's transformations, applied in order after its geometry
     // (and to its texture when they follow it), and its texture, started
     // from the default texture as an object's is.
-    auto parseComponentModifiers = [&](Component& c, const char* what) {
+    auto parseComponentModifiers = [&](Component& comp, const char* what) {
         std::optional<scene::Texture> texture;
         auto editTexture = [&]() -> scene::Texture& {
-            if (!texture) texture = defaultTexture_;
+            if (!texture) texture = c.defaultTexture;
             return *texture;
         };
         for (;;) {
-            if (accept(Sym::RBrace)) {
+            if (r.accept(Sym::RBrace)) {
                 textures.push_back(texture ? std::make_shared<const scene::Texture>(*texture)
                                            : nullptr);
                 return;
             }
             Transform t;
-            const Token at = peek();
-            if (parseTransformation(t)) {
-                c.toBlob = c.transformed ? c.toBlob.then(t) : t;
-                c.transformed = true;
+            const Token at = r.peek();
+            if (r.parseTransformation(t)) {
+                comp.toBlob = comp.transformed ? comp.toBlob.then(t) : t;
+                comp.transformed = true;
                 if (texture) texture->transformBy(t);
                 continue;
             }
             if (at.is(Keyword::kw_pigment)) {
-                editTexture().pigment = parsePigment();
+                scene::Texture& tx = editTexture();
+                tx.pigment = parseTexturePigment(c, tx);
                 continue;
             }
             if (at.is(Keyword::kw_normal)) {
                 scene::Texture& tx = editTexture();
-                tx.normal = parseNormal(tx.normal.get());
+                tx.normal = parseTextureNormal(c, tx);
                 continue;
             }
             if (at.is(Keyword::kw_finish)) {
                 scene::Texture& tx = editTexture();
-                tx.finish = *parseFinish(&tx.finish);
+                tx.finish = *parseFinish(c, &tx.finish);
                 continue;
             }
             if (at.is(Keyword::kw_texture)) {
                 scene::Texture& tx = editTexture();
-                tx = parseLayeredTextures(tx.map ? nullptr : &tx);
+                tx = parseLayeredTextures(c, tx.map ? nullptr : &tx);
                 continue;
             }
-            fail(at, fmt::format("expected a transformation or '}}' in a blob {}, found {}", what,
-                                 describeToken(at)));
+            r.fail(at, fmt::format("expected a transformation or '}}' in a blob {}, found {}", what,
+                                   describeToken(at)));
         }
     };
     auto parseStrength = [&]() {
-        accept(Keyword::kw_strength);
-        return parseFloat();
+        r.accept(Keyword::kw_strength);
+        return r.parseFloat();
     };
     for (;;) {
-        const Token t = peek();
-        if (accept(Keyword::kw_threshold)) {
-            threshold = parseFloat();
-        } else if (accept(Keyword::kw_sphere)) {
-            expect(Sym::LBrace, "'{' after 'sphere'");
-            Component c;
-            c.a = parseVec3();
-            accept(Sym::Comma);  // optional, as in povray
-            c.radius = parseFloat();
-            accept(Sym::Comma);  // optional, as in povray
-            c.strength = parseStrength();
-            parseComponentModifiers(c, "sphere");
-            components.push_back(c);
-        } else if (accept(Keyword::kw_cylinder)) {
-            expect(Sym::LBrace, "'{' after 'cylinder'");
-            Component c;
-            c.kind = Component::Kind::Cylinder;
-            c.a = parseVec3();
-            accept(Sym::Comma);  // optional, as in povray
-            c.b = parseVec3();
-            accept(Sym::Comma);  // optional, as in povray
-            c.radius = parseFloat();
-            accept(Sym::Comma);  // optional, as in povray
-            c.strength = parseStrength();
-            parseComponentModifiers(c, "cylinder");
-            components.push_back(c);
-        } else if (accept(Keyword::kw_component)) {
+        const Token t = r.peek();
+        if (r.accept(Keyword::kw_threshold)) {
+            threshold = r.parseFloat();
+        } else if (r.accept(Keyword::kw_sphere)) {
+            r.expect(Sym::LBrace, "'{' after 'sphere'");
+            Component comp;
+            comp.a = r.parseVec3();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.radius = r.parseFloat();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.strength = parseStrength();
+            parseComponentModifiers(comp, "sphere");
+            components.push_back(comp);
+        } else if (r.accept(Keyword::kw_cylinder)) {
+            r.expect(Sym::LBrace, "'{' after 'cylinder'");
+            Component comp;
+            comp.kind = Component::Kind::Cylinder;
+            comp.a = r.parseVec3();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.b = r.parseVec3();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.radius = r.parseFloat();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.strength = parseStrength();
+            parseComponentModifiers(comp, "cylinder");
+            components.push_back(comp);
+        } else if (r.accept(Keyword::kw_component)) {
             // The 2.0 form: component Strength, Radius, <Centre>.
-            Component c;
-            c.strength = parseFloat();
-            accept(Sym::Comma);  // optional, as in povray
-            c.radius = parseFloat();
-            accept(Sym::Comma);  // optional, as in povray
-            c.a = parseVec3();
-            components.push_back(c);
+            Component comp;
+            comp.strength = r.parseFloat();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.radius = r.parseFloat();
+            r.accept(Sym::Comma);  // optional, as in povray
+            comp.a = r.parseVec3();
+            components.push_back(comp);
             textures.push_back(nullptr);
         } else {
-            if (components.empty()) fail(t, "Need at least one component in a blob.");
+            if (components.empty()) r.fail(t, "Need at least one component in a blob.");
             break;
         }
         if (!components.empty() && components.back().radius <= 0)
-            fail(t, "a blob component needs a positive radius");
+            r.fail(t, "a blob component needs a positive radius");
     }
-    blobComponentTextures_.clear();
     for (const auto& texture : textures) {
         if (!texture) continue;
-        blobComponentTextures_ = std::move(textures);
+        blob.object->componentTextures = std::move(textures);
         break;
     }
-    return std::make_shared<scene::Blob>(std::move(components), threshold, false);
+    blob.object->shape = std::make_shared<scene::Blob>(std::move(components), threshold, false);
 }
 
-void Interpreter::applySturm(scene::Object& obj, const Token& at) {
-    const bool on = parseOptionalBool();
+void applySturm(BuildContext& c, scene::Object& obj, const Token& at) {
+    Reader& r = c.reader;
+    const bool on = r.parseOptionalBool();
     const scene::Shape* shape = obj.shape.get();
     if (const auto* torus = dynamic_cast<const scene::Torus*>(shape)) {
         obj.shape = std::make_shared<scene::Torus>(torus->majorRadius(), torus->minorRadius(), on);
@@ -199,7 +201,7 @@ void Interpreter::applySturm(scene::Object& obj, const Token& at) {
                          std::string_view(shape->name()) == "sphere_sweep")) {
         // Their own solvers decide; povray accepts the keyword on them.
     } else {
-        fail(at, "Keyword 'sturm' cannot be used with this object.");
+        r.fail(at, "Keyword 'sturm' cannot be used with this object.");
     }
 }
 

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -75,22 +75,23 @@ const BoolSetting kBoolSettings[] = {
 
 }  // namespace
 
-void Interpreter::parseRadiositySettings(const Token& start) {
-    expect(Sym::LBrace, "'{' after 'radiosity'");
-    scene::RadiositySettings r =
-        scene_.globals.radiosity ? *scene_.globals.radiosity : scene::RadiositySettings{};
+void parseRadiositySettings(BuildContext& c, const Token& start) {
+    Reader& r = c.reader;
+    r.expect(Sym::LBrace, "'{' after 'radiosity'");
+    scene::RadiositySettings rs =
+        c.scene.globals.radiosity ? *c.scene.globals.radiosity : scene::RadiositySettings{};
     bool minimumGiven = false, maximumGiven = false;
     auto checked = [&](const Token& at, double v, const RangeCheck& check) {
-        if (check.message[0] && !check.accepts(v)) fail(at, check.message);
+        if (check.message[0] && !check.accepts(v)) r.fail(at, check.message);
         return v;
     };
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = next();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.next();
         if (const auto* f = std::find_if(std::begin(kFloatSettings), std::end(kFloatSettings),
                                          [&](const FloatSetting& s) { return t.is(s.kw); });
             f != std::end(kFloatSettings)) {
-            r.*(f->member) = checked(t, parseFloat(), f->check);
+            rs.*(f->member) = checked(t, r.parseFloat(), f->check);
             minimumGiven |= t.is(Keyword::kw_minimum_reuse);
             maximumGiven |= t.is(Keyword::kw_maximum_reuse);
             continue;
@@ -98,88 +99,89 @@ void Interpreter::parseRadiositySettings(const Token& start) {
         if (const auto* b = std::find_if(std::begin(kBoolSettings), std::end(kBoolSettings),
                                          [&](const BoolSetting& s) { return t.is(s.kw); });
             b != std::end(kBoolSettings)) {
-            r.*(b->member) = parseOptionalBool();
+            rs.*(b->member) = r.parseOptionalBool();
             continue;
         }
         switch (t.kw) {
             case Keyword::kw_count: {
-                r.count = static_cast<int>(
-                    checked(t, parseFloat(),
+                rs.count = static_cast<int>(
+                    checked(t, r.parseFloat(),
                             {0.0, kHuge, true, "Radiosity count must be a positive number."}));
-                if (accept(Sym::Comma))
-                    r.directionPool = static_cast<int>(checked(
-                        t, parseFloat(),
+                if (r.accept(Sym::Comma))
+                    rs.directionPool = static_cast<int>(checked(
+                        t, r.parseFloat(),
                         {0.0, kHuge, true, "Radiosity direction pool size must be positive."}));
-                if (r.count > r.directionPool)
-                    fail(t,
-                         "Radiosity count can not be more than direction pool size (count 2nd "
-                         "value).");
+                if (rs.count > rs.directionPool)
+                    r.fail(t,
+                           "Radiosity count can not be more than direction pool size (count 2nd "
+                           "value).");
                 break;
             }
             case Keyword::kw_nearest_count: {
-                r.nearestCount = static_cast<int>(parseFloat());
-                if (r.nearestCount < 1 || r.nearestCount > 20)
-                    fail(t, "Radiosity nearest count must be a value from 1 to 20.");
-                if (accept(Sym::Comma)) {
-                    r.nearestCountPretrace = static_cast<int>(parseFloat());
-                    if (r.nearestCountPretrace < 0 || r.nearestCountPretrace >= r.nearestCount)
-                        fail(t,
-                             "Radiosity nearest count for adaptive pretrace must be non-negative "
-                             "and smaller than general nearest count.");
+                rs.nearestCount = static_cast<int>(r.parseFloat());
+                if (rs.nearestCount < 1 || rs.nearestCount > 20)
+                    r.fail(t, "Radiosity nearest count must be a value from 1 to 20.");
+                if (r.accept(Sym::Comma)) {
+                    rs.nearestCountPretrace = static_cast<int>(r.parseFloat());
+                    if (rs.nearestCountPretrace < 0 || rs.nearestCountPretrace >= rs.nearestCount)
+                        r.fail(t,
+                               "Radiosity nearest count for adaptive pretrace must be non-negative "
+                               "and smaller than general nearest count.");
                 }
                 break;
             }
             case Keyword::kw_recursion_limit:
-                r.recursionLimit = static_cast<int>(parseFloat());
-                if (r.recursionLimit < 1 || r.recursionLimit > 20)
-                    fail(t, "Radiosity recursion limit must be in the range 1 to 20.");
+                rs.recursionLimit = static_cast<int>(r.parseFloat());
+                if (rs.recursionLimit < 1 || rs.recursionLimit > 20)
+                    r.fail(t, "Radiosity recursion limit must be in the range 1 to 20.");
                 break;
             case Keyword::kw_save_file:
             case Keyword::kw_load_file:
                 // povray 3.7 takes these from the options only.
-                parseString();
-                warn(t, fmt::format("In POV-Ray 3.7 and later '{}' has to be specified as an "
-                                    "option on the command-line, in an INI file or in a dialog "
-                                    "(on some platforms). The '{}' setting here will be ignored!",
-                                    t.text, t.text));
+                r.parseString();
+                r.warn(t, fmt::format("In POV-Ray 3.7 and later '{}' has to be specified as an "
+                                      "option on the command-line, in an INI file or in a dialog "
+                                      "(on some platforms). The '{}' setting here will be ignored!",
+                                      t.text, t.text));
                 break;
             default:
-                fail(t, fmt::format("expected a radiosity setting or '}}', found {}",
-                                    describeToken(t)));
+                r.fail(t, fmt::format("expected a radiosity setting or '}}', found {}",
+                                      describeToken(t)));
         }
     }
-    if (r.pretraceEnd > r.pretraceStart)
-        fail(start, "Radiosity pretrace end must be smaller than or equal to pretrace start.");
+    if (rs.pretraceEnd > rs.pretraceStart)
+        r.fail(start, "Radiosity pretrace end must be smaller than or equal to pretrace start.");
     // povray widens the reuse range when it is narrower than a factor 2,
     // moving the bound that was not given (measured, with its warnings).
-    if (r.minimumReuse > r.maximumReuse / 2) {
+    if (rs.minimumReuse > rs.maximumReuse / 2) {
         std::string fix;
         if (minimumGiven && !maximumGiven) {
-            r.maximumReuse = r.minimumReuse * 2;
+            rs.maximumReuse = rs.minimumReuse * 2;
             fix = fmt::format(" Increasing maximum_reuse to {:.6f} instead of the default.",
-                              r.maximumReuse);
+                              rs.maximumReuse);
         } else if (maximumGiven && !minimumGiven) {
-            r.minimumReuse = r.maximumReuse / 2;
+            rs.minimumReuse = rs.maximumReuse / 2;
             fix = fmt::format(" Decreasing minimum_reuse to {:.6f} instead of the default.",
-                              r.minimumReuse);
+                              rs.minimumReuse);
         }
-        warn(start,
-             "Radiosity maximum_reuse should be significantly larger than minimum_reuse." + fix);
+        r.warn(start,
+               "Radiosity maximum_reuse should be significantly larger than minimum_reuse." + fix);
     }
-    scene_.globals.radiosity = r;
+    c.scene.globals.radiosity = rs;
 }
 
-void Interpreter::parseObjectRadiosity(scene::Object& obj) {
-    next();  // 'radiosity'
-    expect(Sym::LBrace, "'{' after 'radiosity'");
+void parseObjectRadiosity(BuildContext& c, scene::Object& obj) {
+    Reader& r = c.reader;
+    r.next();  // 'radiosity'
+    r.expect(Sym::LBrace, "'{' after 'radiosity'");
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        const Token t = next();
+        if (r.accept(Sym::RBrace)) break;
+        const Token t = r.next();
         if (!t.is(Keyword::kw_importance))
-            fail(t, fmt::format("expected 'importance' or '}}', found {}", describeToken(t)));
-        const double importance = parseFloat();
+            r.fail(t, fmt::format("expected 'importance' or '}}', found {}", describeToken(t)));
+        const double importance = r.parseFloat();
         if (importance <= 0 || importance > 1)
-            fail(t, "Radiosity importance must be greater than 0.0 and at most 1.0.");
+            r.fail(t, "Radiosity importance must be greater than 0.0 and at most 1.0.");
         obj.radiosityImportance = importance;
     }
 }

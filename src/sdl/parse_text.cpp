@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "scene/text_shape.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -65,89 +65,95 @@ std::u32string decodeUtf8(const std::string& bytes) {
 
 }  // namespace
 
-std::u32string Interpreter::decodeTextString(const std::string& bytes, const Token& at) {
-    switch (textCharset_) {
+static std::u32string decodeTextString(BuildContext& c, const std::string& bytes, const Token& at) {
+    Reader& r = c.reader;
+    switch (c.textCharset) {
         case scene::TextCharset::Utf8:
             return decodeUtf8(bytes);
         case scene::TextCharset::System:
             // povray 3.7 on Unix has no system conversion and stops so.
-            fail(at, "Cannot convert system specific text format to Unicode.");
+            r.fail(at, "Cannot convert system specific text format to Unicode.");
         case scene::TextCharset::Ascii:
             break;
     }
     std::u32string out;
-    for (const char c : bytes) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x80 || version_ < 3.5) {
+    for (const char ch : bytes) {
+        const auto byte = static_cast<unsigned char>(ch);
+        if (byte < 0x80 || r.version() < 3.5) {
             out.push_back(byte);
         } else {
             out.push_back(U' ');
-            warn(at, "Non-ASCII character has been replaced by space character.");
+            r.warn(at, "Non-ASCII character has been replaced by space character.");
         }
     }
     return out;
 }
 
-std::shared_ptr<scene::TtfFont> Interpreter::openFont(const std::string& name, const Token& at) {
+static std::shared_ptr<scene::TtfFont> openFont(BuildContext& c, const std::string& name,
+                                                const Token& at) {
+    Reader& r = c.reader;
     // povray keeps fonts by the name the scene gives; the charset in force
     // when a font is first opened picks its character map for good.
-    if (const auto it = fonts_.find(name); it != fonts_.end()) return it->second;
-    std::filesystem::path path = findIncludeFile(name);
+    if (const auto it = c.fonts.find(name); it != c.fonts.end()) return it->second;
+    std::filesystem::path path = r.findIncludeFile(name);
     if (path.empty() && std::filesystem::path(name).extension().empty())
-        path = findIncludeFile(name + ".ttf");
-    if (path.empty()) fail(at, fmt::format("Cannot open font file '{}'.", name));
-    checkReadable(path, name, at);
+        path = r.findIncludeFile(name + ".ttf");
+    if (path.empty()) r.fail(at, fmt::format("Cannot open font file '{}'.", name));
+    r.checkReadable(path, name, at);
     std::shared_ptr<scene::TtfFont> font;
     try {
-        font = std::make_shared<scene::TtfFont>(path, textCharset_);
+        font = std::make_shared<scene::TtfFont>(path, c.textCharset);
     } catch (const std::runtime_error& e) {
-        fail(at, e.what());
+        r.fail(at, e.what());
     }
-    fonts_.emplace(name, font);
+    c.fonts.emplace(name, font);
     return font;
 }
 
-void Interpreter::parseTextObject(scene::Object& obj) {
-    const Token fontAt = peek();
+void parseTextBody(BuildContext& c, const Token&, ObjectValue& object) {
+    scene::Object& obj = *object.object;
+    Reader& r = c.reader;
+    const Token fontAt = r.peek();
     // povray's caution for old scenes, whose strings it reads as ASCII now.
-    if (version_ < 3.5 && textCharset_ == scene::TextCharset::Ascii)
-        warn(fontAt,
-             "Text may not be displayed as expected. Please refer to the user manual regarding "
-             "changes in "
-             "POV-Ray v3.5 and later.");
+    if (r.version() < 3.5 && c.textCharset == scene::TextCharset::Ascii)
+        r.warn(fontAt,
+               "Text may not be displayed as expected. Please refer to the user manual regarding "
+               "changes in "
+               "POV-Ray v3.5 and later.");
     std::shared_ptr<scene::TtfFont> font;
-    if (accept(Keyword::kw_ttf)) {
-        const Token nameAt = peek();
-        font = openFont(parsePathname(), nameAt);
-    } else if (accept(Keyword::kw_internal)) {
-        const int id = static_cast<int>(parseFloat());
+    if (r.accept(Keyword::kw_ttf)) {
+        const Token nameAt = r.peek();
+        font = openFont(c, r.parsePathname(), nameAt);
+    } else if (r.accept(Keyword::kw_internal)) {
+        const int id = static_cast<int>(r.parseFloat());
         // Named apart from file names so a scene's own "timrom.ttf" is
         // never taken for the built-in font.
         const std::string file = internalFontFile(id);
-        if (const auto it = fonts_.find("\n" + file); it != fonts_.end()) {
+        if (const auto it = c.fonts.find("\n" + file); it != c.fonts.end()) {
             font = it->second;
         } else {
-            const std::filesystem::path path = findIncludeFile(file);
+            const std::filesystem::path path = r.findIncludeFile(file);
             if (path.empty())
-                fail(fontAt, fmt::format("Cannot find the built-in font {} ('{}').", id, file));
-            checkReadable(path, file, fontAt);
+                r.fail(fontAt, fmt::format("Cannot find the built-in font {} ('{}').", id, file));
+            r.checkReadable(path, file, fontAt);
             try {
-                font = std::make_shared<scene::TtfFont>(path, textCharset_);
+                font = std::make_shared<scene::TtfFont>(path, c.textCharset);
             } catch (const std::runtime_error& e) {
-                fail(fontAt, e.what());
+                r.fail(fontAt, e.what());
             }
-            fonts_.emplace("\n" + file, font);
+            c.fonts.emplace("\n" + file, font);
         }
     } else {
-        fail(fontAt, fmt::format("expected 'ttf' or 'internal', found {}", describeToken(fontAt)));
+        r.fail(fontAt,
+               fmt::format("expected 'ttf' or 'internal', found {}", describeToken(fontAt)));
     }
-    accept(Sym::Comma);
-    const Token textAt = peek();
-    const std::u32string text = decodeTextString(parseString(), textAt);
-    accept(Sym::Comma);
-    const double thickness = parseFloat();
-    accept(Sym::Comma);
-    const Vec3 offset = parseVec3();
+    r.accept(Sym::Comma);
+    const Token textAt = r.peek();
+    const std::u32string text = decodeTextString(c, r.parseString(), textAt);
+    r.accept(Sym::Comma);
+    const double thickness = r.parseFloat();
+    r.accept(Sym::Comma);
+    const Vec3 offset = r.parseVec3();
 
     obj.shape =
         std::make_shared<scene::TextShape>(scene::layoutText(*font, text, offset), thickness);

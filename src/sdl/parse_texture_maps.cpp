@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "sdl/blend_map_value.h"
-#include "sdl/interpreter.h"
+#include "sdl/builders.h"
 
 namespace frameray::sdl {
 
@@ -41,47 +41,58 @@ void checkMapEntries(const Entries& entries, const Token& kw, Fail&& fail) {
 
 }  // namespace
 
-TexturePtr Interpreter::parseTexture(const scene::Texture* base) {
-    next();  // texture
-    expect(Sym::LBrace, "'{' after 'texture'");
-    scene::Texture tex = base ? *base : defaultTexture_;
-    parseTextureBody(tex, Sym::RBrace);
-    expect(Sym::RBrace, "'}' closing 'texture'");
+// Defined below.
+static void parseTextureBody(BuildContext& c, scene::Texture& tex, Sym closing);
+static std::vector<scene::TextureMap::Entry> parseTextureMap(BuildContext& c);
+static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
+                                    std::shared_ptr<scene::TextureMap>& draft);
+
+TexturePtr parseTexture(BuildContext& c, const scene::Texture* base) {
+    Reader& r = c.reader;
+    r.next();  // texture
+    r.expect(Sym::LBrace, "'{' after 'texture'");
+    scene::Texture tex = base ? *base : c.defaultTexture;
+    parseTextureBody(c, tex, Sym::RBrace);
+    r.expect(Sym::RBrace, "'}' closing 'texture'");
     return std::make_shared<const scene::Texture>(std::move(tex));
 }
 
-scene::Texture Interpreter::parseLayeredTextures(const scene::Texture* base, bool inDeclaration) {
-    scene::Texture tex = *parseTexture(base);
+scene::Texture parseLayeredTextures(BuildContext& c, const scene::Texture* base,
+                                    bool inDeclaration) {
+    Reader& r = c.reader;
+    scene::Texture tex = *parseTexture(c, base);
     // Further texture blocks right after it lie on top of it (seed 003
     // 5.4.5). In a #declare the look-ahead must not run the next line's
     // directive before the texture is bound, so it reads the raw token.
     auto layerFollows = [&] {
-        return inDeclaration ? rawPeek().is(Keyword::kw_texture) : peek().is(Keyword::kw_texture);
+        return inDeclaration ? r.rawPeek().is(Keyword::kw_texture)
+                             : r.peek().is(Keyword::kw_texture);
     };
     while (layerFollows()) {
-        const Token layer = peek();
-        scene::Texture upper = *parseTexture(nullptr);
+        const Token layer = r.peek();
+        scene::Texture upper = *parseTexture(c, nullptr);
         // povray 3.7 refuses both (measured), checking the lower first.
-        if (tex.map) fail(layer, "Cannot layer over a patterned texture.");
-        if (upper.map) fail(layer, "Cannot layer a patterned texture over another.");
+        if (tex.map) r.fail(layer, "Cannot layer over a patterned texture.");
+        if (upper.map) r.fail(layer, "Cannot layer a patterned texture over another.");
         tex.stackOn(upper);
         tex = std::move(upper);
     }
     return tex;
 }
 
-void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
-    const Token t = peek();
-    const NestingGuard nesting(*this, t);
+static void parseTextureBody(BuildContext& c, scene::Texture& tex, Sym closing) {
+    Reader& r = c.reader;
+    const Token t = r.peek();
+    const Reader::NestingGuard nesting(r, t);
     // Transformations after a uv-mapped texture identifier do nothing
     // (povray 3.7, measured); in the block that says uv_mapping they move
     // the uv pattern.
     bool uvFrozen = false;
     if (t.isIdentifier()) {
-        next();
-        const Value v = identifierValue(t);
+        r.next();
+        const Value v = r.identifierValue(t);
         const auto* tp = std::get_if<TexturePtr>(&v);
-        if (!tp) fail(t, fmt::format("'{}' is a {}, not a texture", t.text, valueKindName(v)));
+        if (!tp) r.fail(t, fmt::format("'{}' is a {}, not a texture", t.text, valueKindName(v)));
         tex = **tp;
         uvFrozen = tex.uvMapping;
     }
@@ -89,17 +100,17 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
     std::shared_ptr<scene::TextureMap> draft;
     if (tex.map) draft = std::make_shared<scene::TextureMap>(*tex.map);
     bool surfaceSeen = false;  // povray takes uv_mapping only before these
-    while (!peek().is(closing)) {
-        const Token item = peek();
+    while (!r.peek().is(closing)) {
+        const Token item = r.peek();
         if (item.is(Keyword::kw_uv_mapping)) {
-            if (surfaceSeen) fail(item, "Cannot parse input.");
-            if (t.isIdentifier()) unsupported(item, "uv_mapping after a texture identifier");
-            next();
+            if (surfaceSeen) r.fail(item, "Cannot parse input.");
+            if (t.isIdentifier()) r.unsupported(item, "uv_mapping after a texture identifier");
+            r.next();
             tex.uvMapping = true;
             continue;
         }
         Transform step;
-        if (parseTransformation(step)) {
+        if (r.parseTransformation(step)) {
             if (uvFrozen) {
                 tex.transformBy(step);  // turns the normal's perturbation only
                 continue;
@@ -118,38 +129,39 @@ void Interpreter::parseTextureBody(scene::Texture& tex, Sym closing) {
                                  item.is(Keyword::kw_finish);
         surfaceSeen = surfaceSeen || surfaceItem;
         if (surfaceItem && draft)
-            fail(item, fmt::format("'{}' is not allowed in a patterned texture: give it to each "
-                                   "texture of the map",
-                                   item.text));
+            r.fail(item, fmt::format("'{}' is not allowed in a patterned texture: give it to each "
+                                     "texture of the map",
+                                     item.text));
         if (item.is(Keyword::kw_pigment)) {
-            tex.pigment = parsePigment();
+            tex.pigment = parseTexturePigment(c, tex);
         } else if (item.is(Keyword::kw_normal)) {
-            tex.normal = parseNormal(tex.normal.get());
+            tex.normal = parseTextureNormal(c, tex);
         } else if (item.is(Keyword::kw_finish)) {
-            tex.finish = *parseFinish(&tex.finish);
-        } else if (parseTexturePatternItem(tex, draft)) {
+            tex.finish = *parseFinish(c, &tex.finish);
+        } else if (parseTexturePatternItem(c, tex, draft)) {
             continue;
         } else if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
-            unsupported(item, fmt::format("'{}' in texture", item.text));
+            r.unsupported(item, fmt::format("'{}' in texture", item.text));
         } else {
-            fail(item, fmt::format("expected a texture item or '{}', found {}",
-                                   closing == Sym::RBrace ? "}" : "]", describeToken(item)));
+            r.fail(item, fmt::format("expected a texture item or '{}', found {}",
+                                     closing == Sym::RBrace ? "}" : "]", describeToken(item)));
         }
     }
     tex.map = std::move(draft);
 }
 
-bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
-                                          std::shared_ptr<scene::TextureMap>& draft) {
-    const Token item = peek();
+static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
+                                    std::shared_ptr<scene::TextureMap>& draft) {
+    Reader& r = c.reader;
+    const Token item = r.peek();
     // Makes the texture a patterned one; transformations given before the
     // pattern move it.
     auto patterned = [&]() -> scene::TextureMap& {
         if (!draft) {
             if (tex.pigment && !tex.pigment->isSolid())
-                fail(item, "a texture with a pigment cannot take a pattern of textures");
+                r.fail(item, "a texture with a pigment cannot take a pattern of textures");
             draft = std::make_shared<scene::TextureMap>();
-            if (!tex.transform.isIdentity()) draft->holder.transform(tex.transform);
+            if (!tex.transform.isIdentity()) draft->pattern.addTransform(tex.transform);
             tex.transform = Transform();
         }
         return *draft;
@@ -158,43 +170,41 @@ bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
         case Keyword::kw_texture_map: {
             scene::TextureMap& map = patterned();
             if (map.mode == scene::TextureMap::Mode::List)
-                fail(item, "a list pattern takes textures, not a texture_map");
-            map.entries = parseTextureMap();
+                r.fail(item, "a list pattern takes textures, not a texture_map");
+            map.entries = parseTextureMap(c);
             return true;
         }
         case Keyword::kw_average: {
-            next();
+            r.next();
             patterned().mode = scene::TextureMap::Mode::Average;
             return true;
         }
         case Keyword::kw_tiles: {
-            next();
-            expect(Sym::LBrace, "'{' after 'tiles'");
+            r.next();
+            r.expect(Sym::LBrace, "'{' after 'tiles'");
             scene::TextureMap& map = patterned();
-            scene::Pattern pattern = map.holder.pattern();
-            pattern.kind = scene::PatternKind::Checker;
-            map.holder.setPattern(pattern);
+            map.pattern.kind = scene::PatternKind::Checker;
             map.mode = scene::TextureMap::Mode::List;
             // The first tile takes the checker's second cells (measured).
             map.entries.clear();
-            const auto first = std::make_shared<const scene::Texture>(parseLayeredTextures());
-            const Token tile2 = peek();
-            if (!accept(Keyword::kw_tile2))
-                fail(tile2,
-                     fmt::format("expected 'tile2' in tiles, found {}", describeToken(tile2)));
+            const auto first = std::make_shared<const scene::Texture>(parseLayeredTextures(c));
+            const Token tile2 = r.peek();
+            if (!r.accept(Keyword::kw_tile2))
+                r.fail(tile2,
+                       fmt::format("expected 'tile2' in tiles, found {}", describeToken(tile2)));
             map.entries.push_back(
-                {0, std::make_shared<const scene::Texture>(parseLayeredTextures())});
+                {0, std::make_shared<const scene::Texture>(parseLayeredTextures(c))});
             map.entries.push_back({1, first});
-            expect(Sym::RBrace, "'}' closing 'tiles'");
+            r.expect(Sym::RBrace, "'}' closing 'tiles'");
             return true;
         }
         case Keyword::kw_material_map: {
-            next();
+            r.next();
             scene::TextureMap& map = patterned();
             if (map.mode == scene::TextureMap::Mode::List)
-                fail(item, "a list pattern takes textures, not a material_map");
+                r.fail(item, "a list pattern takes textures, not a material_map");
             std::vector<std::shared_ptr<const scene::Texture>> textures;
-            map.material = parseImageBlock(item, nullptr, &textures);
+            map.material = parseImageBlock(c, item, nullptr, &textures);
             map.mode = scene::TextureMap::Mode::Material;
             map.entries.clear();
             for (auto& t : textures)
@@ -206,14 +216,15 @@ bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
         case Keyword::kw_pigment_map:
         case Keyword::kw_normal_map:
         case Keyword::kw_slope_map:
-            fail(item, fmt::format("'{}' is not allowed in a texture", item.text));
+        case Keyword::kw_image_map:  // povray: only in a pigment
+            r.fail(item, fmt::format("'{}' is not allowed in a texture", item.text));
         default:
             break;
     }
     if (isPatternKeyword(item)) {
         scene::TextureMap& map = patterned();
-        parsePatternKeyword(map.holder);
-        if (!map.holder.pattern().isList()) {
+        parsePatternKeyword(c, map.pattern);
+        if (!map.pattern.isList()) {
             if (map.mode == scene::TextureMap::Mode::List)
                 map.mode = scene::TextureMap::Mode::Values;
             return true;
@@ -222,50 +233,53 @@ bool Interpreter::parseTexturePatternItem(scene::Texture& tex,
         // ones are the default texture.
         map.mode = scene::TextureMap::Mode::List;
         map.entries.clear();
-        const int count = scene::Pattern::listSize(map.holder.pattern().kind);
+        const int count = scene::Pattern::listSize(map.pattern.kind);
         for (int i = 0; i < count; ++i) {
-            if (i > 0) accept(Sym::Comma);
+            if (i > 0) r.accept(Sym::Comma);
             std::shared_ptr<const scene::Texture> entry = std::make_shared<const scene::Texture>();
-            if (peek().is(Keyword::kw_texture)) entry = parseTexture(nullptr);
+            if (r.peek().is(Keyword::kw_texture)) entry = parseTexture(c, nullptr);
             map.entries.push_back({static_cast<double>(i), std::move(entry)});
         }
-        closeListPattern(map.holder.pattern());
+        closeListPattern(c, map.pattern);
         return true;
     }
-    // Pattern modifiers (turbulence, warps, wave types...).
-    return draft && parsePigmentPatternItem(draft->holder);
+    // image_pattern and the pattern modifiers (turbulence, warps, waves...).
+    return draft &&
+           (parseImagePatternItem(c, draft->pattern) || parsePatternModifier(c, draft->pattern));
 }
 
-std::vector<scene::TextureMap::Entry> Interpreter::parseTextureMap() {
-    const Token kw = next();  // texture_map
-    expect(Sym::LBrace, "'{' after 'texture_map'");
-    if (const BlendMapValue* m = blendMapIdentifier(BlendMapValue::Kind::Texture)) {
-        expect(Sym::RBrace, "'}' after a texture_map identifier");
+static std::vector<scene::TextureMap::Entry> parseTextureMap(BuildContext& c) {
+    Reader& r = c.reader;
+    const Token kw = r.next();  // texture_map
+    r.expect(Sym::LBrace, "'{' after 'texture_map'");
+    if (const BlendMapValue* m = blendMapIdentifier(c, BlendMapValue::Kind::Texture)) {
+        r.expect(Sym::RBrace, "'}' after a texture_map identifier");
         return m->textures;
     }
     std::vector<scene::TextureMap::Entry> entries;
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        expect(Sym::LBracket, "'[' or '}' in texture_map");
-        const double v = parseMapValue(true);
-        accept(Sym::Comma);
-        scene::Texture tex = defaultTexture_;
-        parseTextureBody(tex, Sym::RBracket);
-        expect(Sym::RBracket, "']' after a texture_map entry");
+        if (r.accept(Sym::RBrace)) break;
+        r.expect(Sym::LBracket, "'[' or '}' in texture_map");
+        const double v = parseMapValue(c, true);
+        r.accept(Sym::Comma);
+        scene::Texture tex = c.defaultTexture;
+        parseTextureBody(c, tex, Sym::RBracket);
+        r.expect(Sym::RBracket, "']' after a texture_map entry");
         entries.push_back({v, std::make_shared<const scene::Texture>(std::move(tex))});
     }
-    checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { fail(at, m); });
+    checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { r.fail(at, m); });
     return entries;
 }
 
-double Interpreter::parseMapValue(bool weightMayBeOmitted) {
+double parseMapValue(BuildContext& c, bool weightMayBeOmitted) {
+    Reader& r = c.reader;
     // Entries of an average map may leave their weight out, which then is 1
     // (measured; the examples write `[pigment { Jade } finish { ... }]` and
     // `[gradient y color_map { ... }]`). povray knows it is the map of an
     // average; this takes any pigment, normal or texture map entry that
     // starts with its body, one of the keywords below.
     if (weightMayBeOmitted) {
-        const Token t = peek();
+        const Token t = r.peek();
         if (t.kind == TokenKind::Word && !t.isIdentifier() &&
             (isPatternKeyword(t) || t.is(Keyword::kw_pigment) || t.is(Keyword::kw_normal) ||
              t.is(Keyword::kw_finish) || t.is(Keyword::kw_texture) || t.is(Keyword::kw_image_map)))
@@ -273,124 +287,130 @@ double Interpreter::parseMapValue(bool weightMayBeOmitted) {
     }
     // `[0 <1, 0, 0>]`: the value ends before the '<', as every expression
     // outside parentheses does.
-    return parseFloat();
+    return r.parseFloat();
 }
 
-const BlendMapValue* Interpreter::blendMapIdentifier(BlendMapValue::Kind kind) {
-    const Token t = peek();
+const BlendMapValue* blendMapIdentifier(BuildContext& c, BlendMapValue::Kind kind) {
+    Reader& r = c.reader;
+    const Token t = r.peek();
     if (!t.isIdentifier()) return nullptr;
-    const Value* v = lookup(std::string(t.text));
+    const Value* v = r.lookup(std::string(t.text));
     if (!v || !std::holds_alternative<BlendMapPtr>(*v)) return nullptr;
-    next();
+    r.next();
     const BlendMapValue& map = *std::get<BlendMapPtr>(*v);
     if (map.kind != kind) {
         BlendMapValue wanted;
         wanted.kind = kind;
-        fail(t, fmt::format("'{}' is a {}, not a {}", t.text, map.kindName(), wanted.kindName()));
+        r.fail(t, fmt::format("'{}' is a {}, not a {}", t.text, map.kindName(), wanted.kindName()));
     }
     return &map;
 }
 
-Value Interpreter::parseBlendMapValue() {
+Value parseBlendMapValue(BuildContext& c) {
+    Reader& r = c.reader;
     auto map = std::make_shared<BlendMapValue>();
-    switch (peek().kw) {
+    switch (r.peek().kw) {
         case Keyword::kw_pigment_map:
             map->kind = BlendMapValue::Kind::Pigment;
-            map->pigments = parsePigmentMap();
+            map->pigments = parsePigmentMap(c);
             break;
         case Keyword::kw_normal_map:
             map->kind = BlendMapValue::Kind::Normal;
-            map->normals = parseNormalMap();
+            map->normals = parseNormalMap(c);
             break;
         case Keyword::kw_slope_map:
             map->kind = BlendMapValue::Kind::Slope;
-            map->slopes = parseSlopeMap();
+            map->slopes = parseSlopeMap(c);
             break;
         case Keyword::kw_texture_map:
             map->kind = BlendMapValue::Kind::Texture;
-            map->textures = parseTextureMap();
+            map->textures = parseTextureMap(c);
             break;
         default:
             map->kind = BlendMapValue::Kind::Color;
-            map->colors = parseColorMap();
+            map->colors = parseColorMap(c);
             break;
     }
     return BlendMapPtr(std::move(map));
 }
 
-std::vector<scene::Normal::MapEntry> Interpreter::parseNormalMap() {
-    const Token kw = next();  // normal_map
-    expect(Sym::LBrace, "'{' after 'normal_map'");
-    if (const BlendMapValue* m = blendMapIdentifier(BlendMapValue::Kind::Normal)) {
-        expect(Sym::RBrace, "'}' after a normal_map identifier");
+std::vector<scene::Normal::MapEntry> parseNormalMap(BuildContext& c) {
+    Reader& r = c.reader;
+    const Token kw = r.next();  // normal_map
+    r.expect(Sym::LBrace, "'{' after 'normal_map'");
+    if (const BlendMapValue* m = blendMapIdentifier(c, BlendMapValue::Kind::Normal)) {
+        r.expect(Sym::RBrace, "'}' after a normal_map identifier");
         return m->normals;
     }
     std::vector<scene::Normal::MapEntry> entries;
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        expect(Sym::LBracket, "'[' or '}' in normal_map");
-        const double v = parseMapValue(true);
-        accept(Sym::Comma);
-        const Token body = peek();
-        std::shared_ptr<const scene::Normal> normal = parseNormalBody(nullptr, Sym::RBracket);
+        if (r.accept(Sym::RBrace)) break;
+        r.expect(Sym::LBracket, "'[' or '}' in normal_map");
+        const double v = parseMapValue(c, true);
+        r.accept(Sym::Comma);
+        const Token body = r.peek();
+        std::shared_ptr<const scene::Normal> normal = parseNormalBody(c, nullptr, Sym::RBracket);
         // povray: "No normal type given."
-        if (!normal) fail(body, "a normal_map entry needs a normal pattern");
-        if (normal->uvMapping) unsupported(body, "uv_mapping in a normal_map entry");
-        expect(Sym::RBracket, "']' after a normal_map entry");
+        if (!normal) r.fail(body, "a normal_map entry needs a normal pattern");
+        if (normal->uvMapping) r.unsupported(body, "uv_mapping in a normal_map entry");
+        r.expect(Sym::RBracket, "']' after a normal_map entry");
         entries.push_back({v, std::move(normal)});
     }
-    checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { fail(at, m); });
+    checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { r.fail(at, m); });
     return entries;
 }
 
-std::vector<scene::Normal::SlopeEntry> Interpreter::parseSlopeMap() {
-    const Token kw = next();  // slope_map
-    expect(Sym::LBrace, "'{' after 'slope_map'");
-    if (const BlendMapValue* m = blendMapIdentifier(BlendMapValue::Kind::Slope)) {
-        expect(Sym::RBrace, "'}' after a slope_map identifier");
+std::vector<scene::Normal::SlopeEntry> parseSlopeMap(BuildContext& c) {
+    Reader& r = c.reader;
+    const Token kw = r.next();  // slope_map
+    r.expect(Sym::LBrace, "'{' after 'slope_map'");
+    if (const BlendMapValue* m = blendMapIdentifier(c, BlendMapValue::Kind::Slope)) {
+        r.expect(Sym::RBrace, "'}' after a slope_map identifier");
         return m->slopes;
     }
     std::vector<scene::Normal::SlopeEntry> entries;
     for (;;) {
-        if (accept(Sym::RBrace)) break;
-        expect(Sym::LBracket, "'[' or '}' in slope_map");
-        const double v = parseMapValue();
-        accept(Sym::Comma);
-        const Token at = peek();
-        const Value hs = parseExpression();
-        const VectorValue vec = toVector(hs, at, 2);
-        expect(Sym::RBracket, "']' after a slope_map entry");
+        if (r.accept(Sym::RBrace)) break;
+        r.expect(Sym::LBracket, "'[' or '}' in slope_map");
+        const double v = parseMapValue(c);
+        r.accept(Sym::Comma);
+        const Token at = r.peek();
+        const Value hs = r.parseExpression();
+        const VectorValue vec = r.toVector(hs, at, 2);
+        r.expect(Sym::RBracket, "']' after a slope_map entry");
         entries.push_back({v, vec.v[0], vec.v[1]});
     }
-    checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { fail(at, m); });
+    checkMapEntries(entries, kw, [&](const Token& at, const std::string& m) { r.fail(at, m); });
     return entries;
 }
 
 // #default { texture { } | pigment { } | normal { } | finish { } ... }:
 // each block edits the default texture from its current state.
-void Interpreter::directiveDefault() {
-    expect(Sym::LBrace, "'{' after '#default'");
-    while (!accept(Sym::RBrace)) {
-        const Token t = peek();
+void parseDefaultDirective(BuildContext& c) {
+    Reader& r = c.reader;
+    r.expect(Sym::LBrace, "'{' after '#default'");
+    while (!r.accept(Sym::RBrace)) {
+        const Token t = r.peek();
         switch (t.kw) {
             case Keyword::kw_texture:
-                defaultTexture_ = *parseTexture(&defaultTexture_);
+                c.defaultTexture = *parseTexture(c, &c.defaultTexture);
                 break;
             case Keyword::kw_pigment:
-                defaultTexture_.pigment = parsePigment();
+                c.defaultTexture.pigment = parsePigment(c);
                 break;
             case Keyword::kw_normal:
-                defaultTexture_.normal = parseNormal(defaultTexture_.normal.get());
+                c.defaultTexture.normal =
+                    parseNormal(c, c.defaultTexture.normal.get(), &c.defaultNormal);
                 break;
             case Keyword::kw_finish:
-                defaultTexture_.finish = *parseFinish(&defaultTexture_.finish);
+                c.defaultTexture.finish = *parseFinish(c, &c.defaultTexture.finish);
                 break;
             default:
-                fail(t, fmt::format(
-                            "expected texture, pigment, normal or finish in #default, found {}",
-                            describeToken(t)));
+                r.fail(t, fmt::format(
+                              "expected texture, pigment, normal or finish in #default, found {}",
+                              describeToken(t)));
         }
-        defaultTextureSet_ = true;
+        c.defaultTextureSet = true;
     }
 }
 

@@ -13,7 +13,7 @@
 
 #include <algorithm>
 
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
@@ -160,7 +160,7 @@ VectorValue evaluateSpline(const SplineValue& spline, double x, SplineType type)
 
 }  // namespace
 
-Value Interpreter::parseSpline() {
+Value Reader::parseSpline() {
     next();  // spline
     expect(Sym::LBrace, "'{' after 'spline'");
     auto spline = std::make_shared<SplineValue>();
@@ -203,7 +203,7 @@ Value Interpreter::parseSpline() {
     return SplinePtr(spline);
 }
 
-Value Interpreter::callSpline(const SplineValue& spline, const Token& at) {
+Value Reader::callSpline(const SplineValue& spline, const Token& at) {
     expect(Sym::LParen, "'('");
     const double x = parseFloat();
     SplineType type = spline.type;

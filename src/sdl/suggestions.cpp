@@ -5,18 +5,16 @@
 
 #include <algorithm>
 
-#include "sdl/interpreter.h"
+#include "sdl/reader.h"
 
 namespace frameray::sdl {
 
-std::string Interpreter::withSpellingSuggestion(const Token& at, const std::string& message) const {
+std::string Reader::withSpellingSuggestion(const Token& at, const std::string& message) const {
     if (at.kind != TokenKind::Word || at.kw != Keyword::None || lookup(at.text)) return message;
     if (message.find(fmt::format("'{}'", at.text)) == std::string::npos) return message;
     // Declared identifiers first (sorted, so ties do not depend on hash
     // order), then the reserved words.
-    std::vector<std::string_view> names;
-    for (const Scope& scope : scopes_)
-        for (const auto& entry : scope) names.push_back(entry.first);
+    std::vector<std::string_view> names = symbols_.names();
     std::sort(names.begin(), names.end());
     names.erase(std::unique(names.begin(), names.end()), names.end());
     // Reserved words are all lower case; a word with capitals is meant as
@@ -31,7 +29,7 @@ std::string Interpreter::withSpellingSuggestion(const Token& at, const std::stri
     return fmt::format("{}; did you mean '{}'?", message, best);
 }
 
-std::vector<std::string> Interpreter::includeChain(const SourceLoc& at) const {
+std::vector<std::string> Reader::includeChain(const SourceLoc& at) const {
     // The innermost cursor reading the error's file; an error placed
     // elsewhere (a block's opening line) has no chain.
     size_t i = cursors_.size();

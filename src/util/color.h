@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 namespace frameray {
 
@@ -72,6 +73,13 @@ constexpr double grey(const RGB& c) {
 constexpr float greySingle(float r, float g, float b) {
     return r * static_cast<float>(kGreyRed) + g * static_cast<float>(kGreyGreen) +
            b * static_cast<float>(kGreyBlue);
+}
+
+// The summed absolute difference of two colours: POV-Ray's test of whether
+// two samples differ enough to subdivide (area-light corners, media
+// intervals).
+inline double summedDifference(const RGB& a, const RGB& b) {
+    return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
 
 // A pigment colour: RGB with filter (coloured transparency) and transmit

@@ -16,8 +16,10 @@ namespace fs = std::filesystem;
 namespace {
 
 [[noreturn]] void fail(const char* what, const fs::path& path, int error) {
+    // O_NOFOLLOW's refusal reads "Too many levels of symbolic links".
     throw std::runtime_error(
-        fmt::format("cannot {} '{}': {}", what, path.string(), std::strerror(error)));
+        fmt::format("cannot {} '{}': {}", what, path.string(),
+                    error == ELOOP ? "it is a symbolic link" : std::strerror(error)));
 }
 
 // write(2) until every byte is out; returns 0 or the errno that stopped it.
@@ -55,7 +57,8 @@ int syncFolder(const fs::path& path) {
 
 void writeFileDurably(const fs::path& path, std::string_view bytes, const fs::path& shownAs) {
     const fs::path& named = shownAs.empty() ? path : shownAs;
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    const int fd =
+        ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0666);
     if (fd < 0) fail("write", named, errno);
     int error = writeAll(fd, bytes);
     if (error == 0 && ::fsync(fd) != 0) error = errno;
@@ -83,9 +86,40 @@ void replaceFileDurably(const fs::path& path, std::string_view bytes) {
     renameDurably(temporary, path);
 }
 
+int createNoFollow(const fs::path& path, bool append) {
+    // Not truncated before the check: a FIFO or device keeps its contents.
+    const int fd =
+        ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
+    if (fd < 0) fail("write", path, errno);
+    struct stat st {};
+    int error = ::fstat(fd, &st) != 0 ? errno : !S_ISREG(st.st_mode) ? EINVAL : 0;
+    if (error == 0 && !append && ::ftruncate(fd, 0) != 0) error = errno;
+    if (error == 0 && ::fcntl(fd, F_SETFL, append ? O_APPEND : 0) != 0) error = errno;
+    if (error != 0) {
+        ::close(fd);
+        if (error == EINVAL)
+            throw std::runtime_error(
+                fmt::format("cannot write '{}': not a regular file", path.string()));
+        fail("write", path, error);
+    }
+    return fd;
+}
+
+int openNoFollow(const fs::path& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) return -1;
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || ::fcntl(fd, F_SETFL, 0) != 0) {
+        ::close(fd);
+        return -1;
+    }
+    return fd;
+}
+
 DurableAppendFile::DurableAppendFile(fs::path path, bool truncate) : path_(std::move(path)) {
     fd_ = ::open(path_.c_str(),
-                 O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (truncate ? O_TRUNC : 0), 0666);
+                 O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOFOLLOW | (truncate ? O_TRUNC : 0),
+                 0666);
     if (fd_ < 0) fail("write", path_, errno);
 }
 

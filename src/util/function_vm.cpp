@@ -14,6 +14,16 @@ constexpr double kMaxLoopSteps = 1e7;
 bool truth(double v) {
     return v != 0.0;
 }
+// The loop counts up by 1 until it passes the end: bounds that are not
+// finite, or so large that adding 1 changes nothing, would never end it;
+// nor is a loop of billions of steps meant.
+void checkLoopBounds(double start, double end) {
+    if (!(end < start) &&
+        !(std::isfinite(start) && std::fabs(start) < 4.5e15 && end - start <= kMaxLoopSteps))
+        throw std::runtime_error("sum/prod loop from " + std::to_string(start) + " to " +
+                                 std::to_string(end) + ": more than " +
+                                 std::to_string(static_cast<long>(kMaxLoopSteps)) + " steps");
+}
 }  // namespace
 
 double CompiledFunction::eval(const double* args) const {
@@ -130,17 +140,7 @@ double CompiledFunction::eval(const double* args) const {
             case FnOp::LoopInit:
                 slots[in.a + 1] = stack[--sp];
                 slots[in.a] = stack[--sp];
-                // The loop counts up by 1 until it passes the end: bounds
-                // that are not finite, or so large that adding 1 changes
-                // nothing, would never end it; nor is a loop of billions of
-                // steps meant.
-                if (!(slots[in.a + 1] < slots[in.a]) &&
-                    !(std::isfinite(slots[in.a]) && std::fabs(slots[in.a]) < 4.5e15 &&
-                      slots[in.a + 1] - slots[in.a] <= kMaxLoopSteps))
-                    throw std::runtime_error(
-                        "sum/prod loop from " + std::to_string(slots[in.a]) + " to " +
-                        std::to_string(slots[in.a + 1]) + ": more than " +
-                        std::to_string(static_cast<long>(kMaxLoopSteps)) + " steps");
+                checkLoopBounds(slots[in.a], slots[in.a + 1]);
                 stack[sp++] = in.b;
                 break;
             case FnOp::LoopTest:

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace frameray {
 
@@ -36,5 +38,24 @@ constexpr std::array<std::uint16_t, 8192> makeLatticeHash() {
 }  // namespace detail
 
 inline constexpr std::array<std::uint16_t, 8192> kLatticeHash = detail::makeLatticeHash();
+
+// A coordinate truncated to a lattice index as x86 truncation does it: a
+// value beyond int's range, or NaN, gives INT_MIN (what POV-Ray's and our
+// own builds computed; the plain C++ conversion is undefined there, and a
+// far fog or a huge scale reaches it).
+constexpr int latticeTruncate(double v) {
+    return v > -2147483649.0 && v < 2147483648.0 ? static_cast<int>(v)
+                                                 : std::numeric_limits<int>::min();
+}
+
+// floor(v) as a cell index for patterns that visit neighbouring cells
+// (index +- 2): kept within +-2^30 so those sums cannot overflow; NaN gives
+// 0. Far out there, every cell is as good as another.
+inline int latticeFloor(double v) {
+    constexpr double kLimit = 1073741824.0;  // 2^30
+    if (!(v > -kLimit)) return v != v ? 0 : -static_cast<int>(kLimit);
+    if (!(v < kLimit)) return static_cast<int>(kLimit);
+    return static_cast<int>(std::floor(v));
+}
 
 }  // namespace frameray

@@ -240,7 +240,9 @@ namespace {
 // buffer (no allocation in the per-ray path).
 struct FixedPolynomial {
     int degree = -1;  // -1: the zero polynomial
-    std::array<double, kMaxPolynomialDegree + 1> c{};
+    // Only c[0] .. c[degree] are meaningful: the rest is never cleared (a
+    // Sturm sequence is built for every ray that reaches a sturm shape).
+    std::array<double, kMaxPolynomialDegree + 1> c;
 
     double at(double x) const {
         double v = 0;
@@ -267,8 +269,9 @@ constexpr double kRemainderNoise = 64 * DBL_EPSILON;
 
 // r = -(a mod b), the next member of a Sturm sequence.
 void negatedRemainder(const FixedPolynomial& a, const FixedPolynomial& b, FixedPolynomial& r) {
-    r = a;
-    std::array<double, kMaxPolynomialDegree + 1> magnitude{};
+    r.degree = a.degree;
+    std::copy_n(a.c.begin(), a.degree + 1, r.c.begin());
+    std::array<double, kMaxPolynomialDegree + 1> magnitude;
     for (int i = 0; i <= a.degree; ++i) magnitude[i] = std::fabs(a.c[i]);
     const double lead = b.c[b.degree];
     for (int k = a.degree - b.degree; k >= 0; --k) {

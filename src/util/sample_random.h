@@ -7,27 +7,22 @@
 #include <bit>
 #include <cstdint>
 
+#include "util/hash.h"
+
 namespace frameray {
 
 class SampleRandom {
   public:
     // Seeds from an image-plane position (and an optional stream number).
     SampleRandom(double x, double y, std::uint64_t stream = 0)
-        : state_(mix(std::bit_cast<std::uint64_t>(x) ^
-                     mix(std::bit_cast<std::uint64_t>(y) + stream))) {}
+        : state_(splitmix64(std::bit_cast<std::uint64_t>(x) ^
+                            splitmix64(std::bit_cast<std::uint64_t>(y) + stream))) {}
 
     // Uniform in [0, 1).
-    double next() { return static_cast<double>(nextBits() >> 11) * 0x1.0p-53; }
+    double next() { return unitFromHash(nextBits()); }
 
   private:
-    // splitmix64: a well-mixed 64-bit sequence from a counter.
-    static std::uint64_t mix(std::uint64_t z) {
-        z += 0x9e3779b97f4a7c15ULL;
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
-    std::uint64_t nextBits() { return mix(state_ += 0x9e3779b97f4a7c15ULL); }
+    std::uint64_t nextBits() { return splitmix64(state_ += 0x9e3779b97f4a7c15ULL); }
 
     std::uint64_t state_;
 };

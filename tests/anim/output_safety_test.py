@@ -11,8 +11,9 @@ resumed run (+C) once the cause is gone must give frames byte-identical to
 an uninterrupted run.
 
 1. A full disk, simulated portably with a file-size limit (RLIMIT_FSIZE,
-   SIGXFSZ ignored, so a write past it fails with EFBIG as a write to a
-   full disk fails with ENOSPC).
+   as `ulimit -f` sets it, SIGXFSZ left at its default: frameray ignores
+   the signal itself, so a write past the limit fails with EFBIG as a
+   write to a full disk fails with ENOSPC, instead of killing it).
    Frames 1-3 fit under the limit and must be kept.
 2. The output folder removed by a Pre_Frame_Command before a later frame.
 3. The output folder made read-only before a later frame (only when not
@@ -20,10 +21,11 @@ an uninterrupted run.
 """
 import os
 import resource
-import shutil
 import signal
 import subprocess
 import sys
+
+from sequence_fixture import fail, make_sequence
 
 SCENE = """#version 3.7;
 global_settings { assumed_gamma 1 }
@@ -43,30 +45,16 @@ sphere { <-2 + 4 * clock, 1, 0>, 0.8 pigment { rgb <1, 0.3, 0.2> } finish { phon
 FRAMES = 8
 
 
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
-
-
 def main():
     if len(sys.argv) != 3:
         print(__doc__)
         return 2
     frameray = os.path.abspath(sys.argv[1])
     work = os.path.abspath(sys.argv[2])
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    scene = os.path.join(work, "ball.pov")
-    with open(scene, "w") as f:
-        f.write(SCENE)
-    ini = os.path.join(work, "ball.ini")
-    with open(ini, "w") as f:
-        f.write("Input_File_Name=%s\nWidth=160\nHeight=120\nInitial_Frame=1\nFinal_Frame=%d\n"
-                "Display=off\nVerbose=off\n" % (scene, FRAMES))
-    env = dict(os.environ)
-    env["POVINI"] = os.path.join(work, "no-startup.ini")  # keep the user's povray.ini out
-    with open(env["POVINI"], "w") as f:
-        f.write("; empty\n")
+    ini, env = make_sequence(
+        work, "ball", SCENE,
+        "Width=160\nHeight=120\nInitial_Frame=1\nFinal_Frame=%d\n"
+        "Display=off\nVerbose=off\n" % FRAMES)
 
     def run(outdir, extra, preexec=None):
         cmd = [frameray, ini, "+O%s/" % outdir] + extra
@@ -100,9 +88,11 @@ def main():
         journal = {}
         jpath = os.path.join(outdir, ".ball.frameray-journal")
         if os.path.exists(jpath):
+            # frame <number> <clock> <size> <hash> <inputs> <file name>
             for line in open(jpath).read().splitlines()[1:]:
                 parts = line.split()
-                journal[parts[5]] = int(parts[3])
+                if parts and parts[0] == "frame":
+                    journal[parts[6]] = int(parts[3])
         for n in os.listdir(outdir):
             if n.endswith(".tmp"):
                 fail("%s: temporary file %s left behind" % (name, n))
@@ -122,7 +112,7 @@ def main():
 
     # 1. Full disk (file-size limit).
     def limit_file_size():
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        signal.signal(signal.SIGXFSZ, signal.SIG_DFL)
         resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
 
     full = os.path.join(work, "full")

@@ -19,6 +19,8 @@ import shutil
 import signal
 import subprocess
 import sys
+
+from sequence_fixture import fail, make_sequence
 import time
 
 SCENE = """#version 3.7;
@@ -34,11 +36,6 @@ box { <-0.5, 0, 1>, <0.5, 1 + clock, 2> pigment { rgb <0.2, 0.4, 1> } }
 FRAMES = 20
 
 
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
-
-
 def main():
     if len(sys.argv) < 3:
         print(__doc__)
@@ -46,19 +43,10 @@ def main():
     frameray = os.path.abspath(sys.argv[1])
     work = os.path.abspath(sys.argv[2])
     kills = int(sys.argv[3]) if len(sys.argv) > 3 else 24
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    scene = os.path.join(work, "orbit.pov")
-    with open(scene, "w") as f:
-        f.write(SCENE)
-    ini = os.path.join(work, "orbit.ini")
-    with open(ini, "w") as f:
-        f.write("Input_File_Name=%s\nWidth=320\nHeight=240\nInitial_Frame=1\nFinal_Frame=%d\n"
-                "Verbose=off\nDebug_Console=off\n" % (scene, FRAMES))
-    env = dict(os.environ)
-    env["POVINI"] = os.path.join(work, "no-startup.ini")  # keep the user's povray.ini out
-    with open(env["POVINI"], "w") as f:
-        f.write("; empty\n")
+    ini, env = make_sequence(
+        work, "orbit", SCENE,
+        "Width=320\nHeight=240\nInitial_Frame=1\nFinal_Frame=%d\n"
+        "Verbose=off\nDebug_Console=off\n" % FRAMES)
 
     def run(outdir, extra, check=True):
         cmd = [frameray, ini, "+O%s/" % outdir] + extra

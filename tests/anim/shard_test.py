@@ -22,12 +22,9 @@ import shutil
 import signal
 import subprocess
 import sys
+
+from sequence_fixture import fail
 import time
-
-
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 
 
 def pngs(folder):

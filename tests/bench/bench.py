@@ -54,6 +54,7 @@ class Run:
 class Result:
     entry: Entry
     runs: dict = field(default_factory=lambda: {"frameray": [], "povray": []})
+    match: float = None  # frameray's last image against povray's (--match)
 
 
 def parse_args(argv):
@@ -73,6 +74,9 @@ def parse_args(argv):
     parser.add_argument("--povray", default=shutil.which("povray") or "povray",
                         help="reference povray binary (default: povray on PATH)")
     parser.add_argument("--out", type=Path, help="also write the markdown report here")
+    parser.add_argument("--match", action="store_true",
+                        help="also compare frameray's image with povray's (the conformance "
+                             "metric: fraction of pixels within 4/255) and report it")
     parser.add_argument("entries", nargs="+", metavar="ENTRY",
                         help="suite file, or scene .pov / .ini file")
     args = parser.parse_args(argv)
@@ -179,11 +183,32 @@ def benchmark(entry, args, scratch):
             command = commands[renderer] + [f"+O{out_dir / 'render.png'}"]
             run = run_once(command, cwd, scratch / "stderr.txt")
             result.runs[renderer].append(run)
+            image = out_dir / "render.png"
+            if args.match and run.exit_code == 0 and image.is_file():
+                shutil.copyfile(image, scratch / f"{renderer}.png")
             state = "ok" if run.exit_code == 0 else f"exit {run.exit_code}"
             print(f"  {renderer:8} rep {rep + 1}/{args.reps}: {run.wall:7.3f} s wall, "
                   f"{run.cpu:7.3f} s CPU, {run.peak_mib:7.1f} MiB  {state}",
                   file=sys.stderr)
+    if args.match:
+        result.match = image_match(scratch / "frameray.png", scratch / "povray.png")
+        for renderer in ("frameray", "povray"):
+            (scratch / f"{renderer}.png").unlink(missing_ok=True)
     return result
+
+
+def image_match(test, reference):
+    """The conformance metric of `test` against `reference`, None when an
+    image is missing or cannot be compared."""
+    if not (test.is_file() and reference.is_file()):
+        return None
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import png_compare
+    try:
+        return png_compare.compare_files(str(test), str(reference)).match
+    except Exception as error:  # noqa: BLE001 - reported, never fatal
+        print(f"bench: cannot compare {test} with {reference}: {error}", file=sys.stderr)
+        return None
 
 
 def summarize(runs):
@@ -253,13 +278,15 @@ def report(results, args):
     ]
     if args.extra:
         lines.append(f"- extra switches: `{' '.join(args.extra)}`")
-    lines += [
-        "",
-        "| entry | frameray wall s | frameray CPU s | frameray peak MiB "
-        "| povray wall s | povray CPU s | povray peak MiB | wall ratio | CPU ratio |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|",
-    ]
+    header = ("| entry | frameray wall s | frameray CPU s | frameray peak MiB "
+              "| povray wall s | povray CPU s | povray peak MiB | wall ratio | CPU ratio |")
+    rule = "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+    if args.match:
+        header += " match |"
+        rule += "---:|"
+    lines += ["", header, rule]
     notes = []
+    cpu_ratios, wall_ratios = [], []
     for result in results:
         row = [f"`{cell_text(result.entry.label)}`"]
         medians = {}
@@ -276,10 +303,26 @@ def report(results, args):
         f, p = medians["frameray"], medians["povray"]
         if f and p:
             row += [ratio(f[0], p[0]), ratio(f[1], p[1])]
+            if p[0] > 0 and p[1] > 0 and f[0] > 0 and f[1] > 0:
+                wall_ratios.append(f[0] / p[0])
+                cpu_ratios.append(f[1] / p[1])
         else:
             row += ["n/a", "n/a"]
+        if args.match:
+            row.append("n/a" if result.match is None else f"{result.match:.4f}")
         lines.append("| " + " | ".join(row) + " |")
     lines += ["", "Ratios are frameray / povray (below 1 means frameray is faster)."]
+    if len(cpu_ratios) > 1:
+        lines += ["", f"Geometric mean over {len(cpu_ratios)} entries: wall ratio "
+                  f"{statistics.geometric_mean(wall_ratios):.2f}, CPU ratio "
+                  f"{statistics.geometric_mean(cpu_ratios):.2f}; highest CPU ratio "
+                  f"{max(cpu_ratios):.2f}."]
+    if args.match:
+        matches = [r.match for r in results if r.match is not None]
+        if matches:
+            lines += [f"Match (frameray's image against povray's, fraction of pixels within "
+                      f"4/255): lowest {min(matches):.4f}; {sum(m >= 0.99 for m in matches)} of "
+                      f"{len(matches)} compared at 0.99 or above."]
     if notes:
         lines += ["", "Failed runs (medians above use the successful runs only):", ""] + notes
     return "\n".join(lines) + "\n"

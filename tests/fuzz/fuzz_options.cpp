@@ -1,7 +1,8 @@
 // libFuzzer target: the INI-file and command-line option parser. The input
 // is split at its first NUL byte: before it, a line of switches and
 // Key=Value pairs (split as POVRAYOPT is); after it, the text of an INI
-// file. Either may be rejected with OptionError; nothing else may happen.
+// file, read both as a trusted INI file and as one named on the command
+// line. Either may be rejected with OptionError; nothing else may happen.
 #include <unistd.h>
 
 #include <cstddef>
@@ -54,6 +55,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         (void)applyIniFile(options, scratchIni(), "", "fuzz");
         (void)createIniText(options);
         (void)firstUnsupported(options);
+    } catch (const OptionError&) {
+    }
+    // The same INI file named on the command line: untrusted, so every
+    // path it names is checked (options/ini_trust.h).
+    try {
+        RenderOptions untrusted;
+        (void)applyArguments(untrusted, {scratchIni().string()});
     } catch (const OptionError&) {
     }
     return 0;

@@ -13,32 +13,19 @@
 #include <exception>
 #include <string>
 
+#include "fuzz_parse_budget.h"
 #include "image/frame_encoding.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/interpreter.h"
 
-namespace {
-
-struct DiscardMessages : frameray::sdl::MessageSink {
-    void message(frameray::sdl::Stream, const std::string&) override {}
-};
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace frameray;
     static sdl::TokenCache cache;
-    sdl::FrameContext frame;
-    frame.libraryPaths = {"/usr/share/povray-3.7/include"};
-    frame.refuseFileWrites = "the fuzzer does not write files";
-    frame.limits.parseIterations = 5'000;
-    frame.limits.arrayElements = size_t(1) << 16;
-    frame.limits.totalArrayElements = size_t(1) << 20;
-    frame.limits.stringLength = size_t(1) << 20;
+    sdl::FrameContext frame = fuzz::fuzzFrame();
     frame.imageWidth = 16;
     frame.imageHeight = 12;
-    DiscardMessages messages;
+    fuzz::DiscardMessages messages;
     try {
         sdl::Interpreter interpreter(frame, cache, messages);
         const std::string text(reinterpret_cast<const char*>(data), size);
@@ -51,9 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const render::FrameImage frameImage = render::renderFrame(world, settings, stats);
         const auto gamma = image::GammaEncoding::forScene(
             scene.globals.assumedGammaSet, scene.globals.assumedGamma, scene.languageVersion, 0);
-        const image::EncodedImage encoded =
-            image::encodeFrame(frameImage.width, frameImage.height, frameImage.rgb, frameImage.alpha,
-                               gamma, 8, {0, 0, frameImage.width, frameImage.height});
+        const image::EncodedImage encoded = image::encodeFrame(
+            frameImage.width, frameImage.height, frameImage.rgb, frameImage.alpha, gamma, 8,
+            {0, 0, frameImage.width, frameImage.height});
         (void)encoded;
     } catch (const std::exception& e) {
         (void)e.what();

@@ -133,6 +133,55 @@ fi
 run_plain created_folder "+O$work/made/here/" || { echo "restrictions: created_folder failed" >&2; failures=$((failures + 1)); }
 check_file yes "$work/made/here/created_folder.png" created_folder
 
+# Symbolic links planted where frameray writes (a scene folder unpacked
+# from a stranger's archive) are replaced or refused, never written
+# through: the frame log, the journal, a stream file, Create_Ini.
+echo 'precious' > "$work/outside/precious.txt"
+mkdir -p "$work/linked"
+ln -s "$work/outside/precious.txt" "$work/linked/links.log"
+ln -s "$work/outside/precious.txt" "$work/linked/.links.frameray-journal"
+ln -s "$work/outside/precious.txt" "$work/scenes/debug.out"
+ln -s "$work/outside/precious.txt" "$work/scenes/created.ini"
+printf '#version 3.7;\n#debug "scene text"\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$work/scenes/links.pov"
+(cd "$work/scenes" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+    "$frameray" links.pov +W8 +H8 -D -GR -GS "+O$work/linked/" > "$work/stdout" 2> "$work/stderr")
+if [ "$(cat "$work/outside/precious.txt")" != precious ] || [ -L "$work/linked/links.log" ] ||
+    [ -L "$work/linked/.links.frameray-journal" ]; then
+    echo "restrictions: links: the log or journal was written through a link" >&2
+    cat "$work/stderr" >&2
+    failures=$((failures + 1))
+else
+    echo "restrictions: links: log and journal replace the links"
+fi
+for option in Debug_File=on Create_Ini=created.ini; do
+    (cd "$work/scenes" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+        "$frameray" links.pov +W8 +H8 -D -GR -GS "+O$work/linked/" "$option" > "$work/stdout" 2> "$work/stderr")
+    status=$?
+    if [ "$(cat "$work/outside/precious.txt")" != precious ] ||
+        { [ $status -ne 0 ] && ! grep -q "symbolic link" "$work/stderr"; }; then
+        echo "restrictions: links: $option wrote through a link (status $status)" >&2
+        cat "$work/stderr" >&2
+        failures=$((failures + 1))
+    else
+        echo "restrictions: links: $option does not follow the link"
+    fi
+done
+
+# Shell commands: %o and %s are quoted for /bin/sh, so an output name
+# holding $(...) is a name, not a command.
+mkdir -p "$work/quoting"
+printf '#version 3.7;\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$work/quoting/q.pov"
+(cd "$work/quoting" && env -u POVINI -u POVRAYOPT -u XDG_CONFIG_HOME HOME="$work/home" \
+    "$frameray" q.pov +W8 +H8 -D -GR -GS 'Output_File_Name=y$(touch injected).png' \
+    Allow_Shell_Commands=on 'Post_Frame_Command=ls -l %o > listed.txt' > "$work/stdout" 2> "$work/stderr")
+if [ -e "$work/quoting/injected" ] || ! grep -q 'y\$(touch injected).png' "$work/quoting/listed.txt"; then
+    echo "restrictions: quoting: the output name ran as a command" >&2
+    cat "$work/stderr" >&2
+    failures=$((failures + 1))
+else
+    echo "restrictions: quoting: %o is quoted"
+fi
+
 if [ $failures -ne 0 ]; then
     echo "restrictions: $failures check(s) failed" >&2
     exit 1

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "anim/hooks.h"
 #include "anim/journal.h"
@@ -51,6 +53,38 @@ TEST(Hooks, RunsThroughTheShell) {
     fs::remove(flag);
     EXPECT_EQ(runHook({"exit 3", "f"}, v), HookAction::Fatal);
     EXPECT_EQ(runHook({"exit 0", "-s"}, v), HookAction::SkipFrame);
+}
+
+// %o and %s are names an INI file beside the scene may choose: the shell
+// must read them back literally wherever the command puts them (outside
+// quotes, in '...' or in "..."), never run what they contain.
+TEST(Hooks, SubstitutionsAreQuotedForTheShell) {
+    const fs::path dir = fs::temp_directory_path() / "frameray_hook_quoting";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string ran = (dir / "ran").string();
+    HookValues v;
+    v.output = "y$(touch " + ran + ")`touch " + ran + "` 'a' \"b\" \\c *;.png";
+    v.scene = "s;touch " + ran;
+    const fs::path out = dir / "out";
+    for (const std::string& command : {std::string("printf '%%s|%%s' %o %s > "),
+                                       std::string("printf '%%s|%%s' \"%o\" \"%s\" > "),
+                                       std::string("printf '%%s|%%s' '%o' '%s' > "),
+                                       std::string("printf '%%s|%%s' x%o \"y\"%s > ")}) {
+        fs::remove(out);
+        EXPECT_EQ(runHook({command + out.string(), "f"}, v), HookAction::Continue) << command;
+        std::ifstream in(out);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const bool prefixed = command.find("x%o") != std::string::npos;
+        EXPECT_EQ(text, (prefixed ? "x" : "") + v.output + "|" + (prefixed ? "y" : "") + v.scene)
+            << command;
+        EXPECT_FALSE(fs::exists(ran)) << command;
+    }
+    // Plain names stay as they are.
+    v.output = "frames/demo-07.png";
+    EXPECT_EQ(substituteCommand("cp %o '%o' \"%o\"", v),
+              "cp frames/demo-07.png 'frames/demo-07.png' \"frames/demo-07.png\"");
+    fs::remove_all(dir);
 }
 
 TEST(Journal, VerifiesSizeAndHash) {

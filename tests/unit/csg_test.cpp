@@ -8,6 +8,7 @@
 #include "parse_support.h"
 #include "render/world.h"
 #include "scene/flat_shapes.h"
+#include "scene/quadric.h"
 #include "scene/revolved_shapes.h"
 #include "sdl/interpreter.h"
 
@@ -163,6 +164,51 @@ TEST(Csg, ClippedByKeepsOnlyCrossingsInsideTheClip) {
     const Bounds b = s->surfaceBounds();
     EXPECT_DOUBLE_EQ(b.lo.x, -2);
     EXPECT_DOUBLE_EQ(b.hi.x, 1e-10);
+}
+
+// An infinite quadric cylinder (x^2 + z^2 = 1, as shapes.inc's
+// Cylinder_Y) or hyperboloid (x^2 - y^2 + z^2 = 1) cut by two planes: the
+// intersection's box is finite (so it joins the BVH), and holds every
+// crossing. Scaled and moved, as chess2's pieces are.
+TEST(Csg, QuadricBetweenPlanesHasFiniteBounds) {
+    auto cylinder =
+        primitive(std::make_shared<Quadric>(Quadric::Coefficients{1, 0, 1, 0, 0, 0, 0, 0, 0, -1}));
+    auto hyperboloid =
+        primitive(std::make_shared<Quadric>(Quadric::Coefficients{1, -1, 1, 0, 0, 0, 0, 0, 0, -1}));
+    for (const auto& q : {cylinder, hyperboloid}) {
+        EXPECT_FALSE(q->insideBounds().isFinite());
+        auto shape =
+            csgOf(CsgOp::Intersection, {primitive(std::make_shared<Plane>(Vec3{0, 1, 0}, 3)), q,
+                                        primitive(std::make_shared<Plane>(Vec3{0, -1, 0}, -1))});
+        shape->transformBy(Transform::scale({2, 1, 2}).then(Transform::translate({10, 0, -5})));
+        const Bounds b = shape->surfaceBounds();
+        ASSERT_TRUE(b.isFinite());
+        EXPECT_TRUE(shape->insideBounds().isFinite());
+        // Radius 2 (cylinder) or 2 sqrt(1 + 3^2) (hyperboloid at y = 3).
+        const double r = q == cylinder ? 2 : 2 * std::sqrt(10.0);
+        EXPECT_NEAR(b.lo.x, 10 - r, 1e-6);
+        EXPECT_NEAR(b.hi.x, 10 + r, 1e-6);
+        EXPECT_NEAR(b.lo.z, -5 - r, 1e-6);
+        EXPECT_NEAR(b.hi.z, -5 + r, 1e-6);
+        EXPECT_NEAR(b.lo.y, 1, 1e-6);
+        EXPECT_NEAR(b.hi.y, 3, 1e-6);
+        // Every crossing of rays through the piece lies in the box.
+        for (double y = 1.1; y < 3; y += 0.3)
+            for (const auto& h : allHits(*shape, {{-20, y, -5}, {1, 0, 0}})) {
+                const Vec3 p = Vec3(-20, y, -5) + Vec3(1, 0, 0) * h.t;
+                EXPECT_GE(p.x, b.lo.x);
+                EXPECT_LE(p.x, b.hi.x);
+            }
+    }
+    // A difference keeps its first operand's bound; an inverted cylinder
+    // bounds nothing.
+    auto inverted =
+        primitive(std::make_shared<Quadric>(Quadric::Coefficients{1, 0, 1, 0, 0, 0, 0, 0, 0, -1}));
+    inverted->inverse = true;
+    auto open =
+        csgOf(CsgOp::Intersection, {primitive(std::make_shared<Plane>(Vec3{0, 1, 0}, 3)), inverted,
+                                    primitive(std::make_shared<Plane>(Vec3{0, -1, 0}, -1))});
+    EXPECT_FALSE(open->surfaceBounds().isFinite());
 }
 
 TEST(Csg, BoundedBySkipsRaysThatMissTheBound) {

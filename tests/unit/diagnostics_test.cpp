@@ -1,9 +1,12 @@
 // Restrictions on scene files (sdl/file_access.h), spelling suggestions
 // (util/spelling.h) and the include/macro chain of scene errors.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "anim/hooks.h"
 #include "options/options.h"
@@ -80,6 +83,85 @@ TEST(FileAccess, LinksOutOfTheSceneFolderAreFollowed) {
     // library (installed fonts) are taken by name.
     EXPECT_NE(p.checkRead(t.root / "scene/link.txt", ""), "");
     EXPECT_EQ(p.checkRead(t.root / "lib/font.ttf", ""), "");
+}
+
+// The descriptor itself is checked, not only the name: a scene-folder file
+// swapped for a link to a secret between the check and the open (a race a
+// scene's author can run from outside) must never be read through, and a
+// link planted under a name a scene writes is not followed.
+TEST(FileAccess, OpenedDescriptorsAreChecked) {
+    TempTree t;
+    std::ofstream(t.root / "other/secret.txt") << "secret";
+    const auto p = policyFor(t);
+    const fs::path data = t.root / "scene/data.txt";
+    std::atomic<bool> stop{false};
+    std::thread swapper([&] {
+        for (int i = 0; !stop; ++i) {
+            const fs::path tmp = t.root / "scene/swap.tmp";
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            if (i % 2) {
+                fs::create_symlink(t.root / "other/secret.txt", tmp, ec);
+            } else {
+                std::ofstream(tmp) << "good";
+            }
+            fs::rename(tmp, data, ec);
+        }
+    });
+    int opened = 0, leaked = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const sdl::OpenedFile f = p.openForReading(data, "data.txt");
+        if (!f.ok()) continue;
+        ++opened;
+        char buf[16] = {};
+        if (::read(f.fd(), buf, sizeof buf - 1) > 0 && std::string(buf) == "secret") ++leaked;
+    }
+    stop = true;
+    swapper.join();
+    EXPECT_EQ(leaked, 0) << "of " << opened << " opened";
+
+    // Writing: a link under the name is refused, its target untouched,
+    // whether it leads out of the allowed folders or not (O_NOFOLLOW is
+    // what stops a link swapped in after the check).
+    fs::create_symlink(t.root / "other/secret.txt", t.root / "scene/state.txt");
+    const sdl::OpenedFile w = p.openForWriting(t.root / "scene/state.txt", false, "state.txt");
+    EXPECT_FALSE(w.ok());
+    EXPECT_NE(w.error().find("is not allowed"), std::string::npos) << w.error();
+    std::ifstream in(t.root / "other/secret.txt");
+    std::string text;
+    in >> text;
+    EXPECT_EQ(text, "secret");
+    std::ofstream(t.root / "scene/kept.txt") << "kept";
+    fs::create_symlink(t.root / "scene/kept.txt", t.root / "scene/inside.txt");
+    const sdl::OpenedFile v = p.openForWriting(t.root / "scene/inside.txt", false, "inside.txt");
+    EXPECT_FALSE(v.ok());
+    EXPECT_EQ(v.error(), "cannot open 'inside.txt' for writing: it is a symbolic link");
+    EXPECT_EQ(fs::file_size(t.root / "scene/kept.txt"), 4u);
+    // A plain file is opened, and truncated only when not appending.
+    std::ofstream(t.root / "scene/log.txt") << "abc";
+    EXPECT_TRUE(p.openForWriting(t.root / "scene/log.txt", true, "log.txt").ok());
+    EXPECT_EQ(fs::file_size(t.root / "scene/log.txt"), 3u);
+    EXPECT_TRUE(p.openForWriting(t.root / "scene/log.txt", false, "log.txt").ok());
+    EXPECT_EQ(fs::file_size(t.root / "scene/log.txt"), 0u);
+    // A folder or a pipe is no file.
+    EXPECT_FALSE(p.openForReading(t.root / "scene/sub", "sub").ok());
+}
+
+// #fopen under a name that holds an open file is an error, as in povray;
+// files held by no identifier any more are closed at once.
+TEST(FileAccess, FopenIdentifiersAreNotReused) {
+    TempTree t;
+    const std::string a = (t.root / "scene/a.txt").string();
+    const std::string error =
+        test_support::parseErrorOf("#fopen F \"" + a + "\" write\n#fopen F \"" + a + "\" write\n");
+    EXPECT_NE(error.find("t.pov:2:8: error: 'F' is an open file identifier"), std::string::npos)
+        << error;
+    // 3000 files opened in a macro's local scope: each closes when the
+    // macro returns (the process allows 1024 open files by default).
+    const std::string many =
+        test_support::parseErrorOf("#macro W(I) #local G = 0; #fopen G \"" + a +
+                                   "\" append #write (G, I) #end\n#for (I, 1, 3000) W(I) #end\n");
+    EXPECT_EQ(many, "");
 }
 
 TEST(FileAccess, InterpreterRefusesAtTheDirective) {

@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <numbers>
+
 #include "sdl/interpreter.h"
 
 using namespace frameray;
@@ -149,4 +153,50 @@ TEST(Scene, ObjectsCameraLights) {
     EXPECT_NEAR(length(scene.camera.direction), 0.5 * 1.33 / std::tan(M_PI / 6), 1e-12);
     EXPECT_NEAR(scene.objects[0]->transform.point({0, 0, 0}).x, 1, 1e-12);
     EXPECT_EQ(scene.objects[0]->texture->pigment->solidColor().rgb.r, 1);
+}
+
+// povray 3.7's numeric edge cases (measured): division by zero warns once
+// per component and gives +inf whatever the sign; acos and asin outside
+// -1..1 warn and take the nearest end; numbers past double's range read as
+// inf or 0.
+TEST(Expressions, NumericEdgeCasesAsPovray) {
+    struct Warnings : MessageSink {
+        std::string text;
+        void message(Stream s, const std::string& t) override {
+            if (s == Stream::Warning) text += t + "\n";
+        }
+    };
+    FrameContext ctx;
+    TokenCache cache;
+    Warnings sink;
+    Interpreter interp{ctx, cache, sink};
+    interp.parseText("t.pov",
+                     "#version 3.7;\n#declare A = 1/0;\n#declare B = -1/0;\n#declare C = 0/0;\n"
+                     "#declare D = <1,2,3>/0;\n#declare E = acos(2);\n#declare F = asin(-1.5);\n"
+                     "#declare G = 1e400;\n#declare H = -1e400;\n#declare I = 1e-400;\n"
+                     "#declare J = 1/<0,1,1>;\n");
+    const auto f = [&](const std::string& n) { return std::get<double>(*interp.lookup(n)); };
+    EXPECT_EQ(f("A"), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(f("B"), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(f("C"), std::numeric_limits<double>::infinity());
+    const VectorValue d = std::get<VectorValue>(*interp.lookup("D"));
+    EXPECT_TRUE(std::isinf(d.v[0]) && std::isinf(d.v[1]) && std::isinf(d.v[2]));
+    EXPECT_DOUBLE_EQ(f("E"), 0.0);
+    EXPECT_DOUBLE_EQ(f("F"), -std::numbers::pi / 2);
+    EXPECT_EQ(f("G"), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(f("H"), -std::numeric_limits<double>::infinity());
+    EXPECT_EQ(f("I"), 0.0);
+    // Lines 2-4 once, line 5 three times, line 11 once; acos and asin once each.
+    size_t divides = 0;
+    for (size_t at = sink.text.find("divide by zero"); at != std::string::npos;
+         at = sink.text.find("divide by zero", at + 1))
+        ++divides;
+    EXPECT_EQ(divides, 7u) << sink.text;
+    EXPECT_NE(
+        sink.text.find("t.pov:6:14: warning: domain error in acos: 2 is outside -1 to 1; using 1"),
+        std::string::npos)
+        << sink.text;
+    EXPECT_NE(sink.text.find("domain error in asin"), std::string::npos) << sink.text;
+    EXPECT_NE(sink.text.find("t.pov:2:15: warning: divide by zero"), std::string::npos)
+        << sink.text;
 }

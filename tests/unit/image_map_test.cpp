@@ -90,15 +90,28 @@ TEST(GifDecoder, RejectsOtherFiles) {
     EXPECT_THROW(image::decodeGif({'P', '6', '\n'}), std::runtime_error);
 }
 
-// A 2 x 2 map: top row red, green; bottom row blue, white.
+// A float image of `channels` channels holding `values` row by row.
+std::shared_ptr<util::PixelBuffer> floatImage(int w, int h, int channels,
+                                              const std::vector<float>& values) {
+    auto px = std::make_shared<util::PixelBuffer>(w, h, channels, util::PixelBuffer::Sample::F32);
+    std::copy(values.begin(), values.end(), reinterpret_cast<float*>(px->data()));
+    return px;
+}
+
+// A 2 x 2 map: top row red, green; bottom row blue, white (as colours);
+// grey 0, 0.25, 0.5, 1 (as scalars).
 scene::ImageMap twoByTwo(scene::ImageMapping mapping, bool once,
-                         scene::ImageInterpolation interp = scene::ImageInterpolation::None) {
-    auto t = std::make_shared<scene::ImageTexels>();
-    t->width = t->height = 2;
-    t->colors = {Color(RGB(1, 0, 0)), Color(RGB(0, 1, 0)), Color(RGB(0, 0, 1)),
-                 Color(RGB(1, 1, 1))};
-    t->values = {0.0f, 0.25f, 0.5f, 1.0f};
-    return scene::ImageMap(t, mapping, once, interp);
+                         scene::ImageInterpolation interp = scene::ImageInterpolation::None,
+                         bool scalars = false) {
+    if (scalars)
+        return scene::ImageMap(
+            std::make_shared<scene::ImageTexels>(floatImage(2, 2, 1, {0.0f, 0.25f, 0.5f, 1.0f}),
+                                                 scene::ImageTexels::Scalar::Grey),
+            mapping, once, interp);
+    const auto px = floatImage(2, 2, 3, {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1});
+    return scene::ImageMap(
+        std::make_shared<scene::ImageTexels>(px, scene::ImageTexels::ColorDecoding{}), mapping,
+        once, interp);
 }
 
 TEST(ImageMap, PlanarPutsTheTopRowAtYOne) {
@@ -107,7 +120,9 @@ TEST(ImageMap, PlanarPutsTheTopRowAtYOne) {
     EXPECT_EQ(m.colorAt({0.75, 0.75, 0}).rgb.g, 1.0);   // top right: green
     EXPECT_EQ(m.colorAt({0.25, 0.25, 0}).rgb.b, 1.0);   // bottom left: blue
     EXPECT_EQ(m.colorAt({-0.75, 1.75, 0}).rgb.r, 1.0);  // repeats
-    EXPECT_DOUBLE_EQ(m.valueAt({0.75, 0.25, 0}), 1.0);
+    const auto g =
+        twoByTwo(scene::ImageMapping::Planar, false, scene::ImageInterpolation::None, true);
+    EXPECT_DOUBLE_EQ(g.valueAt({0.75, 0.25, 0}), 1.0);
 }
 
 TEST(ImageMap, OnceIsTransparentOutsideTheUnitSquare) {
@@ -128,8 +143,8 @@ TEST(ImageMap, BilinearReachesTexelColoursAtTheirCentres) {
 }
 
 TEST(ImageMap, NormalizedDistanceWeighsByInverseSquareDistance) {
-    const auto m =
-        twoByTwo(scene::ImageMapping::Planar, false, scene::ImageInterpolation::NormalizedDistance);
+    const auto m = twoByTwo(scene::ImageMapping::Planar, false,
+                            scene::ImageInterpolation::NormalizedDistance, true);
     // Half way between the two texels of a row (and on the row's centre):
     // the row's texels at distance 0.5, the other row's at sqrt(1.25).
     const double near = 1 / 0.25, far = 1 / 1.25;
@@ -162,10 +177,11 @@ TEST(ImageMap, SphericalAndTorusCoordinates) {
 
 // 4 x 4 heights rising by 0.1 per column (x) and 0.2 per row down.
 scene::ImageMap ramp() {
-    auto t = std::make_shared<scene::ImageTexels>();
-    t->width = t->height = 4;
+    std::vector<float> values;
     for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) t->values.push_back(static_cast<float>(0.1 * x + 0.2 * y));
+        for (int x = 0; x < 4; ++x) values.push_back(static_cast<float>(0.1 * x + 0.2 * y));
+    auto t = std::make_shared<scene::ImageTexels>(floatImage(4, 4, 1, values),
+                                                  scene::ImageTexels::Scalar::Grey);
     return scene::ImageMap(t, scene::ImageMapping::Planar, false, scene::ImageInterpolation::None);
 }
 

@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
+#include "scene/crackle.h"
 #include "scene/patterns.h"
+#include "util/lattice_hash.h"
 
 using namespace frameray;
 using namespace frameray::scene;
@@ -194,5 +199,29 @@ TEST(Noise, VectorNoiseEqualsPortableFormBitForBit) {
         ASSERT_EQ(a.x, b.x) << p.x << " " << p.y << " " << p.z;
         ASSERT_EQ(a.y, b.y);
         ASSERT_EQ(a.z, b.z);
+    }
+}
+
+// Far out (a ground fog with turbulence 1e7 units away, huge scales) the
+// lattice index is beyond int: it takes INT_MIN as x86 truncation gives it
+// (povray's and our earlier builds' values) instead of the undefined C++
+// conversion the render fuzzer found; cell patterns clamp their index.
+TEST(Noise, FarCoordinatesHaveDefinedLatticeCells) {
+    EXPECT_EQ(latticeTruncate(3.7), 3);
+    EXPECT_EQ(latticeTruncate(-3.7), -3);
+    EXPECT_EQ(latticeTruncate(1e20), std::numeric_limits<int>::min());
+    EXPECT_EQ(latticeTruncate(-6.2977e9), std::numeric_limits<int>::min());
+    EXPECT_EQ(latticeTruncate(std::nan("")), std::numeric_limits<int>::min());
+    EXPECT_EQ(latticeFloor(-3.5), -4);
+    EXPECT_EQ(latticeFloor(1e20), 1 << 30);
+    EXPECT_EQ(latticeFloor(-1e20), -(1 << 30));
+    EXPECT_EQ(latticeFloor(std::nan("")), 0);
+    for (const double far : {1e10, -6.2977e9, 3e15}) {
+        const double n = solidNoise({far, 0.5, far}, NoiseGenerator::RangeCorrected);
+        EXPECT_TRUE(std::isfinite(n)) << far;
+        EXPECT_EQ(n, solidNoise({far, 0.5, far}, NoiseGenerator::RangeCorrected)) << far;
+        EXPECT_TRUE(std::isfinite(
+            crackle({far, far, 1}, CrackleSettings{}, NoiseGenerator::RangeCorrected)))
+            << far;
     }
 }

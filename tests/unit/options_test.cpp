@@ -456,7 +456,11 @@ TEST(Options, UnsupportedValuesAreNamed) {
     EXPECT_EQ(firstUnsupported(parse({"+Q0"})), "");  // quick colours
     EXPECT_EQ(firstUnsupported(parse({"+Q1"})), "");
     EXPECT_NE(firstUnsupported(parse({"+HIx.inc"})).find("Include_Header"), std::string::npos);
-    EXPECT_NE(firstUnsupported(parse({"+O-"})).find("standard output"), std::string::npos);
+    EXPECT_EQ(firstUnsupported(parse({"+O-"})), "");  // standard output
+    EXPECT_EQ(firstUnsupported(parse({"Grayscale_Output=on", "+FP"})), "");
+    // povray: "Unsupported combination of options".
+    EXPECT_NE(firstUnsupported(parse({"Grayscale_Output=on", "+FT"})).find("Grayscale_Output"),
+              std::string::npos);
 }
 
 TEST(Options, HelpListsEveryOption) {
@@ -503,6 +507,7 @@ TEST(Options, UntrustedIniNamesPathsOnlyInItsFolders) {
     EXPECT_TRUE(refused("Create_Ini=/tmp/c.ini\n"));
     EXPECT_TRUE(refused("Include_Header=/etc/passwd\n"));
     EXPECT_TRUE(refused("/etc/other.ini\n"));
+    EXPECT_TRUE(refused("/home/someone/.profile\n"));  // a scene named on a line of its own
     // In the INI's folder (or below it) and the working folder: fine.
     EXPECT_FALSE(refused("Library_Path=" + (dir.path / "scene/inc").string() + "\n"));
     EXPECT_FALSE(refused("Output_File_Name=" + (dir.path / "scene/frames/").string() + "\n"));
@@ -560,4 +565,98 @@ TEST(Options, IniLinesWithoutEqualsAndByteOrderMarks) {
     applyArguments(o, {dir.write("e.ini", "scene.pov\n+W5 d.ini\n").string()});
     EXPECT_EQ(o.inputFile, "scene.pov");
     EXPECT_EQ(o.width, 64);
+}
+
+// The rest of povray 3.7's keys (issue 30). Measured with povray 3.7.0.10:
+// each switch below sets the key Create_Ini then writes (+UL writes
+// Light_Buffer=On, +KLA Clockless_Animation=On, +RFfoo
+// Radiosity_File_Name="foo", +B Bounding=On, ...).
+TEST(Options, OldAndPreviewKeysAreAcceptedAndWrittenBack) {
+    const std::vector<std::pair<std::string, std::string>> switches = {
+        {"+UL", "Light_Buffer=On"},
+        {"-UV", "Vista_Buffer=Off"},
+        {"+UD", "Draw_Vistas=On"},
+        {"-UR", "Remove_Bounds=Off"},
+        {"+SU", "Split_Unions=On"},
+        {"+BM2", "Bounding_Method=2"},
+        {"+RP3", "Render_Pattern=3"},
+        {"+RS2", "Render_Block_Step=2"},
+        {"+SP8", "Preview_Start_Size=8"},
+        {"+EP2", "Preview_End_Size=2"},
+        {"+MI64", "Max_Image_Buffer_Memory=64"},
+        {"+GP", "Append_File=On"},
+        {"+KLA", "Clockless_Animation=On"},
+        {"+HR", "High_Reproducibility=On"},
+        {"-RTR", "Real_Time_Raytracing=Off"},
+        {"+WL3", "Warning_Level=3"},
+        {"+RFfoo", "Radiosity_File_Name=\"foo\""},
+        {"-RFI", "Radiosity_From_File=Off"},
+        {"-RFO", "Radiosity_To_File=Off"},
+        {"+RVP", "Radiosity_Vain_Pretrace=On"},
+        {"+B", "Bounding=On"},
+        {"-B", "Bounding=Off"},
+    };
+    for (const auto& [sw, line] : switches)
+        EXPECT_NE(createIniText(parse({sw})).find(line + "\n"), std::string::npos) << sw;
+    const std::vector<std::pair<std::string, std::string>> keys = {
+        {"Palette=G", "Palette=g"},
+        {"Video_Mode=0", "Video_Mode=0"},
+        {"Dither=on", "Dither=On"},
+        {"Dither_Method=b3", "Dither_Method=B3"},
+        {"Grayscale_Output=yes", "Grayscale_Output=On"},
+        {"Bits_Per_Colour=12", "Bits_Per_Color=12"},
+    };
+    for (const auto& [key, line] : keys)
+        EXPECT_NE(createIniText(parse({key})).find(line + "\n"), std::string::npos) << key;
+    EXPECT_EQ(parse({"Bits_Per_Colour=5"}).bitDepth, 5);
+    // povray 3.7.0 has no A2/A3 (3.7.1 does): "Failed to parse".
+    EXPECT_THROW(parse({"Dither_Method=A2"}), OptionError);
+    EXPECT_THROW(parse({"Light_Buffer=maybe"}), OptionError);
+    // The obsolete ones povray reads from INI files ("INI option
+    // 'Buffer_Output' is no longer used") and does not write back.
+    for (const char* key :
+         {"Buffer_Output=on", "Buffer_Size=10", "Create_Histogram=on", "Histogram_Type=C",
+          "Histogram_Name=h.csv", "Histogram_Grid_Size=4.4"}) {
+        const RenderOptions o = parse({key});
+        EXPECT_EQ(createIniText(o).find(std::string(key).substr(0, 6)), std::string::npos) << key;
+    }
+}
+
+TEST(Options, OptionsWithoutEffectSaySoOnce) {
+    RenderOptions o;
+    const auto warnings = applyArguments(o, {"+UL", "Light_Buffer=off", "+B", "+B100", "+SP4"});
+    ASSERT_EQ(warnings.size(), 3u);
+    EXPECT_NE(warnings[0].find("'Light_Buffer' has no effect"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[1].find("'Buffer_Size' has no effect"), std::string::npos) << warnings[1];
+    EXPECT_NE(warnings[2].find("'Preview_Start_Size'"), std::string::npos) << warnings[2];
+    EXPECT_TRUE(o.bounding);
+}
+
+TEST(Options, IncludeIniAndBareIniNames) {
+    TempDir dir("frameray_include_ini");
+    dir.write("size.ini", "Width=32\n[big]\nWidth=640\n");
+    dir.write("main.ini", "Include_Ini=size.ini\nHeight=24\n");
+    dir.write("section.ini", "Include_Ini=size.ini[big]\n");
+    // povray's allstill.ini names res320 without its extension.
+    dir.write("bare.ini", "size\n");
+    RenderOptions a = parse({(dir.path / "main.ini").string()});
+    EXPECT_EQ(a.width, 32);
+    EXPECT_EQ(a.height, 24);
+    EXPECT_EQ(parse({(dir.path / "section.ini").string()}).width, 640);
+    RenderOptions b;
+    const auto warnings = applyArguments(b, {(dir.path / "bare.ini").string()});
+    EXPECT_EQ(b.width, 32);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("'size' read as the INI file"), std::string::npos);
+    // An empty return action (povray's pngfli.ini) is the default.
+    dir.write("empty.ini", "Pre_Frame_Return=\nPre_Frame_Command=\n");
+    EXPECT_EQ(parse({(dir.path / "empty.ini").string()}).commands[1].action, "");
+}
+
+TEST(Options, UnsupportedNewValuesAreNamed) {
+    EXPECT_NE(firstUnsupported(parse({"+RTR"})).find("Real_Time_Raytracing"), std::string::npos);
+    EXPECT_NE(firstUnsupported(parse({"+RFI"})).find("Radiosity_From_File"), std::string::npos);
+    EXPECT_NE(firstUnsupported(parse({"Radiosity_To_File=on"})).find("Radiosity_To_File"),
+              std::string::npos);
+    EXPECT_EQ(firstUnsupported(parse({"+UL", "+RFfile", "+SP8", "Dither=off"})), "");
 }

@@ -1,0 +1,249 @@
+// Photon mapping: the kd-tree's searches against brute force, the blocks'
+// syntax, povray's shooting pattern (photon counts read off povray 3.7's
+// statistics), and that shooting does not depend on the thread count.
+#include "render/photons.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "anim/statistics.h"
+#include "parse_support.h"
+#include "render/photon_map.h"
+#include "render/world.h"
+
+using namespace frameray;
+
+namespace {
+
+std::vector<render::Photon> scatteredPhotons(int n) {
+    std::vector<render::Photon> out;
+    std::uint64_t h = 12345;
+    auto next = [&h] {
+        h = h * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<float>((h >> 40) & 0xffff) / 65536.0f;
+    };
+    for (int i = 0; i < n; ++i) {
+        render::Photon p{};
+        // Clustered on a plane and a sphere-ish blob, with duplicates.
+        p.position[0] = next() * 4 - 2;
+        p.position[1] = i % 3 == 0 ? 0.0f : next();
+        p.position[2] = next() * 4 - 2;
+        if (i % 17 == 0 && i > 0) std::memcpy(p.position, out.back().position, sizeof p.position);
+        p.power[0] = p.power[1] = p.power[2] = 1.0f;
+        p.direction[1] = -1.0f;
+        out.push_back(p);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(PhotonMap, NearestMatchesBruteForce) {
+    const std::vector<render::Photon> photons = scatteredPhotons(5000);
+    const render::PhotonMap map(photons);
+    ASSERT_EQ(map.size(), photons.size());
+    std::vector<render::PhotonNeighbour> found;
+    const Vec3 probes[] = {{0, 0, 0}, {1.5, 0.5, -1.9}, {3, 3, 3}, {-2, 0, 2}};
+    for (const Vec3& q : probes)
+        for (int k : {1, 20, 100})
+            for (double radius : {0.1, 0.5, 10.0}) {
+                map.nearest(q, radius, k, found);
+                std::vector<double> all;
+                for (const render::Photon& p : photons) {
+                    const double d2 = dot(p.at() - q, p.at() - q);
+                    if (d2 < radius * radius) all.push_back(d2);
+                }
+                std::sort(all.begin(), all.end());
+                const size_t expect = std::min(all.size(), static_cast<size_t>(k));
+                ASSERT_EQ(found.size(), expect) << k << " " << radius;
+                for (size_t i = 0; i < expect; ++i) EXPECT_DOUBLE_EQ(found[i].distance2, all[i]);
+            }
+}
+
+TEST(PhotonMap, EmptyMapFindsNothing) {
+    const render::PhotonMap map;
+    std::vector<render::PhotonNeighbour> found(3);
+    map.nearest({0, 0, 0}, 1.0, 10, found);
+    EXPECT_TRUE(found.empty());
+}
+
+TEST(PhotonsSyntax, BlocksParse) {
+    test_support::ParsedScene p(R"(
+        global_settings { photons { spacing 0.1 count 500 gather 10, 50 jitter 0
+            max_trace_level 7 adc_bailout 0.01 autostop 0.5 expand_thresholds 0.3, 25
+            radius 1, 2, 3, 4 } }
+        light_source { <0, 10, 0>, 1 photons { refraction off area_light } }
+        union { sphere { 0, 1 } sphere { x, 1 } split_union off
+                photons { target 2 refraction on reflection on collect off } }
+        sphere { 0, 1 photons { pass_through } }
+    )");
+    ASSERT_TRUE(p.scene.globals.photons);
+    const scene::PhotonSettings& g = *p.scene.globals.photons;
+    EXPECT_DOUBLE_EQ(g.spacing, 0.1);
+    EXPECT_EQ(g.count, 500);
+    EXPECT_EQ(g.gatherMin, 10);
+    EXPECT_EQ(g.gatherMax, 50);
+    EXPECT_DOUBLE_EQ(g.jitter, 0);
+    EXPECT_EQ(g.maxTraceLevel, 7);
+    EXPECT_DOUBLE_EQ(g.autostop, 0.5);
+    EXPECT_DOUBLE_EQ(g.expandIncrease, 0.3);
+    EXPECT_EQ(g.expandMin, 25);
+    EXPECT_DOUBLE_EQ(g.radius, 1);
+    EXPECT_DOUBLE_EQ(g.mediaRadiusMultiplier, 4);
+    ASSERT_EQ(p.scene.lights.size(), 1u);
+    EXPECT_FALSE(p.scene.lights[0].photons.refraction);
+    EXPECT_TRUE(p.scene.lights[0].photons.reflection);  // untouched: on
+    EXPECT_TRUE(p.scene.lights[0].photons.areaLight);
+    ASSERT_EQ(p.scene.objects.size(), 2u);
+    const scene::Object& u = *p.scene.objects[0];
+    EXPECT_DOUBLE_EQ(u.photons.target, 2);
+    EXPECT_FALSE(u.photons.splitUnion);
+    EXPECT_FALSE(u.photons.collect);
+    // The children inherit the union's block.
+    EXPECT_TRUE(u.children[0]->photons.refraction);
+    EXPECT_FALSE(u.children[1]->photons.collect);
+    EXPECT_TRUE(p.scene.objects[1]->photons.passThrough);
+}
+
+TEST(PhotonsSyntax, PovrayChecks) {
+    // Both values are required, as in povray.
+    EXPECT_NE(test_support::parseErrorOf("global_settings { photons { spacing 0.1 gather 10 } }"),
+              "");
+    EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 photons { refraction } }"), "");
+    EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 split_union off }"), "");
+    // Media photons and photon map files stop at their keyword.
+    for (const char* item : {"media 100, 2", "save_file \"a.ph\"", "load_file \"a.ph\""}) {
+        const std::string error = test_support::parseErrorOf(
+            std::string("global_settings { photons { spacing 0.1 ") + item + " } }");
+        EXPECT_NE(error.find("not supported yet"), std::string::npos) << item << ": " << error;
+    }
+    test_support::ParsedScene p("sphere { 0, 1 photons { target refraction on pass_through } }");
+    EXPECT_FALSE(p.scene.objects[0]->photons.refraction);
+    EXPECT_NE(p.sink.warnings.find("Cannot use pass_through with refraction & target"),
+              std::string::npos);
+}
+
+namespace {
+
+// povray 3.7's test scene for counts: a point light 8.5 above the centre
+// of a target whose bounding box is 2 x 2 x 2.
+const char* kCountScene = R"(
+    global_settings { photons { spacing SP autostop AS jitter 0 } }
+    light_source { <0, 10, 0>, 1 }
+    plane { y, 0 }
+    TARGET
+)";
+
+const char* kBoxTarget = R"(box { <-1, 0.5, -1>, <1, 2.5, 1> pigment { rgbf <1, 1, 1, 0.95> }
+    interior { ior 1.5 } photons { target refraction on } })";
+const char* kSphereTarget = R"(sphere { <0, 1.5, 0>, 1 pigment { rgbf <1, 1, 1, 0.95> }
+    interior { ior 1.5 } photons { target refraction on } })";
+
+std::uint64_t photonsShot(double spacing, double autostop, const char* target = kBoxTarget) {
+    std::string text = kCountScene;
+    text.replace(text.find("SP"), 2, std::to_string(spacing));
+    text.replace(text.find("AS"), 2, std::to_string(autostop));
+    text.replace(text.find("TARGET"), 6, target);
+    test_support::ParsedScene p(text);
+    const render::World world(p.scene);
+    return world.photons() ? world.photons()->stats().shot : 0;
+}
+
+}  // namespace
+
+TEST(Photons, RingCountsMatchPovray) {
+    // povray 3.7: "Number of photons shot" with autostop 1 (the whole
+    // bounding sphere) at spacings 0.05, 0.1, 0.3, 0.5, 1.
+    EXPECT_EQ(photonsShot(0.05, 1), 3728u);
+    EXPECT_EQ(photonsShot(0.1, 1), 959u);
+    EXPECT_EQ(photonsShot(0.3, 1), 95u);
+    EXPECT_EQ(photonsShot(0.5, 1), 39u);
+    EXPECT_EQ(photonsShot(1, 1), 7u);
+    // autostop 0: a sphere fills its bounding sphere's cone only in part;
+    // the rings stop after the first that misses it: rings 0 to 51, ring
+    // 51 the first past the sphere's edge (povray: 8322 at spacing 0.02).
+    // (The box is no good test here: povray's ring 79 grazes a corner of
+    // it within a third of a degree, so whether it hits depends on where
+    // povray starts its rings around the axis, which is not known.)
+    EXPECT_EQ(photonsShot(0.02, 0, kSphereTarget), 8322u);
+}
+
+TEST(Photons, NoneWithoutTheGlobalBlock) {
+    test_support::ParsedScene p(R"(
+        light_source { <0, 10, 0>, 1 }
+        sphere { 0, 1 photons { target refraction on } }
+    )");
+    const render::World world(p.scene);
+    EXPECT_EQ(world.photons(), nullptr);
+}
+
+TEST(Photons, SameMapWhateverTheThreadCount) {
+    test_support::ParsedScene p(R"(
+        global_settings { photons { spacing 0.02 } }
+        light_source { <2, 10, 1>, 1 }
+        plane { y, 0 }
+        sphere { <0, 1.5, 0>, 1 pigment { rgbf <1, 1, 1, 0.9> } finish { reflection 0.2 }
+                 interior { ior 1.5 } photons { target refraction on reflection on } }
+    )");
+    auto shootWith = [&](int threads) {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(threads));
+        const render::World world(p.scene);
+        return world.photons()->surfaceMap().photons();
+    };
+    const std::vector<render::Photon> one = shootWith(1);
+    const std::vector<render::Photon> two = shootWith(2);
+    ASSERT_GT(one.size(), 1000u);
+    ASSERT_EQ(one.size(), two.size());
+    EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(render::Photon)), 0);
+}
+
+TEST(Photons, MemoryInSequenceJson) {
+    render::PhotonStats stats;
+    stats.shot = 8322;
+    stats.stored = 16004;
+    stats.memoryBytes = 721460;
+    stats.gatherRadius = 0.25;
+    stats.spacing = 0.02;
+    anim::FrameRecord with;
+    with.number = 1;
+    with.photons = stats;
+    anim::FrameRecord without;
+    without.number = 2;
+    anim::RunFigures run;
+    run.framesPlanned = 2;
+    run.framesFinished = 2;
+    const std::string json = anim::sequenceJson(run, {with, without}, {});
+    EXPECT_NE(json.find("\"photons\": {\"shot\": 8322, \"stored\": 16004, \"memory_bytes\": "
+                        "721460, \"gather_radius\": 0.25, \"spacing\": 0.02}"),
+              std::string::npos)
+        << json;
+    // Only the frame that shot photons says so.
+    EXPECT_EQ(json.find("\"photons\""), json.rfind("\"photons\"")) << json;
+}
+
+TEST(Photons, AreaLightShootsFromItsGrid) {
+    // povray 3.7 at spacing 0.05, autostop 1, jitter 0 on a glass sphere
+    // 8.5 below an area light: 3728 photons from the centre; with
+    // photons { area_light } 3735 from a 3x3 grid and 3920 from a 4x2
+    // one (each point's beam spaced sqrt(9) or sqrt(8) times wider).
+    auto shot = [](const std::string& light) {
+        test_support::ParsedScene p(R"(
+            global_settings { photons { spacing 0.05 autostop 1 jitter 0 } }
+            light_source { <0, 10, 0>, 1 )" +
+                                    light + R"( }
+            plane { y, 0 }
+            sphere { <0, 1.5, 0>, 1 pigment { rgbf <1, 1, 1, 0.95> } interior { ior 1.5 }
+                     photons { target refraction on } }
+        )");
+        const render::World world(p.scene);
+        return world.photons()->stats().shot;
+    };
+    EXPECT_EQ(shot("area_light 4*x, 4*z, 3, 3"), 3728u);
+    EXPECT_EQ(shot("area_light 4*x, 4*z, 3, 3 photons { area_light }"), 3735u);
+    EXPECT_EQ(shot("area_light 4*x, 4*z, 4, 2 photons { area_light }"), 3920u);
+}
