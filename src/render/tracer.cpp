@@ -114,7 +114,8 @@ Tracer::Tracer(const World& world, int quality, const Radiosity* radiosity)
       radiosity_(radiosity),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
-      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
+      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9),
+      legacyFilterOpacity_(world.scene().languageVersion < 3.7 - 1e-9) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
     // in reverse declaration order, so the innermost (last listed) is the
@@ -259,8 +260,12 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     // the opaque rest; highlights and reflection are not (measured).
     // The rest is not clamped: filter + transmit above 1 (image maps with
     // alpha and transmit all) takes light away, as in povray.
-    const double seeThrough = surface.filter + surface.transmit;
-    const double opacity = 1.0 - seeThrough;
+    // Before 3.7 filter takes only its share of the pigment's brightest
+    // channel away (measured with #version 3.6: rgbf <0.5, 0.5, 0.5, 1>
+    // shows 0.25 of its own colour over what it filters).
+    const double filterShare =
+        legacyFilterOpacity_ ? surface.filter * pigment.maxComponent() : surface.filter;
+    const double opacity = 1.0 - filterShare - surface.transmit;
     const RGB lit = pigment * opacity;
 
     // Under radiosity the gathered light takes the place of ambient light,
