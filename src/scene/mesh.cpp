@@ -55,7 +55,7 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
     triangles_.reserve(triangles.size());
     inputFaces_.reserve(triangles.size());
     for (const MeshTriangle& t : triangles) {
-        inputFaces_.push_back(t.vertex);
+        inputFaces_.push_back(t);
         const Vec3 &a = vertices_[t.vertex[0]], &b = vertices_[t.vertex[1]],
                    &c = vertices_[t.vertex[2]];
         const Vec3 n = cross(b - a, c - a);
