@@ -38,6 +38,7 @@
 #include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
+#include "render/aov_pass.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -97,6 +98,17 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
     return ctx;
 }
 
+render::AovRequest aovRequest(const options::RenderOptions& o) {
+    render::AovRequest r;
+    for (const std::string& name : o.outputAovs) {
+        r.depth |= name == "depth";
+        r.normal |= name == "normal";
+        r.objectId |= name == "object_id";
+        r.albedo |= name == "albedo";
+    }
+    return r;
+}
+
 // What alpha output (+UA) does not handle yet: rainbows' transmittance is
 // not measured.
 void refuseAlphaWith(const scene::Scene& scene) {
@@ -110,7 +122,8 @@ void refuseAlphaWith(const scene::Scene& scene) {
 bool settingsNeutral(std::string_view key) {
     // clang-format off
     static constexpr std::string_view kNeutral[] = {
-        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Continue_Trace",
+        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Contact_Sheet",
+        "Continue_Trace",       "Preview_Fps",        "Preview_Video",
         "Create_Ini",           "Display",            "Display_Gamma",      "Field_Render",
         "File_Restrictions",    "Frame_Step",         "Frames_In_Flight",   "Input_File_Name",
         "Log_Format",           "Log_Level",
@@ -665,6 +678,38 @@ class Run {
         return f;
     }
 
+    // The frame's file: encoded into memory (+O-) or flushed under a
+    // temporary name; stage 3 writes or renames it.
+    void encodeJob(Job& job, const image::EncodedImage& file) const {
+        const auto start = Clock::now();
+        if (toStdout_) {
+            job.encoded = image::encodeFile(seq_.fileType, file, "standard output");
+        } else {
+            const fs::path temporary =
+                image::writeTemporary(job.frame->output, seq_.fileType, file);
+            job.temporary = temporary;
+            const auto hash = hashFile(temporary, &job.fileSize);
+            if (!hash)
+                throw std::runtime_error(
+                    fmt::format("cannot read back '{}' for the journal", temporary.string()));
+            job.fileHash = *hash;
+        }
+        job.writeSeconds = secondsSince(start);
+    }
+
+    // Output_AOVs' layers (render/aov_pass.h) and the EXR compression:
+    // nothing is traced for them unless asked.
+    void addLayers(image::EncodedImage& file, const render::World& world,
+                   const render::FrameSettings& settings) const {
+        if (seq_.fileType != image::FileType::EXR) return;
+        file.compression = o_.exrCompression;
+        if (!aovs_.any()) return;
+        render::AovImage layers =
+            render::renderAovs(world, aovs_, settings.width, settings.height, settings.window);
+        file.extraNames = std::move(layers.names);
+        file.extraValues = std::move(layers.values);
+    }
+
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
         if (job.kind != Job::Kind::Render || job.failed || job.deferred || decided_ ||
@@ -687,22 +732,12 @@ class Run {
             job.renderSeconds = secondsSince(start);
             // Encoding, compression and the flush to disk happen here, in
             // parallel; stage 3 only renames and journals.
-            if (toStdout_ && !decided_) {
+            if ((toStdout_ || toFiles_) && !decided_) {
                 start = Clock::now();
-                job.encoded =
-                    image::encodeFile(seq_.fileType, fileImage(image, gamma), "standard output");
-                job.writeSeconds = secondsSince(start);
-            } else if (toFiles_ && !decided_) {
-                start = Clock::now();
-                const fs::path temporary = image::writeTemporary(job.frame->output, seq_.fileType,
-                                                                 fileImage(image, gamma));
-                job.temporary = temporary;
-                const auto hash = hashFile(temporary, &job.fileSize);
-                if (!hash)
-                    throw std::runtime_error(
-                        fmt::format("cannot read back '{}' for the journal", temporary.string()));
-                job.fileHash = *hash;
-                job.writeSeconds = secondsSince(start);
+                image::EncodedImage file = fileImage(image, gamma);
+                addLayers(file, world, settings);  // a render pass, timed with the render
+                job.renderSeconds += secondsSince(start);
+                encodeJob(job, file);
             }
             logEvent(LogLevel::Debug, "render_done",
                      {{"frame", job.frame->number},
@@ -994,6 +1029,7 @@ class Run {
     // files, journal, frame logs or sequence.json then.
     const bool toStdout_ = o_.outputToFile && o_.outputFile == "-";
     const bool toFiles_ = o_.outputToFile && !toStdout_;
+    const render::AovRequest aovs_ = aovRequest(o_);
 
     // povray writes grey PNG files with 16 bits whatever the depth asked
     // (measured: Grayscale_Output with +FN8 gives a 16-bit grey PNG).
