@@ -78,6 +78,7 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
         ctx.libraryPaths.end())
         ctx.libraryPaths.push_back(kDefaultLibrary);
     ctx.declares = o.declares;
+    ctx.includeHeader = o.includeHeader;
     ctx.version = o.version;
     if (o.fileRestrictions) {
         sdl::FileAccessFolders folders;
@@ -352,7 +353,7 @@ class Run {
         setEmergencyStop([this] { emergencyStop(); });
 
         HookValues scene = values(nullptr);
-        switch (runHook(o_.commands[static_cast<int>(ShellHook::PreScene)], scene)) {
+        switch (hook(ShellHook::PreScene, scene)) {
             case HookAction::Continue:
                 break;
             case HookAction::SkipFrame:
@@ -411,6 +412,8 @@ class Run {
                   {"shard_count", seq_.shardCount},
                   {"continue_trace", o_.continueTrace ? 1 : 0},
                   {"pid", static_cast<long long>(getpid())}});
+        for (const std::string& warning : o_.optionWarnings)
+            logEvent(LogLevel::Warn, "option_warning", {{"message", warning}});
     }
 
     void logEvent(LogLevel level, std::string_view kind,
@@ -572,7 +575,7 @@ class Run {
                 }
                 if (kept) return &newJob(Job::Kind::Kept, position);
             }
-            switch (runHook(o_.commands[static_cast<int>(ShellHook::PreFrame)], values(&frame))) {
+            switch (hook(ShellHook::PreFrame, values(&frame))) {
                 case HookAction::Continue:
                     break;
                 case HookAction::SkipFrame:
@@ -905,7 +908,7 @@ class Run {
         // be written ends the run but keeps the frame.
         if (toFiles_ && !saveLog(log, frame)) return decide({Outcome::Kind::Fatal, "", &frame});
         progress_.finished(frame.number, false, seconds);
-        switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
+        switch (hook(ShellHook::PostFrame, values(&frame))) {
             case HookAction::Continue:
             case HookAction::SkipFrame:
                 break;
@@ -959,6 +962,8 @@ class Run {
         try {
             util::replaceFileDurably(path, text);
         } catch (const std::exception& e) {
+            logEvent(LogLevel::Warn, "write_failed",
+                     {{"file", path.string()}, {"reason", std::string(e.what())}});
             say(TextStream::Warning, fmt::format("frameray: warning: {}\n", e.what()));
         }
     }
@@ -1015,6 +1020,8 @@ class Run {
         try {
             sheet_->save(final);
         } catch (const std::exception& e) {
+            logEvent(LogLevel::Warn, "write_failed",
+                     {{"file", sheet_->pagePath().string()}, {"reason", std::string(e.what())}});
             say(TextStream::Warning,
                 fmt::format("frameray: warning: contact sheet: {}\n", e.what()));
             sheet_.reset();
@@ -1034,7 +1041,7 @@ class Run {
     }
 
     int finish() {
-        switch (runHook(o_.commands[static_cast<int>(ShellHook::PostScene)], values(nullptr))) {
+        switch (hook(ShellHook::PostScene, values(nullptr))) {
             case HookAction::UserAbort:
                 return userAbort();
             case HookAction::Fatal:
@@ -1058,9 +1065,30 @@ class Run {
 
     void say(TextStream stream, const std::string& text) const { streams_.write(stream, text); }
 
+    // A *_Command hook, run and logged (nothing when the option is empty).
+    HookAction hook(ShellHook which, const HookValues& v) {
+        const options::ShellCommand& command = o_.commands[static_cast<int>(which)];
+        if (command.command.empty()) return HookAction::Continue;
+        const auto start = Clock::now();
+        int exitCode = 0;
+        const HookAction action = runHook(command, v, &exitCode);
+        logEvent(exitCode == 0 ? LogLevel::Info : LogLevel::Warn, "hook",
+                 {{"hook", options::kShellHookNames[static_cast<int>(which)]},
+                  {"frame", v.frame},
+                  {"clock", v.clock},
+                  {"exit_code", exitCode},
+                  {"action", kHookActionNames[static_cast<int>(action)]},
+                  {"seconds", secondsSince(start)}});
+        return action;
+    }
+
     int fatal(const std::string& why, const FrameSpec* frame) {
-        if (!why.empty()) say(TextStream::Fatal, fmt::format("frameray: error: {}\n", why));
-        runHook(o_.commands[static_cast<int>(ShellHook::FatalError)], values(frame));
+        if (!why.empty()) {
+            logEvent(LogLevel::Error, "fatal",
+                     {{"reason", why}, {"frame", frame ? frame->number : 0}});
+            say(TextStream::Fatal, fmt::format("frameray: error: {}\n", why));
+        }
+        hook(ShellHook::FatalError, values(frame));
         return 1;
     }
 
@@ -1075,7 +1103,7 @@ class Run {
         acknowledgeStop();
         logEvent(LogLevel::Warn, "interrupted", {{"frames_finished", finished_.load()}});
         say(TextStream::Fatal, stopMessage());
-        runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
+        hook(ShellHook::UserAbort, values(current_));
         return 2;
     }
 
@@ -1093,7 +1121,7 @@ class Run {
                     }
         }
         std::fputs(stopMessage().c_str(), stderr);
-        runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
+        hook(ShellHook::UserAbort, values(current_));
     }
 
     static constexpr size_t kMaxDefaultFramesInFlight = 16;

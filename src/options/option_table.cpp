@@ -584,12 +584,10 @@ const OptionSpec kOptions[] = {
     FR_OBSOLETE("Histogram_Grid_Size", "HS", String, "Histogram grid size"),
     FR_OBSOLETE("Histogram_Name", "HN", Path, "Histogram file name"),
     FR_OBSOLETE("Histogram_Type", "HT", String, "Histogram file type"),
-    {"Include_Header", "HI", OptionType::Path, "", "A file included before the scene's first line.",
+    {"Include_Header", "HI", OptionType::Path, "",
+     "A file included before the scene's first line (searched as #include files are).",
      [](RenderOptions& o, const OptionInput& in) { o.includeHeader = trimQuotes(in.value); },
-     FR_WRITE(quoted(o.includeHeader)),
-     [](const RenderOptions& o) -> const char* {
-         return o.includeHeader.empty() ? nullptr : "Include_Header";
-     }},
+     FR_WRITE(quoted(o.includeHeader)), nullptr},
     {"Include_Ini", "", OptionType::IniFile, "",
      "Read another INI file (file.ini or file.ini[Section]) here, as if named on the command "
      "line.",

@@ -34,6 +34,9 @@ struct StreamOptions {
 // The moments POV-Ray shells out, in the order of their option names.
 enum class ShellHook { PreScene, PreFrame, PostFrame, PostScene, UserAbort, FatalError };
 inline constexpr int kShellHooks = 6;
+// The hooks' names in the run log (the INI keys are Pre_Scene_Command ...).
+inline constexpr const char* kShellHookNames[kShellHooks] = {
+    "pre_scene", "pre_frame", "post_frame", "post_scene", "user_abort", "fatal_error"};
 
 struct ShellCommand {
     std::string command;  // empty: none
@@ -136,6 +139,9 @@ struct RenderOptions {
     std::string createIni;  // Create_Ini (+GI): write the effective options here
     LogLevel logLevel = LogLevel::Info;
     LogFormat logFormat = LogFormat::Text;
+    // What reading the options warned of (also said on the console before
+    // the run starts): the run log repeats them as option_warning events.
+    std::vector<std::string> optionWarnings;
 
     std::array<StreamOptions, kTextStreams> streams;
     std::array<ShellCommand, kShellHooks> commands;
