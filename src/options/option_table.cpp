@@ -96,6 +96,37 @@ void mark(RenderOptions& o, std::string_view key) {
     o.explicitlySet.emplace(key);
 }
 
+// Output_AOVs: a comma-separated subset of kAovNames ("none" or nothing:
+// no extra layers), kept in kAovNames order without repeats.
+std::vector<std::string> parseAovs(std::string_view text) {
+    const std::string v = trimQuotes(text);
+    std::vector<bool> asked(std::size(kAovNames), false);
+    size_t start = 0;
+    while (start <= v.size()) {
+        size_t end = v.find_first_of(", ", start);
+        if (end == std::string::npos) end = v.size();
+        const std::string_view word = std::string_view(v).substr(start, end - start);
+        start = end + 1;
+        if (word.empty() || iequals(word, "none") || iequals(word, "off")) continue;
+        size_t i = 0;
+        while (i < std::size(kAovNames) && !iequals(word, kAovNames[i])) ++i;
+        if (i == std::size(kAovNames))
+            throw std::invalid_argument(fmt::format(
+                "unknown layer '{}' (use depth, normal, object_id, albedo, motion)", word));
+        asked[i] = true;
+    }
+    std::vector<std::string> out;
+    for (size_t i = 0; i < asked.size(); ++i)
+        if (asked[i]) out.emplace_back(kAovNames[i]);
+    return out;
+}
+
+std::string joinedAovs(const RenderOptions& o) {
+    std::string s;
+    for (const std::string& a : o.outputAovs) s += (s.empty() ? "" : ",") + a;
+    return s.empty() ? "none" : s;
+}
+
 // Output_File_Type letters of POV-Ray 3.7 and an optional bit depth: "N",
 // "N16", "E".
 void applyFileType(RenderOptions& o, std::string_view v) {
@@ -391,6 +422,12 @@ const OptionSpec kOptions[] = {
     FR_ACCEPTED("Clockless_Animation", "KLA", Bool, "off",
                 "Clockless animation (no effect: POV-Ray 3.7 renders the same frames with it).",
                 acceptBool, kPovrayIgnores),
+    {"Contact_Sheet", "CS", OptionType::Bool, "off",
+     "Beside an animation's frames, NAME.html (every frame as a thumbnail with its number, clock, "
+     "render time and rays, failed frames marked, a play control; self-contained) and "
+     "NAME-sheet.png (a grid of the thumbnails), rewritten as frames finish.",
+     [](RenderOptions& o, const OptionInput& in) { o.contactSheet = toBool(in); },
+     FR_WRITE(onOff(o.contactSheet)), nullptr},
     {"Continue_Trace", "C", OptionType::Bool, "off",
      "Resume a stopped animation: frames the journal records as finished and intact are kept, the "
      "rest rendered.",
@@ -464,6 +501,19 @@ const OptionSpec kOptions[] = {
      "Last row of the render window: a pixel number, or a fraction of the height up to 1.0.",
      [](RenderOptions& o, const OptionInput& in) { o.endRow = toNonNegative(in.value); },
      FR_WRITE(num(o.endRow)), nullptr},
+    {"Exr_Compression", "", OptionType::String, "zip",
+     "Compression of EXR frames (+FE): none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab.",
+     [](RenderOptions& o, const OptionInput& in) {
+         const std::string v = trimQuotes(in.value);
+         for (const std::string_view name : kExrCompressions)
+             if (iequals(v, name)) {
+                 o.exrCompression = std::string(name);
+                 return;
+             }
+         throw std::invalid_argument(fmt::format(
+             "'{}' is not one of none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab", v));
+     },
+     FR_WRITE(o.exrCompression), nullptr},
     FR_STREAM(TextStream::Fatal, "Fatal", "F", "fatal error"),
     FR_HOOK(ShellHook::FatalError, "Fatal_Error", "when a frame fails"),
     {"Field_Render", "UF", OptionType::Bool, "off",
@@ -615,6 +665,17 @@ const OptionSpec kOptions[] = {
      "Start field rendering on the odd field (accepted, as Field_Render).",
      [](RenderOptions& o, const OptionInput& in) { o.oddField = toBool(in); },
      FR_WRITE(onOff(o.oddField)), nullptr},
+    {"Output_AOVs", "AOV", OptionType::String, "none",
+     "Extra layers in each EXR frame (+FE only), from the camera ray through each pixel's centre: "
+     "any of depth (Z), normal (N.x N.y N.z), object_id (objectId), albedo (albedo.R G B), "
+     "comma-separated. motion is not built yet.",
+     [](RenderOptions& o, const OptionInput& in) { o.outputAovs = parseAovs(in.value); },
+     FR_WRITE(joinedAovs(o)),
+     [](const RenderOptions& o) -> const char* {
+         for (const std::string& a : o.outputAovs)
+             if (a == "motion") return "Output_AOVs=motion (motion vectors)";
+         return nullptr;
+     }},
     {"Output_Alpha", "UA", OptionType::Bool, "off", "Write an alpha channel (transparency mask).",
      [](RenderOptions& o, const OptionInput& in) { o.outputAlpha = toBool(in); },
      FR_WRITE(onOff(o.outputAlpha)),
@@ -660,9 +721,27 @@ const OptionSpec kOptions[] = {
     FR_ACCEPTED("Preview_End_Size", "EP", Int, "1",
                 "Block size of the last mosaic preview pass (no effect: there is no preview).",
                 acceptInt, kNoPreview),
+    {"Preview_Fps", "", OptionType::Float, "24",
+     "Frames per second of the preview video (Preview_Video).",
+     [](RenderOptions& o, const OptionInput& in) {
+         const double v = toFloat(in.value);
+         if (!(v > 0) || v > 1000)
+             throw std::invalid_argument(fmt::format("'{}' is not between 0 and 1000", in.value));
+         o.previewFps = v;
+     },
+     FR_WRITE(num(o.previewFps)), nullptr},
     FR_ACCEPTED("Preview_Start_Size", "SP", Int, "1",
                 "Block size of the first mosaic preview pass (no effect: there is no preview).",
                 acceptInt, kNoPreview),
+    {"Preview_Video", "PV", OptionType::String, "off",
+     "Once every frame of an animation exists: NAME.mp4 (H.264) or NAME.webm (VP9) beside the "
+     "frames, one video frame per image at Preview_Fps, made by the ffmpeg program; off: none.",
+     [](RenderOptions& o, const OptionInput& in) {
+         if (in.fromSwitch && !in.plus) return o.previewVideo.clear();
+         o.previewVideo = choice<std::string>(
+             in.value, {{"off", ""}, {"none", ""}, {"mp4", "mp4"}, {"webm", "webm"}});
+     },
+     FR_WRITE(o.previewVideo.empty() ? std::string("off") : o.previewVideo), nullptr},
     {"Quality", "Q", OptionType::Int, "9", "Render quality 0..11.",
      [](RenderOptions& o, const OptionInput& in) {
          o.quality = std::clamp(toInt(in.value), 0, 11);

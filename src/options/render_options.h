@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -47,6 +48,13 @@ struct ShellCommand {
 enum class LogLevel { Debug, Info, Warn, Error, Off };
 enum class LogFormat { Text, Json };
 
+// Output_AOVs' layer names, in the order the option keeps them.
+inline constexpr std::string_view kAovNames[] = {"depth", "normal", "object_id", "albedo",
+                                                 "motion"};
+// Exr_Compression's codec names (OpenEXR's, as OpenImageIO spells them).
+inline constexpr std::string_view kExrCompressions[] = {"none",  "rle", "zips", "zip",  "piz",
+                                                        "pxr24", "b44", "b44a", "dwaa", "dwab"};
+
 struct RenderOptions {
     // Input and output.
     std::string inputFile;
@@ -67,6 +75,16 @@ struct RenderOptions {
     bool dither = false;              // Dither: dither the quantisation to the file's levels
     std::string ditherMethod = "FS";  // Dither_Method: FS, B2, B3, B4
     bool appendFile = false;          // Append_File (+GP): stream files are appended to
+    // Output_AOVs: extra layers of an EXR frame (render/aov_pass.h), in
+    // kAovNames order, no repeats; empty: none.
+    std::vector<std::string> outputAovs;
+    std::string exrCompression = "zip";  // Exr_Compression: OpenEXR's codec name
+
+    // Looking at a sequence: the contact sheet (anim/contact_sheet.h) and
+    // the preview video (anim/preview_video.h) beside the frames.
+    bool contactSheet = false;
+    std::string previewVideo;  // "mp4", "webm"; empty: none
+    double previewFps = 24;
 
     // Image and render window. Rows/columns as given: a value below 1
     // (start) or up to 1 (end) is a fraction of the image, others are
