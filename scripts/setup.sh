@@ -12,6 +12,9 @@ packages=(
     googletest libgtest-dev
     povray povray-includes povray-examples
     python3 python3-numpy python3-matplotlib
+    # Preview_Video runs the ffmpeg program (libx264, libvpx); the contact
+    # sheet's test looks at the page in headless Chromium.
+    ffmpeg chromium
 )
 
 missing=()

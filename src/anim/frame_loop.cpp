@@ -26,11 +26,13 @@
 #include <thread>
 #include <vector>
 
+#include "anim/contact_sheet.h"
 #include "anim/frame_log.h"
 #include "anim/hooks.h"
 #include "anim/interrupt.h"
 #include "anim/journal.h"
 #include "anim/memory_budget.h"
+#include "anim/preview_video.h"
 #include "anim/progress.h"
 #include "anim/run_log.h"
 #include "anim/statistics.h"
@@ -38,6 +40,8 @@
 #include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
+#include "render/radiosity_file.h"
+#include "render/aov_pass.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -75,6 +79,7 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
         ctx.libraryPaths.end())
         ctx.libraryPaths.push_back(kDefaultLibrary);
     ctx.declares = o.declares;
+    ctx.includeHeader = o.includeHeader;
     ctx.version = o.version;
     if (o.fileRestrictions) {
         sdl::FileAccessFolders folders;
@@ -97,6 +102,17 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
     return ctx;
 }
 
+render::AovRequest aovRequest(const options::RenderOptions& o) {
+    render::AovRequest r;
+    for (const std::string& name : o.outputAovs) {
+        r.depth |= name == "depth";
+        r.normal |= name == "normal";
+        r.objectId |= name == "object_id";
+        r.albedo |= name == "albedo";
+    }
+    return r;
+}
+
 // What alpha output (+UA) does not handle yet: rainbows' transmittance is
 // not measured.
 void refuseAlphaWith(const scene::Scene& scene) {
@@ -110,7 +126,8 @@ void refuseAlphaWith(const scene::Scene& scene) {
 bool settingsNeutral(std::string_view key) {
     // clang-format off
     static constexpr std::string_view kNeutral[] = {
-        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Continue_Trace",
+        "Allow_Shell_Commands", "Bounding",           "Bounding_Threshold", "Contact_Sheet",
+        "Continue_Trace",       "Preview_Fps",        "Preview_Video",
         "Create_Ini",           "Display",            "Display_Gamma",      "Field_Render",
         "File_Restrictions",    "Frame_Step",         "Frames_In_Flight",   "Input_File_Name",
         "Log_Format",           "Log_Level",
@@ -235,6 +252,9 @@ struct Job {
     std::uint64_t fileHash = 0;
     render::FrameStats stats;
     render::ShapeTestCounts shapeTests;
+    // The frame's radiosity samples, for Radiosity_To_File (stage 3).
+    std::vector<render::RadiositySample> radiosityCache;
+    Rgb8Image thumbnail;  // Contact_Sheet: made in stage 2
     bool failed = false;  // the log holds the fatal message
     std::string failure;  // ... and this is it (for the run log)
     // The parse stopped on a file that an earlier frame of this run writes
@@ -310,6 +330,11 @@ class Run {
 
   private:
     int executeRun() {
+        // povray says it in every frame's parse (a beta feature's notice).
+        if (o_.realTimeRaytracing)
+            say(TextStream::Warning,
+                "frameray: warning: Real_Time_Raytracing: every frame renders once and no image "
+                "is written (as povray 3.7 does without a display)\n");
         if (toFiles_ && !seq_.frames.empty()) {
             std::error_code ec;
             // Every frame and the journal are in the same folder, created
@@ -323,6 +348,8 @@ class Run {
                                                  shardJournals(seq_));
             written_ = journal_->written();
             openRunLog();
+            if (o_.contactSheet && seq_.animated)
+                sheet_ = std::make_unique<ContactSheet>(seq_, o_.previewFps);
             if (journal_->discardedStale()) {
                 logEvent(LogLevel::Warn, "journal_stale", {{"journal", seq_.journal.string()}});
                 say(TextStream::Warning,
@@ -334,7 +361,7 @@ class Run {
         setEmergencyStop([this] { emergencyStop(); });
 
         HookValues scene = values(nullptr);
-        switch (runHook(o_.commands[static_cast<int>(ShellHook::PreScene)], scene)) {
+        switch (hook(ShellHook::PreScene, scene)) {
             case HookAction::Continue:
                 break;
             case HookAction::SkipFrame:
@@ -352,13 +379,14 @@ class Run {
         removeUnfinishedTemporaries();
         progress_.done();
         writeStatistics();
+        saveSheet(true);
         if (o_.verbose && seq_.animated)
             say(TextStream::Statistic, summaryTable(figures(), records_, kept_.size()));
 
         switch (outcome_.kind) {
             case Outcome::Kind::None:
             case Outcome::Kind::Finish:
-                return finish();
+                return makeVideo() ? finish() : 1;
             case Outcome::Kind::Quit:
                 return 0;
             case Outcome::Kind::UserAbort:
@@ -392,6 +420,8 @@ class Run {
                   {"shard_count", seq_.shardCount},
                   {"continue_trace", o_.continueTrace ? 1 : 0},
                   {"pid", static_cast<long long>(getpid())}});
+        for (const std::string& warning : o_.optionWarnings)
+            logEvent(LogLevel::Warn, "option_warning", {{"message", warning}});
     }
 
     void logEvent(LogLevel level, std::string_view kind,
@@ -427,6 +457,10 @@ class Run {
         // renders alone (its tiles still use every core) and its growth
         // of the process is the estimate for the others.
         const bool measureFirst = inFlight_ > 1 && seq_.frames.size() > 1;
+        // Radiosity_Stable: the first frame seeds the others' caches, so it
+        // renders before any other starts.
+        const bool stableFirst = o_.radiosityStable && !measureFirst && inFlight_ > 1;
+        if (stableFirst) pipelinePhase(1, 1);
         if (measureFirst) {
             const std::uint64_t before = residentBytes();
             pipelinePhase(1, 1);
@@ -439,7 +473,8 @@ class Run {
                       {"memory_budget_bytes", memoryBudget_},
                       {"frames_in_flight", inFlight_}});
         }
-        if (!measureFirst || (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
+        if (!(measureFirst || stableFirst) ||
+            (!decided_ && !inputDone_ && next_ < seq_.frames.size()))
             pipelinePhase(inFlight_, std::numeric_limits<size_t>::max());
         wallSeconds_ = secondsSince(runStart_);
         cpuSecondsUsed_ = cpuSeconds() - cpuStart_;
@@ -553,7 +588,7 @@ class Run {
                 }
                 if (kept) return &newJob(Job::Kind::Kept, position);
             }
-            switch (runHook(o_.commands[static_cast<int>(ShellHook::PreFrame)], values(&frame))) {
+            switch (hook(ShellHook::PreFrame, values(&frame))) {
                 case HookAction::Continue:
                     break;
                 case HookAction::SkipFrame:
@@ -665,6 +700,64 @@ class Run {
         return f;
     }
 
+    // What a frame's radiosity starts from and keeps: the cache file's
+    // samples (Radiosity_From_File, read once); under Radiosity_Stable the
+    // first frame rendered (alone: runPipeline's first phase) also keeps
+    // its whole cache, and every later frame starts from it. Returns
+    // whether this frame seeds the later ones.
+    bool radiosityCarry(render::FrameSettings& settings) {
+        if (o_.radiosityFromFile) {
+            std::call_once(radiosityFileRead_, [this] {
+                radiosityFile_ = std::make_shared<const std::vector<render::RadiositySample>>(
+                    render::readRadiosityFile(o_.radiosityFile));
+            });
+            settings.radiosityStart = radiosityFile_;
+        }
+        const bool seeds = o_.radiosityStable && !radiosityStableStarted_.exchange(true);
+        if (o_.radiosityStable && !seeds && radiosityStable_)
+            settings.radiosityStart = radiosityStable_;
+        settings.keepRadiosity = seeds || o_.radiosityToFile;
+        return seeds;
+    }
+    void keepRadiosity(Job& job, render::FrameImage& image, bool seeds) {
+        if (seeds)
+            radiosityStable_ = std::make_shared<const std::vector<render::RadiositySample>>(
+                o_.radiosityToFile ? image.radiosityCache : std::move(image.radiosityCache));
+        if (o_.radiosityToFile) job.radiosityCache = std::move(image.radiosityCache);
+    }
+
+    // The frame's file: encoded into memory (+O-) or flushed under a
+    // temporary name; stage 3 writes or renames it.
+    void encodeJob(Job& job, const image::EncodedImage& file) const {
+        const auto start = Clock::now();
+        if (toStdout_) {
+            job.encoded = image::encodeFile(seq_.fileType, file, "standard output");
+        } else {
+            const fs::path temporary =
+                image::writeTemporary(job.frame->output, seq_.fileType, file);
+            job.temporary = temporary;
+            const auto hash = hashFile(temporary, &job.fileSize);
+            if (!hash)
+                throw std::runtime_error(
+                    fmt::format("cannot read back '{}' for the journal", temporary.string()));
+            job.fileHash = *hash;
+        }
+        job.writeSeconds = secondsSince(start);
+    }
+
+    // Output_AOVs' layers (render/aov_pass.h) and the EXR compression:
+    // nothing is traced for them unless asked.
+    void addLayers(image::EncodedImage& file, const render::World& world,
+                   const render::FrameSettings& settings) const {
+        if (seq_.fileType != image::FileType::EXR) return;
+        file.compression = o_.exrCompression;
+        if (!aovs_.any()) return;
+        render::AovImage layers =
+            render::renderAovs(world, aovs_, settings.width, settings.height, settings.window);
+        file.extraNames = std::move(layers.names);
+        file.extraValues = std::move(layers.values);
+    }
+
     // Stage 2, in parallel: build the world, render, encode.
     void renderJob(Job& job) {
         if (job.kind != Job::Kind::Render || job.failed || job.deferred || decided_ ||
@@ -680,29 +773,23 @@ class Run {
             const auto gamma = image::GammaEncoding::forScene(
                 job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
                 job.scene->languageVersion, o_.fileGamma);
-            const render::FrameSettings settings = frameSettings(gamma);
+            render::FrameSettings settings = frameSettings(gamma);
             if (settings.alpha) refuseAlphaWith(*job.scene);
-            const render::FrameImage image = render::renderFrame(world, settings, job.stats);
+            const bool seeds = radiosityCarry(settings);
+            render::FrameImage image = render::renderFrame(world, settings, job.stats);
+            keepRadiosity(job, image, seeds);
             job.shapeTests = world.shapeTests();
             job.renderSeconds = secondsSince(start);
             // Encoding, compression and the flush to disk happen here, in
             // parallel; stage 3 only renames and journals.
-            if (toStdout_ && !decided_) {
+            if ((toStdout_ || toFiles_) && !decided_) {
                 start = Clock::now();
-                job.encoded =
-                    image::encodeFile(seq_.fileType, fileImage(image, gamma), "standard output");
-                job.writeSeconds = secondsSince(start);
-            } else if (toFiles_ && !decided_) {
-                start = Clock::now();
-                const fs::path temporary = image::writeTemporary(job.frame->output, seq_.fileType,
-                                                                 fileImage(image, gamma));
-                job.temporary = temporary;
-                const auto hash = hashFile(temporary, &job.fileSize);
-                if (!hash)
-                    throw std::runtime_error(
-                        fmt::format("cannot read back '{}' for the journal", temporary.string()));
-                job.fileHash = *hash;
-                job.writeSeconds = secondsSince(start);
+                image::EncodedImage file = fileImage(image, gamma);
+                addLayers(file, world, settings);  // a render pass, timed with the render
+                job.renderSeconds += secondsSince(start);
+                if (sheet_)
+                    job.thumbnail = shrinkToFit(rgb8Of(file), kThumbnailWidth, kThumbnailHeight);
+                encodeJob(job, file);
             }
             logEvent(LogLevel::Debug, "render_done",
                      {{"frame", job.frame->number},
@@ -768,6 +855,8 @@ class Run {
             ++finished_;
             kept_.push_back({frame.number, frame.clock, frame.output.filename().string()});
             progress_.finished(frame.number, true);
+            if (sheet_) sheet_->kept(frame);
+            saveSheet(false);
             logEvent(LogLevel::Info, "kept",
                      {{"frame", frame.number},
                       {"clock", frame.clock},
@@ -807,10 +896,20 @@ class Run {
             job.commitSeconds = secondsSince(start);
             job.writeSeconds += job.commitSeconds;
         }
+        if (!job.failed && o_.radiosityToFile) {
+            try {
+                render::writeRadiosityFile(o_.radiosityFile, job.radiosityCache);
+            } catch (const std::exception& e) {
+                failJob(job, fmt::format("error: frame {}: {}", frame.number, e.what()));
+            }
+            job.radiosityCache = {};
+        }
         if (job.failed) {
             logEvent(LogLevel::Error, "failed",
                      {{"frame", frame.number}, {"clock", frame.clock}, {"reason", job.failure}});
             if (toFiles_) saveLog(log, frame);
+            if (sheet_) sheet_->failed(frame, job.failure);
+            saveSheet(false);
             return decide({Outcome::Kind::Fatal, "", &frame});
         }
         ++finished_;
@@ -820,6 +919,11 @@ class Run {
                             job.commitSeconds, job.stats.photons});
         const double seconds =
             job.parseSeconds + job.prepareSeconds + job.renderSeconds + job.writeSeconds;
+        if (sheet_) {
+            sheet_->rendered(frame, seconds, totalRays(job.stats.rays), job.thumbnail);
+            job.thumbnail = {};
+            saveSheet(false);
+        }
         const std::string where = toFiles_    ? frame.output.string()
                                   : toStdout_ ? std::string("(standard output)")
                                               : std::string("(no file)");
@@ -852,8 +956,8 @@ class Run {
         // The image is complete and journalled already: a log that cannot
         // be written ends the run but keeps the frame.
         if (toFiles_ && !saveLog(log, frame)) return decide({Outcome::Kind::Fatal, "", &frame});
-        progress_.finished(frame.number, false);
-        switch (runHook(o_.commands[static_cast<int>(ShellHook::PostFrame)], values(&frame))) {
+        progress_.finished(frame.number, false, seconds);
+        switch (hook(ShellHook::PostFrame, values(&frame))) {
             case HookAction::Continue:
             case HookAction::SkipFrame:
                 break;
@@ -907,7 +1011,69 @@ class Run {
         try {
             util::replaceFileDurably(path, text);
         } catch (const std::exception& e) {
+            logEvent(LogLevel::Warn, "write_failed",
+                     {{"file", path.string()}, {"reason", std::string(e.what())}});
             say(TextStream::Warning, fmt::format("frameray: warning: {}\n", e.what()));
+        }
+    }
+
+    // Preview_Video, once every frame of the whole sequence (every shard's)
+    // is on disk: the run that completes it makes the video (a shard that
+    // finishes before the others, or a run stopped early, makes none; a
+    // later +C run does). A video that cannot be made fails the run; the
+    // frames stay as they are.
+    bool makeVideo() {
+        if (o_.previewVideo.empty() || !toFiles_ || !seq_.animated) return true;
+        options::RenderOptions whole = o_;
+        whole.shardIndex = 0;
+        whole.shardCount = 1;
+        const Sequence all = planSequence(whole);
+        std::vector<fs::path> frames;
+        size_t present = 0;
+        for (const FrameSpec& f : all.frames) {
+            std::error_code ec;
+            present += fs::is_regular_file(f.output, ec);
+            frames.push_back(f.output);
+        }
+        if (present < frames.size()) {
+            logEvent(LogLevel::Info, "video_waiting",
+                     {{"frames_present", present}, {"frames", frames.size()}});
+            if (o_.verbose)
+                say(TextStream::Render,
+                    fmt::format("preview video: {} of {} frames exist; the run that completes the "
+                                "sequence makes it\n",
+                                present, frames.size()));
+            return true;
+        }
+        const fs::path folder = all.frames.front().output.parent_path();
+        const fs::path video =
+            (folder.empty() ? fs::path(".") : folder) / (seq_.sceneName + "." + o_.previewVideo);
+        try {
+            makePreviewVideo(frames, video, o_.previewVideo, o_.previewFps);
+        } catch (const std::exception& e) {
+            logEvent(LogLevel::Error, "video_failed", {{"reason", std::string(e.what())}});
+            say(TextStream::Fatal, fmt::format("frameray: error: preview video: {}\n", e.what()));
+            return false;
+        }
+        logEvent(LogLevel::Info, "video", {{"file", video.string()}, {"frames", frames.size()}});
+        if (o_.verbose)
+            say(TextStream::Render, fmt::format("preview video: {} ({} frames at {} per second)\n",
+                                                video.string(), frames.size(), o_.previewFps));
+        return true;
+    }
+
+    // The contact sheet, when asked for: a page that cannot be written is
+    // a warning (the frames are what matters), said once.
+    void saveSheet(bool final) {
+        if (!sheet_) return;
+        try {
+            sheet_->save(final);
+        } catch (const std::exception& e) {
+            logEvent(LogLevel::Warn, "write_failed",
+                     {{"file", sheet_->pagePath().string()}, {"reason", std::string(e.what())}});
+            say(TextStream::Warning,
+                fmt::format("frameray: warning: contact sheet: {}\n", e.what()));
+            sheet_.reset();
         }
     }
 
@@ -924,7 +1090,7 @@ class Run {
     }
 
     int finish() {
-        switch (runHook(o_.commands[static_cast<int>(ShellHook::PostScene)], values(nullptr))) {
+        switch (hook(ShellHook::PostScene, values(nullptr))) {
             case HookAction::UserAbort:
                 return userAbort();
             case HookAction::Fatal:
@@ -948,9 +1114,30 @@ class Run {
 
     void say(TextStream stream, const std::string& text) const { streams_.write(stream, text); }
 
+    // A *_Command hook, run and logged (nothing when the option is empty).
+    HookAction hook(ShellHook which, const HookValues& v) {
+        const options::ShellCommand& command = o_.commands[static_cast<int>(which)];
+        if (command.command.empty()) return HookAction::Continue;
+        const auto start = Clock::now();
+        int exitCode = 0;
+        const HookAction action = runHook(command, v, &exitCode);
+        logEvent(exitCode == 0 ? LogLevel::Info : LogLevel::Warn, "hook",
+                 {{"hook", options::kShellHookNames[static_cast<int>(which)]},
+                  {"frame", v.frame},
+                  {"clock", v.clock},
+                  {"exit_code", exitCode},
+                  {"action", kHookActionNames[static_cast<int>(action)]},
+                  {"seconds", secondsSince(start)}});
+        return action;
+    }
+
     int fatal(const std::string& why, const FrameSpec* frame) {
-        if (!why.empty()) say(TextStream::Fatal, fmt::format("frameray: error: {}\n", why));
-        runHook(o_.commands[static_cast<int>(ShellHook::FatalError)], values(frame));
+        if (!why.empty()) {
+            logEvent(LogLevel::Error, "fatal",
+                     {{"reason", why}, {"frame", frame ? frame->number : 0}});
+            say(TextStream::Fatal, fmt::format("frameray: error: {}\n", why));
+        }
+        hook(ShellHook::FatalError, values(frame));
         return 1;
     }
 
@@ -965,7 +1152,7 @@ class Run {
         acknowledgeStop();
         logEvent(LogLevel::Warn, "interrupted", {{"frames_finished", finished_.load()}});
         say(TextStream::Fatal, stopMessage());
-        runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
+        hook(ShellHook::UserAbort, values(current_));
         return 2;
     }
 
@@ -983,7 +1170,7 @@ class Run {
                     }
         }
         std::fputs(stopMessage().c_str(), stderr);
-        runHook(o_.commands[static_cast<int>(ShellHook::UserAbort)], values(current_));
+        hook(ShellHook::UserAbort, values(current_));
     }
 
     static constexpr size_t kMaxDefaultFramesInFlight = 16;
@@ -992,8 +1179,9 @@ class Run {
     // Output_File_Name=- (+O-): the images go to standard output, one
     // after another in frame order (povray writes them there too); no
     // files, journal, frame logs or sequence.json then.
-    const bool toStdout_ = o_.outputToFile && o_.outputFile == "-";
-    const bool toFiles_ = o_.outputToFile && !toStdout_;
+    const bool toStdout_ = o_.writesImages() && o_.outputFile == "-";
+    const bool toFiles_ = o_.writesImages() && !toStdout_;
+    const render::AovRequest aovs_ = aovRequest(o_);
 
     // povray writes grey PNG files with 16 bits whatever the depth asked
     // (measured: Grayscale_Output with +FN8 gives a 16-bit grey PNG).
@@ -1024,8 +1212,9 @@ class Run {
     Progress progress_;
     sdl::TokenCache cache_;  // shared by the frames: files are lexed once
     std::unique_ptr<Journal> journal_;
-    std::unique_ptr<RunLog> runLog_;  // null: no run log
-    FileHashes hashes_;               // input files' hashes, read once per run
+    std::unique_ptr<RunLog> runLog_;       // null: no run log
+    std::unique_ptr<ContactSheet> sheet_;  // null: no Contact_Sheet
+    FileHashes hashes_;                    // input files' hashes, read once per run
     // Files the sequence's frames wrote (stage 1 adds each frame's as it
     // is parsed): state passed between frames, not inputs.
     std::set<std::string> written_;
@@ -1042,6 +1231,11 @@ class Run {
     std::deque<std::unique_ptr<Job>> jobs_;
     size_t head_ = 0;
     std::mutex decideMutex_;
+    std::once_flag radiosityFileRead_;
+    std::shared_ptr<const std::vector<render::RadiositySample>> radiosityFile_;
+    // Radiosity_Stable: whether the seeding frame has started, and its cache.
+    std::atomic<bool> radiosityStableStarted_{false};
+    std::shared_ptr<const std::vector<render::RadiositySample>> radiosityStable_;
     std::atomic<bool> decided_{false};
     Outcome outcome_;
 
@@ -1062,7 +1256,7 @@ int runSequence(const options::RenderOptions& o, const Sequence& seq) {
     // The image module (OpenImageIO) loads on another core while the first
     // frame parses (image/codecs.h).
     // PNG frames are written without it (image/png_writer.h).
-    if (o.outputToFile && !seq.frames.empty() && seq.fileType != image::FileType::PNG)
+    if (o.writesImages() && !seq.frames.empty() && seq.fileType != image::FileType::PNG)
         image::preloadCodecs();
     if (seq.frames.empty()) {
         // More shards than frames: nothing is this shard's.
@@ -1072,6 +1266,13 @@ int runSequence(const options::RenderOptions& o, const Sequence& seq) {
                          seq.shardIndex, seq.shardCount, seq.framesInAllShards);
         return 0;
     }
+    // A preview video that could not be made is known before any frame.
+    if (!o.previewVideo.empty() && o.writesImages() && o.outputFile != "-" && seq.animated) try {
+            checkVideoEncoder(o.previewVideo);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "frameray: error: %s\n", e.what());
+            return 2;
+        }
     // Shell-outs are refused before anything runs unless allowed.
     if (const std::string refusal = shellCommandRefusal(o); !refusal.empty()) {
         std::fprintf(stderr, "frameray: error: %s\n", refusal.c_str());

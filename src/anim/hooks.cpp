@@ -146,7 +146,7 @@ std::string shellCommandRefusal(const options::RenderOptions& o) {
     return {};
 }
 
-HookAction runHook(const options::ShellCommand& hook, const HookValues& values) {
+HookAction runHook(const options::ShellCommand& hook, const HookValues& values, int* exitCode) {
     if (hook.command.empty()) return HookAction::Continue;
     const std::string cmd = substituteCommand(hook.command, values);
     std::fflush(nullptr);
@@ -156,6 +156,7 @@ HookAction runHook(const options::ShellCommand& hook, const HookValues& values) 
         code = WEXITSTATUS(status);
     else if (status != -1)
         code = 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    if (exitCode) *exitCode = code;
     return returnAction(hook.action, code);
 }
 

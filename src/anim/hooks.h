@@ -11,6 +11,8 @@ namespace frameray::anim {
 
 // What the run does after a shell-out.
 enum class HookAction { Continue, SkipFrame, SkipAll, Quit, UserAbort, Fatal };
+inline constexpr const char* kHookActionNames[] = {"continue", "skip_frame", "skip_all",
+                                                   "quit",     "user_abort", "fatal"};
 
 struct HookValues {
     std::string output;         // %o
@@ -34,6 +36,9 @@ std::string shellCommandRefusal(const options::RenderOptions& options);
 
 // Runs the hook's command through /bin/sh (nothing when it has none) and
 // returns what to do next.
-HookAction runHook(const options::ShellCommand& hook, const HookValues& values);
+// `exitCode`, when given, receives the command's exit status (128 + the
+// signal for a command killed by one; -1 when no shell could be started).
+HookAction runHook(const options::ShellCommand& hook, const HookValues& values,
+                   int* exitCode = nullptr);
 
 }  // namespace frameray::anim

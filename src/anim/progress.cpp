@@ -35,7 +35,7 @@ double Progress::elapsed() const {
 }
 
 std::string Progress::terminalLine(size_t done, size_t total, const std::set<int>& current,
-                                   double elapsed, double remaining) {
+                                   double elapsed, double remaining, const Pace& pace) {
     const double percent =
         total ? 100.0 * static_cast<double>(done) / static_cast<double>(total) : 100.0;
     std::string rendering;
@@ -47,9 +47,14 @@ std::string Progress::terminalLine(size_t done, size_t total, const std::set<int
         }
         rendering += fmt::format(" {}", f);
     }
-    return fmt::format("frames {}/{} ({:.0f}%) | rendering{} | elapsed {} | ETA {}", done, total,
-                       percent, rendering.empty() ? " -" : rendering, formatDuration(elapsed),
-                       formatDuration(remaining));
+    std::string speed;
+    if (pace.fps >= 0) speed += fmt::format(" | {:.2f} frames/s", pace.fps);
+    if (pace.slowestSeconds >= 0)
+        speed += fmt::format(" | slowest {} ({})", pace.slowestFrame,
+                             formatDuration(pace.slowestSeconds));
+    return fmt::format("frames {}/{} ({:.0f}%){} | rendering{} | elapsed {} | ETA {}", done, total,
+                       percent, speed, rendering.empty() ? " -" : rendering,
+                       formatDuration(elapsed), formatDuration(remaining));
 }
 
 void Progress::started(int frame) {
@@ -59,13 +64,27 @@ void Progress::started(int frame) {
     draw(false);
 }
 
-void Progress::finished(int frame, bool kept) {
+// Frames this run rendered per second of the run so far (kept frames cost
+// nothing), and the slowest of them.
+Progress::Pace Progress::pace(double elapsed) const {
+    Pace p;
+    if (rendered_ > 0 && elapsed > 0) p.fps = static_cast<double>(rendered_) / elapsed;
+    p.slowestFrame = slowestFrame_;
+    p.slowestSeconds = slowestSeconds_;
+    return p;
+}
+
+void Progress::finished(int frame, bool kept, double seconds) {
     if (mode_ == ProgressMode::Silent) return;
     std::string line;
     {
         std::lock_guard lock(mutex_);
         current_.erase(frame);
         ++(kept ? kept_ : rendered_);
+        if (!kept && seconds > slowestSeconds_) {
+            slowestSeconds_ = seconds;
+            slowestFrame_ = frame;
+        }
         const double t = elapsed();
         if (mode_ == ProgressMode::Terminal) {
             draw(true);
@@ -74,10 +93,15 @@ void Progress::finished(int frame, bool kept) {
         // Times printed with two decimals and " s", the way the frame
         // statistics print theirs.
         const double remaining = estimateRemaining(rendered_, kept_, total_, t);
+        const Pace p = pace(t);
         line = fmt::format(
-            "progress: frame {}{} - {} of {} done, elapsed {:.2f} s, ETA {}\n", frame,
+            "progress: frame {}{} - {} of {} done, elapsed {:.2f} s, ETA {}{}{}\n", frame,
             kept ? " (kept)" : "", rendered_ + kept_, total_, t,
-            remaining < 0 ? std::string("unknown") : fmt::format("{:.2f} s", remaining));
+            remaining < 0 ? std::string("unknown") : fmt::format("{:.2f} s", remaining),
+            p.fps < 0 ? std::string() : fmt::format(", {:.2f} frames/s", p.fps),
+            p.slowestSeconds < 0
+                ? std::string()
+                : fmt::format(", slowest frame {} ({:.2f} s)", p.slowestFrame, p.slowestSeconds));
     }
     printLine_(line);
 }
@@ -95,7 +119,7 @@ void Progress::draw(bool force) {
     lastDraw_ = now;
     const double t = elapsed();
     const std::string line = terminalLine(rendered_ + kept_, total_, current_, t,
-                                          estimateRemaining(rendered_, kept_, total_, t));
+                                          estimateRemaining(rendered_, kept_, total_, t), pace(t));
     // Carriage return, the line, erase to its end.
     std::fprintf(stderr, "\r%s\033[K", line.c_str());
     std::fflush(stderr);

@@ -1,6 +1,7 @@
 // Progress of an animation on the console: on a terminal one line that
-// keeps updating (frames done/total, the frames rendering now, elapsed
-// time, ETA); elsewhere a plain line per finished frame; nothing with -V.
+// keeps updating (frames done/total, frames rendered per second, the
+// slowest frame so far, the frames rendering now, elapsed time, ETA);
+// elsewhere a plain line per finished frame; nothing with -V.
 #pragma once
 
 #include <chrono>
@@ -27,6 +28,14 @@ double estimateRemaining(size_t rendered, size_t kept, size_t total, double elap
 // "12.3 s", "4 min 05 s", "2 h 03 min".
 std::string formatDuration(double seconds);
 
+// Frames rendered per second and the slowest frame so far; fps < 0 or
+// slowestSeconds < 0: not known yet (left out of the line).
+struct ProgressPace {
+    double fps = -1;
+    int slowestFrame = 0;
+    double slowestSeconds = -1;
+};
+
 class Progress final : public ConsoleOverlay {
   public:
     using Clock = std::chrono::steady_clock;
@@ -37,7 +46,8 @@ class Progress final : public ConsoleOverlay {
     ProgressMode mode() const { return mode_; }
 
     void started(int frame);
-    void finished(int frame, bool kept);
+    // `seconds`: the frame's own time (parse to write), for the slowest.
+    void finished(int frame, bool kept, double seconds = 0);
     // Redraws the terminal line (elapsed time moves); cheap, rate limited.
     void tick();
     // Around other console output, so it does not land inside the line.
@@ -47,8 +57,9 @@ class Progress final : public ConsoleOverlay {
     void done();
 
     // The text of the terminal line (exposed for tests).
+    using Pace = ProgressPace;
     static std::string terminalLine(size_t done, size_t total, const std::set<int>& current,
-                                    double elapsed, double remaining);
+                                    double elapsed, double remaining, const Pace& pace = {});
 
   private:
     void draw(bool force);  // mutex held
@@ -60,6 +71,9 @@ class Progress final : public ConsoleOverlay {
     Clock::time_point start_;
     std::mutex mutex_;
     size_t rendered_ = 0, kept_ = 0;
+    Pace pace(double elapsed) const;  // mutex held
+    int slowestFrame_ = 0;
+    double slowestSeconds_ = -1;
     std::set<int> current_;
     bool visible_ = false;
     bool finished_ = false;

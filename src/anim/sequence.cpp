@@ -150,7 +150,7 @@ int windowEnd(double v, int size) {
 }  // namespace
 
 void checkOutputFolder(const options::RenderOptions& o, const Sequence& seq) {
-    if (!o.outputToFile || seq.frames.empty() || o.outputFile == "-" ||
+    if (!o.writesImages() || seq.frames.empty() || o.outputFile == "-" ||
         (!o.outputFile.empty() && o.outputFile.back() == '/'))
         return;
     const fs::path folder = seq.frames.front().output.parent_path();
@@ -168,6 +168,11 @@ Sequence planSequence(const options::RenderOptions& o) {
     seq.fileType = fileTypeFor(o.outputType);
     seq.sceneName = fs::path(o.inputFile).stem().string();
     seq.runLogName = seq.sceneName + ".frameray.log";
+    seq.sheetName = seq.sceneName;
+    // The extra layers live in EXR files only; elsewhere they would be lost.
+    if (!o.outputAovs.empty() && seq.fileType != image::FileType::EXR)
+        throw options::OptionError(
+            "Output_AOVs needs EXR frames: add +FE (Output_File_Type=E), or drop Output_AOVs");
 
     // Render window.
     seq.window.x0 = windowStart(o.startColumn, o.width);
@@ -261,6 +266,7 @@ Sequence planSequence(const options::RenderOptions& o) {
                       fmt::format(".{}.{}.frameray-journal", firstOut.stem().string(), tag);
         seq.statisticsName = fmt::format("sequence.{}.json", tag);
         seq.runLogName = fmt::format("{}.{}.frameray.log", seq.sceneName, tag);
+        seq.sheetName = fmt::format("{}.{}", seq.sceneName, tag);
     }
     return seq;
 }

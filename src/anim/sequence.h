@@ -96,6 +96,9 @@ struct Sequence {
     // frameray's run log beside the frames (anim/run_log.h): NAME.frameray.log,
     // a shard's NAME.shard-I-of-N.frameray.log.
     std::string runLogName;
+    // The contact sheet's base name (NAME.html, NAME-sheet.png): the scene's
+    // name, a shard's NAME.shard-I-of-N.
+    std::string sheetName;
 };
 
 // Throws options::OptionError when the options make no sense (a render

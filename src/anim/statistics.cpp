@@ -14,7 +14,8 @@ std::string jsonRays(const render::RayCounts& r) {
     return fmt::format(
         "{{\"camera\": {}, \"shadow\": {}, \"reflection\": {}, \"refraction\": {}, "
         "\"transmission\": {}, \"media_samples\": {}, \"radiosity\": {}}}",
-        r.camera, r.shadow, r.reflection, r.refraction, r.transmission, r.mediaSamples, r.radiosity);
+        r.camera, r.shadow, r.reflection, r.refraction, r.transmission, r.mediaSamples,
+        r.radiosity);
 }
 
 std::string jsonTests(const render::ShapeTestCounts& tests) {
@@ -36,11 +37,11 @@ std::string jsonPhotons(const std::optional<render::PhotonStats>& p) {
         p->shot, p->stored, p->memoryBytes, p->gatherRadius, p->spacing);
 }
 
+}  // namespace
+
 std::uint64_t totalRays(const render::RayCounts& r) {
     return r.camera + r.shadow + r.reflection + r.refraction + r.transmission + r.radiosity;
 }
-
-}  // namespace
 
 std::string jsonString(const std::string& text) {
     std::string out = "\"";

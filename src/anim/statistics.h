@@ -63,4 +63,7 @@ std::string summaryTable(const RunFigures& run, const std::vector<FrameRecord>& 
 
 std::string jsonString(const std::string& text);
 
+// Every ray a frame traced (media sample points are not rays).
+std::uint64_t totalRays(const render::RayCounts& rays);
+
 }  // namespace frameray::anim

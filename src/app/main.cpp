@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
         for (const std::string& w : options::applyArguments(opts, args)) warnings.push_back(w);
         for (const std::string& w : warnings)
             std::fprintf(stderr, "frameray: warning: %s\n", w.c_str());
+        opts.optionWarnings = std::move(warnings);
         if (opts.inputFile.empty())
             throw options::OptionError("no scene file given (Input_File_Name or +I)");
         if (!opts.createIni.empty()) {

@@ -29,6 +29,11 @@ struct EncodeRequest {
     PixelType pixelType = PixelType::UInt8;
     const void* pixels = nullptr;
     const char* compression = nullptr;  // e.g. "rle", "none"; null: the format's default
+    // Half files only: when not empty, every channel's name; the channels
+    // past the first `halfChannels` are stored as 32-bit floats (depth and
+    // ids need the precision), a channel named "Z" is the depth channel.
+    std::vector<std::string> channelNames;
+    int halfChannels = 0;
 };
 
 struct CodecTable {

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
+
+#include "image/decode_file.h"
 
 namespace frameray::image {
 
@@ -183,15 +183,7 @@ PaletteImage decodeGif(const std::vector<uint8_t>& bytes) {
 }
 
 PaletteImage readGif(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error(fmt::format("cannot read '{}'", path.string()));
-    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
-                                     std::istreambuf_iterator<char>());
-    try {
-        return decodeGif(bytes);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), e.what()));
-    }
+    return decodeFile(path, decodeGif);
 }
 
 }  // namespace frameray::image

@@ -57,6 +57,29 @@ std::vector<T> quantize(const EncodedImage& image, int bits, double containerMax
     return out;
 }
 
+// The colour channels followed by the extra ones, pixel by pixel; names
+// the channels in `request` (colour as half floats, the rest as floats).
+std::vector<float> withExtraChannels(const EncodedImage& image, EncodeRequest& request) {
+    const size_t base = static_cast<size_t>(image.channels), extra = image.extraNames.size();
+    const size_t pixels = static_cast<size_t>(image.width) * image.height;
+    std::vector<float> out(pixels * (base + extra));
+    for (size_t i = 0; i < pixels; ++i) {
+        std::copy_n(&image.values[i * base], base, &out[i * (base + extra)]);
+        std::copy_n(&image.extraValues[i * extra], extra, &out[i * (base + extra) + base]);
+    }
+    static constexpr const char* kColour[] = {"R", "G", "B", "A"};
+    request.channelNames.clear();
+    if (base == 1)
+        request.channelNames.push_back("Y");
+    else
+        for (size_t c = 0; c < base && c < 4; ++c) request.channelNames.push_back(kColour[c]);
+    request.channelNames.insert(request.channelNames.end(), image.extraNames.begin(),
+                                image.extraNames.end());
+    request.halfChannels = static_cast<int>(base);
+    request.channels = static_cast<int>(base + extra);
+    return out;
+}
+
 bool hasDeepChannels(FileType t) {
     return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF;
 }
@@ -115,9 +138,16 @@ std::vector<unsigned char> encodeFile(FileType type, const EncodedImage& image,
     request.channels = image.channels;
     if (type == FileType::TGA_RLE) request.compression = "rle";
     if (type == FileType::TGA) request.compression = "none";
+    if (type == FileType::EXR && !image.compression.empty())
+        request.compression = image.compression.c_str();
     std::vector<uint16_t> samples16;
     std::vector<uint8_t> samples8;
-    if (floatFile) {
+    std::vector<float> layered;
+    if (floatFile && !image.extraNames.empty()) {
+        layered = withExtraChannels(image, request);
+        request.pixelType = PixelType::Half;
+        request.pixels = layered.data();
+    } else if (floatFile) {
         request.pixelType = PixelType::Half;
         request.pixels = image.values.data();
     } else if (deep) {

@@ -32,6 +32,13 @@ struct EncodedImage {
     int bitDepth = 8;
     std::vector<float> values;
     Dither dither = Dither::None;
+    // EXR only: more channels after the colour (Output_AOVs), stored as
+    // 32-bit floats under these names, extraNames.size() per pixel in
+    // `extraValues`; and the compression (OpenEXR's codec name, empty: the
+    // writer's default).
+    std::vector<std::string> extraNames;
+    std::vector<float> extraValues;
+    std::string compression;
 };
 
 const char* extensionFor(FileType type);

@@ -28,6 +28,14 @@ std::vector<unsigned char> encode(const EncodeRequest& r) {
         // without this the writer would divide it by alpha again.
         spec.attribute("oiio:UnassociatedAlpha", 1);
     }
+    if (!r.channelNames.empty()) {
+        spec.channelnames = r.channelNames;
+        spec.channelformats.assign(r.channels, OIIO::TypeDesc::FLOAT);
+        for (int c = 0; c < r.halfChannels && c < r.channels; ++c)
+            spec.channelformats[c] = OIIO::TypeDesc::HALF;
+        for (int c = 0; c < r.channels; ++c)
+            if (r.channelNames[c] == "Z") spec.z_channel = c;
+    }
     if (r.compression) spec.attribute("compression", r.compression);
     // Encoded in memory: the caller writes the file itself, checking every
     // write (OpenImageIO's own writers do not all report a full disk).

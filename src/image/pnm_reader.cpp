@@ -8,6 +8,8 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "image/decode_file.h"
+
 namespace frameray::image {
 
 namespace {
@@ -118,15 +120,7 @@ SourceImage decodePnm(const std::vector<std::uint8_t>& b) {
 }
 
 SourceImage readPnm(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error(fmt::format("cannot read '{}'", path.string()));
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),
-                                          std::istreambuf_iterator<char>());
-    try {
-        return decodePnm(bytes);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), e.what()));
-    }
+    return decodeFile(path, decodePnm);
 }
 
 }  // namespace frameray::image

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <array>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
+
+#include "image/decode_file.h"
 
 namespace frameray::image {
 
@@ -133,15 +133,7 @@ SourceImage decodeTga(const std::vector<std::uint8_t>& b) {
 }
 
 SourceImage readTga(const std::filesystem::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw std::runtime_error(fmt::format("cannot read '{}'", path.string()));
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),
-                                          std::istreambuf_iterator<char>());
-    try {
-        return decodeTga(bytes);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), e.what()));
-    }
+    return decodeFile(path, decodeTga);
 }
 
 }  // namespace frameray::image

@@ -96,6 +96,37 @@ void mark(RenderOptions& o, std::string_view key) {
     o.explicitlySet.emplace(key);
 }
 
+// Output_AOVs: a comma-separated subset of kAovNames ("none" or nothing:
+// no extra layers), kept in kAovNames order without repeats.
+std::vector<std::string> parseAovs(std::string_view text) {
+    const std::string v = trimQuotes(text);
+    std::vector<bool> asked(std::size(kAovNames), false);
+    size_t start = 0;
+    while (start <= v.size()) {
+        size_t end = v.find_first_of(", ", start);
+        if (end == std::string::npos) end = v.size();
+        const std::string_view word = std::string_view(v).substr(start, end - start);
+        start = end + 1;
+        if (word.empty() || iequals(word, "none") || iequals(word, "off")) continue;
+        size_t i = 0;
+        while (i < std::size(kAovNames) && !iequals(word, kAovNames[i])) ++i;
+        if (i == std::size(kAovNames))
+            throw std::invalid_argument(fmt::format(
+                "unknown layer '{}' (use depth, normal, object_id, albedo, motion)", word));
+        asked[i] = true;
+    }
+    std::vector<std::string> out;
+    for (size_t i = 0; i < asked.size(); ++i)
+        if (asked[i]) out.emplace_back(kAovNames[i]);
+    return out;
+}
+
+std::string joinedAovs(const RenderOptions& o) {
+    std::string s;
+    for (const std::string& a : o.outputAovs) s += (s.empty() ? "" : ",") + a;
+    return s.empty() ? "none" : s;
+}
+
 // Output_File_Type letters of POV-Ray 3.7 and an optional bit depth: "N",
 // "N16", "E".
 void applyFileType(RenderOptions& o, std::string_view v) {
@@ -200,9 +231,6 @@ void acceptBool(RenderOptions& o, const OptionInput& in) {
 void acceptInt(RenderOptions& o, const OptionInput& in) {
     o.acceptedValues[std::string(in.key)] = num(toInt(in.value));
 }
-void acceptPath(RenderOptions& o, const OptionInput& in) {
-    o.acceptedValues[std::string(in.key)] = quoted(trimQuotes(in.value));
-}
 // A one-letter setting (Palette, Video_Mode); povray keeps the first
 // letter, in lower case.
 void acceptLetter(RenderOptions& o, const OptionInput& in) {
@@ -213,10 +241,6 @@ void acceptLetter(RenderOptions& o, const OptionInput& in) {
 }
 // POV-Ray 3.6 options 3.7 dropped: read, not checked, not written back.
 void acceptObsolete(RenderOptions&, const OptionInput&) {}
-bool acceptedOn(const RenderOptions& o, std::string_view key) {
-    const auto it = o.acceptedValues.find(key);
-    return it != o.acceptedValues.end() && it->second == "On";
-}
 Lines writeNothing(const RenderOptions&) {
     return {};
 }
@@ -398,6 +422,12 @@ const OptionSpec kOptions[] = {
     FR_ACCEPTED("Clockless_Animation", "KLA", Bool, "off",
                 "Clockless animation (no effect: POV-Ray 3.7 renders the same frames with it).",
                 acceptBool, kPovrayIgnores),
+    {"Contact_Sheet", "CS", OptionType::Bool, "off",
+     "Beside an animation's frames, NAME.html (every frame as a thumbnail with its number, clock, "
+     "render time and rays, failed frames marked, a play control; self-contained) and "
+     "NAME-sheet.png (a grid of the thumbnails), rewritten as frames finish.",
+     [](RenderOptions& o, const OptionInput& in) { o.contactSheet = toBool(in); },
+     FR_WRITE(onOff(o.contactSheet)), nullptr},
     {"Continue_Trace", "C", OptionType::Bool, "off",
      "Resume a stopped animation: frames the journal records as finished and intact are kept, the "
      "rest rendered.",
@@ -471,6 +501,19 @@ const OptionSpec kOptions[] = {
      "Last row of the render window: a pixel number, or a fraction of the height up to 1.0.",
      [](RenderOptions& o, const OptionInput& in) { o.endRow = toNonNegative(in.value); },
      FR_WRITE(num(o.endRow)), nullptr},
+    {"Exr_Compression", "", OptionType::String, "zip",
+     "Compression of EXR frames (+FE): none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab.",
+     [](RenderOptions& o, const OptionInput& in) {
+         const std::string v = trimQuotes(in.value);
+         for (const std::string_view name : kExrCompressions)
+             if (iequals(v, name)) {
+                 o.exrCompression = std::string(name);
+                 return;
+             }
+         throw std::invalid_argument(fmt::format(
+             "'{}' is not one of none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab", v));
+     },
+     FR_WRITE(o.exrCompression), nullptr},
     FR_STREAM(TextStream::Fatal, "Fatal", "F", "fatal error"),
     FR_HOOK(ShellHook::FatalError, "Fatal_Error", "when a frame fails"),
     {"Field_Render", "UF", OptionType::Bool, "off",
@@ -534,12 +577,10 @@ const OptionSpec kOptions[] = {
     FR_OBSOLETE("Histogram_Grid_Size", "HS", String, "Histogram grid size"),
     FR_OBSOLETE("Histogram_Name", "HN", Path, "Histogram file name"),
     FR_OBSOLETE("Histogram_Type", "HT", String, "Histogram file type"),
-    {"Include_Header", "HI", OptionType::Path, "", "A file included before the scene's first line.",
+    {"Include_Header", "HI", OptionType::Path, "",
+     "A file included before the scene's first line (searched as #include files are).",
      [](RenderOptions& o, const OptionInput& in) { o.includeHeader = trimQuotes(in.value); },
-     FR_WRITE(quoted(o.includeHeader)),
-     [](const RenderOptions& o) -> const char* {
-         return o.includeHeader.empty() ? nullptr : "Include_Header";
-     }},
+     FR_WRITE(quoted(o.includeHeader)), nullptr},
     {"Include_Ini", "", OptionType::IniFile, "",
      "Read another INI file (file.ini or file.ini[Section]) here, as if named on the command "
      "line.",
@@ -624,6 +665,17 @@ const OptionSpec kOptions[] = {
      "Start field rendering on the odd field (accepted, as Field_Render).",
      [](RenderOptions& o, const OptionInput& in) { o.oddField = toBool(in); },
      FR_WRITE(onOff(o.oddField)), nullptr},
+    {"Output_AOVs", "AOV", OptionType::String, "none",
+     "Extra layers in each EXR frame (+FE only), from the camera ray through each pixel's centre: "
+     "any of depth (Z), normal (N.x N.y N.z), object_id (objectId), albedo (albedo.R G B), "
+     "comma-separated. motion is not built yet.",
+     [](RenderOptions& o, const OptionInput& in) { o.outputAovs = parseAovs(in.value); },
+     FR_WRITE(joinedAovs(o)),
+     [](const RenderOptions& o) -> const char* {
+         for (const std::string& a : o.outputAovs)
+             if (a == "motion") return "Output_AOVs=motion (motion vectors)";
+         return nullptr;
+     }},
     {"Output_Alpha", "UA", OptionType::Bool, "off", "Write an alpha channel (transparency mask).",
      [](RenderOptions& o, const OptionInput& in) { o.outputAlpha = toBool(in); },
      FR_WRITE(onOff(o.outputAlpha)),
@@ -669,27 +721,51 @@ const OptionSpec kOptions[] = {
     FR_ACCEPTED("Preview_End_Size", "EP", Int, "1",
                 "Block size of the last mosaic preview pass (no effect: there is no preview).",
                 acceptInt, kNoPreview),
+    {"Preview_Fps", "", OptionType::Float, "24",
+     "Frames per second of the preview video (Preview_Video).",
+     [](RenderOptions& o, const OptionInput& in) {
+         const double v = toFloat(in.value);
+         if (!(v > 0) || v > 1000)
+             throw std::invalid_argument(fmt::format("'{}' is not between 0 and 1000", in.value));
+         o.previewFps = v;
+     },
+     FR_WRITE(num(o.previewFps)), nullptr},
     FR_ACCEPTED("Preview_Start_Size", "SP", Int, "1",
                 "Block size of the first mosaic preview pass (no effect: there is no preview).",
                 acceptInt, kNoPreview),
+    {"Preview_Video", "PV", OptionType::String, "off",
+     "Once every frame of an animation exists: NAME.mp4 (H.264) or NAME.webm (VP9) beside the "
+     "frames, one video frame per image at Preview_Fps, made by the ffmpeg program; off: none.",
+     [](RenderOptions& o, const OptionInput& in) {
+         if (in.fromSwitch && !in.plus) return o.previewVideo.clear();
+         o.previewVideo = choice<std::string>(
+             in.value, {{"off", ""}, {"none", ""}, {"mp4", "mp4"}, {"webm", "webm"}});
+     },
+     FR_WRITE(o.previewVideo.empty() ? std::string("off") : o.previewVideo), nullptr},
     {"Quality", "Q", OptionType::Int, "9", "Render quality 0..11.",
      [](RenderOptions& o, const OptionInput& in) {
          o.quality = std::clamp(toInt(in.value), 0, 11);
      },
      FR_WRITE(num(o.quality))},
-    FR_ACCEPTED("Radiosity_File_Name", "RF", Path, "scene name",
-                "Radiosity cache file for Radiosity_From_File / Radiosity_To_File.", acceptPath,
-                "frameray does not read or write radiosity cache files yet"),
+    {"Radiosity_File_Name", "RF", OptionType::Path, "object.rca",
+     "Radiosity cache file for Radiosity_From_File / Radiosity_To_File (frameray's own format).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityFile = trimQuotes(in.value); },
+     FR_WRITE(quoted(o.radiosityFile)), nullptr},
     {"Radiosity_From_File", "RFI", OptionType::Bool, "off",
-     "Start radiosity from the cache file instead of a pretrace.", acceptBool, nullptr,
-     [](const RenderOptions& o) -> const char* {
-         return acceptedOn(o, "Radiosity_From_File") ? "radiosity cache files" : nullptr;
-     }},
-    {"Radiosity_To_File", "RFO", OptionType::Bool, "off", "Save the radiosity cache to the file.",
-     acceptBool, nullptr,
-     [](const RenderOptions& o) -> const char* {
-         return acceptedOn(o, "Radiosity_To_File") ? "radiosity cache files" : nullptr;
-     }},
+     "Start every frame's radiosity from the samples in the cache file (the pretrace still runs "
+     "and adds samples where the file has too few).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityFromFile = toBool(in); },
+     FR_WRITE(onOff(o.radiosityFromFile)), nullptr},
+    {"Radiosity_Stable", "", OptionType::Bool, "off",
+     "frameray: in an animation, every frame after the first starts its radiosity from the first "
+     "frame's samples, so a static scene under a moving camera does not flicker (for scenes whose "
+     "objects and lights do not move).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityStable = toBool(in); },
+     FR_WRITE(onOff(o.radiosityStable)), nullptr},
+    {"Radiosity_To_File", "RFO", OptionType::Bool, "off",
+     "Save each frame's radiosity samples to the cache file (the last frame's stay).",
+     [](RenderOptions& o, const OptionInput& in) { o.radiosityToFile = toBool(in); },
+     FR_WRITE(onOff(o.radiosityToFile)), nullptr},
     FR_ACCEPTED("Radiosity_Vain_Pretrace", "RVP", Bool, "on",
                 "Show the radiosity pretrace in the preview (no effect on the image).", acceptBool,
                 kNoPreview),
@@ -707,11 +783,10 @@ const OptionSpec kOptions[] = {
      },
      nullptr},
     {"Real_Time_Raytracing", "RTR", OptionType::Bool, "off",
-     "Render the first frame over and over into the preview window (POV-Ray 3.7 beta feature).",
-     acceptBool, nullptr,
-     [](const RenderOptions& o) -> const char* {
-         return acceptedOn(o, "Real_Time_Raytracing") ? "real-time raytracing" : nullptr;
-     }},
+     "POV-Ray 3.7's beta render loop into the preview window: without a display (as always in "
+     "frameray) every frame renders once and no image is written, as povray does.",
+     [](RenderOptions& o, const OptionInput& in) { o.realTimeRaytracing = toBool(in); },
+     FR_WRITE(onOff(o.realTimeRaytracing)), nullptr},
     FR_ACCEPTED("Remove_Bounds", "UR", Bool, "on",
                 "Remove bounded_by from scenes that do not need it (no effect: POV-Ray 3.7 "
                 "ignores it).",

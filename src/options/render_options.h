@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct StreamOptions {
 // The moments POV-Ray shells out, in the order of their option names.
 enum class ShellHook { PreScene, PreFrame, PostFrame, PostScene, UserAbort, FatalError };
 inline constexpr int kShellHooks = 6;
+// The hooks' names in the run log (the INI keys are Pre_Scene_Command ...).
+inline constexpr const char* kShellHookNames[kShellHooks] = {
+    "pre_scene", "pre_frame", "post_frame", "post_scene", "user_abort", "fatal_error"};
 
 struct ShellCommand {
     std::string command;  // empty: none
@@ -44,11 +48,23 @@ struct ShellCommand {
 enum class LogLevel { Debug, Info, Warn, Error, Off };
 enum class LogFormat { Text, Json };
 
+// Output_AOVs' layer names, in the order the option keeps them.
+inline constexpr std::string_view kAovNames[] = {"depth", "normal", "object_id", "albedo",
+                                                 "motion"};
+// Exr_Compression's codec names (OpenEXR's, as OpenImageIO spells them).
+inline constexpr std::string_view kExrCompressions[] = {"none",  "rle", "zips", "zip",  "piz",
+                                                        "pxr24", "b44", "b44a", "dwaa", "dwab"};
+
 struct RenderOptions {
     // Input and output.
     std::string inputFile;
     std::string outputFile;  // empty: scene name in the working folder
     bool outputToFile = true;
+    // Real_Time_Raytracing (+RTR): povray 3.7's beta render loop. Without a
+    // display povray renders every frame once and writes no image; so does
+    // frameray (it has no display).
+    bool realTimeRaytracing = false;
+    bool writesImages() const { return outputToFile && !realTimeRaytracing; }
     char outputType = 'N';  // N P T C E H J B
     int bitDepth = 8;       // bits per colour channel (Bits_Per_Color, +FN16)
     bool outputAlpha = false;
@@ -59,6 +75,16 @@ struct RenderOptions {
     bool dither = false;              // Dither: dither the quantisation to the file's levels
     std::string ditherMethod = "FS";  // Dither_Method: FS, B2, B3, B4
     bool appendFile = false;          // Append_File (+GP): stream files are appended to
+    // Output_AOVs: extra layers of an EXR frame (render/aov_pass.h), in
+    // kAovNames order, no repeats; empty: none.
+    std::vector<std::string> outputAovs;
+    std::string exrCompression = "zip";  // Exr_Compression: OpenEXR's codec name
+
+    // Looking at a sequence: the contact sheet (anim/contact_sheet.h) and
+    // the preview video (anim/preview_video.h) beside the frames.
+    bool contactSheet = false;
+    std::string previewVideo;  // "mp4", "webm"; empty: none
+    double previewFps = 24;
 
     // Image and render window. Rows/columns as given: a value below 1
     // (start) or up to 1 (end) is a fraction of the image, others are
@@ -116,8 +142,19 @@ struct RenderOptions {
     bool testAbort = false;
     int testAbortCount = 1;
     std::string createIni;  // Create_Ini (+GI): write the effective options here
+    // Radiosity cache files (Radiosity_File_Name, _From_File, _To_File;
+    // povray's default name is object.rca, measured) and frameray's
+    // Radiosity_Stable: every frame after the first starts from the first
+    // frame's cache.
+    std::string radiosityFile = "object.rca";
+    bool radiosityFromFile = false;
+    bool radiosityToFile = false;
+    bool radiosityStable = false;
     LogLevel logLevel = LogLevel::Info;
     LogFormat logFormat = LogFormat::Text;
+    // What reading the options warned of (also said on the console before
+    // the run starts): the run log repeats them as option_warning events.
+    std::vector<std::string> optionWarnings;
 
     std::array<StreamOptions, kTextStreams> streams;
     std::array<ShellCommand, kShellHooks> commands;

@@ -55,7 +55,7 @@ std::optional<scene::Ray> CameraRays::generate(double x, double y) const {
 bool CameraRays::meshRays(double x, double y, std::vector<scene::Ray>& rays) const {
     if (camera_.projection != scene::Projection::Mesh || !camera_.mesh) return false;
     camera_.mesh->pixelRays(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)),
-                            static_cast<int>(width_), rays);
+                            static_cast<int>(width_), static_cast<int>(height_), rays);
     return true;
 }
 

@@ -96,9 +96,11 @@ RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, i
     Candidates best;
     best.limit = set.nearestCount;
     auto consider = [&](const RadiositySample& s) {
-        // A sample gathered deeper saw fewer bounces: only as deep or
-        // deeper lookups use it.
-        if (s.depth > depth) return;
+        // Only samples gathered as deep: a shallower one holds more
+        // bounces, a deeper one fewer, than this lookup may see (measured:
+        // a room at recursion_limit 2 and 3 matches povray exactly so,
+        // and is a level too bright when shallower samples are reused).
+        if (s.depth != depth) return;
         const double e = reuseError(s, p, n);
         if (e >= 0 && e < bound) best.offer(e, &s);
     };
@@ -111,7 +113,9 @@ RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, i
     RGB sum(0.0);
     double weights = 0;
     for (int i = 0; i < best.size; ++i) {
-        const double w = 1.0 / std::max(best.error[static_cast<size_t>(i)], 1e-4);
+        // Weights fall smoothly to 0 at the error bound.
+        const double e = best.error[static_cast<size_t>(i)];
+        const double w = (1.0 - e / bound) * (1.0 - e / bound);
         sum += best.sample[static_cast<size_t>(i)]->irradiance * w;
         weights += w;
     }

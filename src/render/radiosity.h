@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "render/radiosity_cache.h"
@@ -101,6 +102,8 @@ class RadiosityTask {
     // Whether a lookup that found `found` samples calls for a new one.
     bool wantsSample(int found, int depth) const;
     void add(const RadiositySample& sample);
+    // The samples a final-pass block added (moved out).
+    std::vector<RadiositySample> takeOwn() { return std::move(own_); }
 
     RadiosityCounts counts;
 

@@ -33,12 +33,18 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     if (scene.globals.radiosity && settings.quality >= 9)
         radiosity = std::make_unique<Radiosity>(*scene.globals.radiosity, scene.camera.location,
                                                 scene.languageVersion < 3.7 - 1e-9);
+    if (radiosity && settings.radiosityStart)
+        for (const RadiositySample& s : *settings.radiosityStart) radiosity->add(s);
     const Tracer tracer(world, settings.quality, radiosity.get());
     const CameraRays camera(world.scene().camera, settings.width, settings.height);
     if (radiosity)
         pretraceRadiosity(tracer, camera, *radiosity, window, settings.width, stats.rays,
                           stats.radiosity);
     tbb::combinable<RadiosityCounts> radiosityCounts;
+    // Each final-pass block's own samples, kept by block for the cache.
+    std::vector<std::vector<RadiositySample>> blockSamples;
+    if (radiosity && settings.keepRadiosity)
+        blockSamples.resize(static_cast<size_t>(blocksX) * blocksY);
     std::optional<FocalBlurSampler> focalBlur;
     if (camera.camera().blur.enabled()) focalBlur.emplace(camera);
     tbb::combinable<RayCounts> rayCounts;
@@ -120,6 +126,8 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                                 static_cast<float>(std::clamp(1.0 - pixels[i].transmit, 0.0, 1.0));
                     }
                 if (task) radiosityCounts.local() += task->counts;
+                if (task && !blockSamples.empty())
+                    blockSamples[static_cast<size_t>(index)] = task->takeOwn();
             }
         },
         tbb::simple_partitioner());
@@ -129,6 +137,11 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
         stats.antialias.supersampledPixels += c.supersampledPixels;
         stats.antialias.samples += c.samples;
     });
+    if (radiosity && settings.keepRadiosity) {
+        image.radiosityCache = radiosity->samples();
+        for (const std::vector<RadiositySample>& own : blockSamples)
+            image.radiosityCache.insert(image.radiosityCache.end(), own.begin(), own.end());
+    }
     return image;
 }
 

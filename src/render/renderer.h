@@ -5,11 +5,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "render/antialias.h"
 #include "render/photons.h"
+#include "render/radiosity_cache.h"
 #include "render/tracer.h"
 #include "render/world.h"
 
@@ -27,6 +29,12 @@ struct FrameSettings {
     // Output_Alpha (+UA): the background turns transparent black and each
     // pixel keeps how much of it shows through (FrameImage::alpha).
     bool alpha = false;
+    // Radiosity samples the frame's cache starts with (a cache file, or
+    // the first frame's cache in Radiosity_Stable sequences); the pretrace
+    // and the final pass add to them. Null: an empty cache.
+    std::shared_ptr<const std::vector<RadiositySample>> radiosityStart;
+    // Keep the frame's whole cache in FrameImage::radiosityCache.
+    bool keepRadiosity = false;
 };
 
 // Linear working-space colours, clipped to [0,1], row-major from the top.
@@ -38,6 +46,10 @@ struct FrameImage {
     // rgb is then what the visible surfaces add (the background adds
     // nothing). Empty otherwise.
     std::vector<float> alpha;
+    // With FrameSettings::keepRadiosity: the samples the frame started
+    // with, those its pretrace added, then each final-pass block's in
+    // block order (the same for any thread count).
+    std::vector<RadiositySample> radiosityCache;
 };
 
 struct FrameStats {

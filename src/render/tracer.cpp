@@ -36,8 +36,6 @@ double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
     return std::max(m * 1e-9, 1e-300);
 }
 
-// The region a primitive's surface bounds: its interior, shared with the
-// other primitives of a CSG that inherited it, or the primitive itself.
 // The mirror direction of the view ray about the perturbed normal n. A
 // perturbed normal can send it under the surface; povray then mirrors the
 // view ray about the geometric normal if the ray is behind the perturbed
@@ -60,6 +58,8 @@ RGB unreflected(const RGB& reflectivity) {
                std::max(0.0, 1.0 - reflectivity.b));
 }
 
+// The region a primitive's surface bounds: its interior, shared with the
+// other primitives of a CSG that inherited it, or the primitive itself.
 InteriorStack::Region regionOf(const scene::Object& primitive) {
     if (primitive.interior)
         return {primitive.interior.get(), primitive.interior.get(), primitive.hollow};
@@ -114,7 +114,8 @@ Tracer::Tracer(const World& world, int quality, const Radiosity* radiosity)
       radiosity_(radiosity),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
-      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9) {
+      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9),
+      legacyFilterOpacity_(world.scene().languageVersion < 3.7 - 1e-9) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
     // in reverse declaration order, so the innermost (last listed) is the
@@ -259,8 +260,12 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     // the opaque rest; highlights and reflection are not (measured).
     // The rest is not clamped: filter + transmit above 1 (image maps with
     // alpha and transmit all) takes light away, as in povray.
-    const double seeThrough = surface.filter + surface.transmit;
-    const double opacity = 1.0 - seeThrough;
+    // Before 3.7 filter takes only its share of the pigment's brightest
+    // channel away (measured with #version 3.6: rgbf <0.5, 0.5, 0.5, 1>
+    // shows 0.25 of its own colour over what it filters).
+    const double filterShare =
+        legacyFilterOpacity_ ? surface.filter * pigment.maxComponent() : surface.filter;
+    const double opacity = 1.0 - filterShare - surface.transmit;
     const RGB lit = pigment * opacity;
 
     // Under radiosity the gathered light takes the place of ambient light,
@@ -584,7 +589,10 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
         // The mirrored ray keeps the incoming ray's adc weight (measured:
         // scaling it by `rest` cuts rays povray traces).
         if (!rest.isBlack()) {
-            const Vec3 reflected = at.viewDir - n * (2 * dot(at.viewDir, n));
+            // Mirrored as a reflection is, back above the surface when a
+            // perturbed normal sends it through (measured: bumps on a water
+            // surface seen from below, interior/caustic2.pov).
+            const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
             color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts);
         }
     }
@@ -614,7 +622,7 @@ RGB Tracer::traceDispersed(const Layers& layers, const SurfacePoint& at, const C
             seen += childTransmit / bands;
         } else {
             const RGB rest = unreflected(layers.reflectivity);
-            const Vec3 reflected = at.viewDir - n * (2 * dot(at.viewDir, n));
+            const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
             State mirrored = child;
             mirrored.kind = scene::RayKind::Reflection;
             mirrored.inside = state.inside;

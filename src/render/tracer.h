@@ -213,8 +213,11 @@ class Tracer {
     bool media_;                            // +Q9 and up, and the scene has media somewhere
     const Radiosity* radiosity_ = nullptr;  // set when the frame computes radiosity
     bool quickColours_;                     // +Q0, +Q1
-    bool quickColorPigments_;     // up to +Q5: a pigment's quick_color replaces its pattern
-    bool opaqueSky_;              // alpha output sees the sky's own transmit (3.7 scenes)
+    bool quickColorPigments_;  // up to +Q5: a pigment's quick_color replaces its pattern
+    bool opaqueSky_;           // alpha output sees the sky's own transmit (3.7 scenes)
+    // Before 3.7 a filtering pigment's own colour is weighed by 1 - filter *
+    // max(colour) - transmit, not 1 - filter - transmit (localLight).
+    bool legacyFilterOpacity_;
     InteriorStack cameraInside_;  // regions containing the camera
 };
 

@@ -2,8 +2,10 @@
 // up in the cache, and gathering a new sample with radiosity rays.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "render/tracer.h"
+#include "util/sample_random.h"
 
 namespace frameray::render {
 
@@ -50,6 +52,16 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
         count = std::max(1, static_cast<int>(std::ceil(count * obj.radiosityImportance)));
     Vec3 u, v;
     tangentFrame(n, u, v);
+    {
+        // Each sample turns the pattern by its own angle, hashed from its
+        // point, so neighbouring samples' errors differ and blending them
+        // averages the errors out.
+        SampleRandom turn(p.x + 0.5 * p.z, p.y - 0.25 * p.z, 0x7a11ULL);
+        const double a = turn.next() * 2 * std::numbers::pi;
+        const Vec3 u2 = u * std::cos(a) + v * std::sin(a);
+        v = v * std::cos(a) - u * std::sin(a);
+        u = u2;
+    }
     const double pathLength = state.radiosity.length + length(p - state.radiosity.origin);
 
     State child;

@@ -416,7 +416,9 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     // over the distance from entry to exit (measured: povray's shadow
     // under a fade_distance sphere is as dark as the fade of the chord
     // predicts). Leaving one it did not enter (a ray starting inside)
-    // fades nothing, as in povray (measured: glass.inc I_Glass1..4).
+    // fades nothing, as in povray (measured: glass.inc I_Glass1..4). At
+    // the default fade_power 0 shadow rays do not fade, though camera rays
+    // pass half the light (measured: interior/atten1.pov's shadows).
     struct Inside {
         const scene::Interior* interior;
         double from;
@@ -426,7 +428,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     const double speed = length(ray.direction);
     auto crossFading = [&](const scene::Object& obj, const Vec3& p, double t) {
         const scene::Interior* in = obj.interior.get();
-        if (!in || !in->fades()) return;
+        if (!in || !in->fades() || in->fadePower == 0) return;
         for (size_t i = 0; i < insideCount; ++i) {
             if (inside[i].interior != in) continue;
             passed *= interiorFade(*in, (t - inside[i].from) * speed);

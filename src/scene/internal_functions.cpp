@@ -531,6 +531,10 @@ double noise3d(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected);
 }
 
+double noise3dOriginal(const double* a) {
+    return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::Original);
+}
+
 // A torus (major radius a[3], in the xz plane) wound with a helical tube.
 // In the torus' own coordinates — d the distance from the core circle,
 // θ = atan2(x, z) around the y axis (π/2 on the y axis itself), ψ the angle
@@ -904,11 +908,13 @@ constexpr std::array<Entry, 79> kInternals = {{
 
 }  // namespace
 
-InternalFunction internalFunction(int n) {
+InternalFunction internalFunction(int n, NoiseGenerator noise) {
     if (n < 0 || n >= static_cast<int>(kInternals.size())) return {};
     const Entry& e = kInternals[static_cast<size_t>(n)];
     InternalFunction result{std::string(e.name), e.extraParams, nullptr};
-    if (e.formula) result.function = std::make_shared<FormulaFunction>(e.formula, e.refuse);
+    auto formula = e.formula;
+    if (formula == noise3d && noise == NoiseGenerator::Original) formula = noise3dOriginal;
+    if (formula) result.function = std::make_shared<FormulaFunction>(formula, e.refuse);
     return result;
 }
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "scene/noise.h"
 #include "util/function_vm.h"
 
 namespace frameray::scene {
@@ -21,6 +22,8 @@ struct InternalFunction {
 
 // The internal function number n; nullopt-like (empty name) when povray
 // has no function of that number.
-InternalFunction internalFunction(int n);
+// f_noise3d follows global_settings' noise_generator (measured), given as
+// `noise`.
+InternalFunction internalFunction(int n, NoiseGenerator noise = NoiseGenerator::RangeCorrected);
 
 }  // namespace frameray::scene

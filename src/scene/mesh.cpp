@@ -54,8 +54,7 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
             if (dot(n, n) > 0) n = normalize(n);
     // In place: a mesh from an exported file holds millions of triangles.
     triangles_ = std::move(triangles);
-    inputFaces_.reserve(triangles_.size());
-    for (const MeshTriangle& t : triangles_) inputFaces_.push_back(t.vertex);
+    inputFaces_ = triangles_;  // as given, degenerate ones included (mesh_camera)
     std::erase_if(triangles_, [&](const MeshTriangle& t) {
         const Vec3 &a = vertices_[t.vertex[0]], &b = vertices_[t.vertex[1]],
                    &c = vertices_[t.vertex[2]];

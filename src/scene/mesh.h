@@ -54,8 +54,17 @@ class TriangleMesh {
     // ones included (mesh_camera numbers the faces so).
     size_t inputTriangleCount() const { return inputFaces_.size(); }
     std::array<Vec3, 3> inputTriangle(size_t i) const {
-        const auto& f = inputFaces_[i];
+        const auto& f = inputFaces_[i].vertex;
         return {vertices_[f[0]], vertices_[f[1]], vertices_[f[2]]};
+    }
+    // Its corners' uv (uv_vectors); false when it has none.
+    bool inputTriangleUvs(size_t i, std::array<std::array<double, 2>, 3>& uv) const {
+        for (size_t k = 0; k < 3; ++k) {
+            const int32_t j = inputFaces_[i].uv[k];
+            if (j < 0 || static_cast<size_t>(j) >= uvs_.size()) return false;
+            uv[k] = uvs_[static_cast<size_t>(j)];
+        }
+        return true;
     }
     size_t groupCount() const { return groups_.size(); }
     // The texture index shared by the triangles of group g (-1: none).
@@ -106,8 +115,8 @@ class TriangleMesh {
 
     std::vector<Vec3> vertices_;
     std::vector<Vec3> normals_;
-    std::vector<MeshTriangle> triangles_;              // sorted by group, then in BVH order
-    std::vector<std::array<uint32_t, 3>> inputFaces_;  // vertex indices, input order
+    std::vector<MeshTriangle> triangles_;   // sorted by group, then in BVH order
+    std::vector<MeshTriangle> inputFaces_;  // as given, in input order
     std::vector<std::array<double, 2>> uvs_;
     std::vector<Group> groups_;
     double minY_ = -kInfinity;

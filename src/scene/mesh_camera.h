@@ -11,11 +11,17 @@
 //   - distribution 0: that face of each of the first RAYS meshes, the
 //     colours averaged; distribution 1: the meshes' faces counted one
 //     after the other as a single list. A pixel past the last face stays
-//     black.
-// Distributions 2 and 3 (face chosen by mesh interleaving and by uv) and
-// `smooth` are not reproduced.
+//     black;
+//   - distribution 3: pixel (x, y) is the uv point (x / W, 1 - y / H),
+//     except u = (W - 1.5) / W in the last column and v = 1 - 0.5 / H in
+//     the top row; the ray starts at the point of the (first) mesh whose
+//     uv_vectors hold it, along that face's normal as above. A uv point on
+//     no face stays black.
+// Distribution 2 (face chosen by mesh interleaving) and `smooth` are not
+// reproduced.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -35,13 +41,31 @@ struct MeshCamera {
     double startOffset = 0;  // the camera's location z
     bool reverse = false;    // the camera's direction z < 0
 
-    // The rays of pixel (x, y) of a `width`-wide image, appended to `rays`.
-    void pixelRays(int x, int y, int width, std::vector<Ray>& rays) const;
+    // Distribution 3: indexes the first mesh's faces by their uv; call
+    // once the meshes are in.
+    void prepareUvLookup();
+
+    // The rays of pixel (x, y) of a width x height image, appended to `rays`.
+    void pixelRays(int x, int y, int width, int height, std::vector<Ray>& rays) const;
 
   private:
-    // Face `face` of mesh `m`'s ray; false past its last face or on a
-    // degenerate one.
-    bool faceRay(size_t m, size_t face, Ray& ray) const;
+    // Face `face` of mesh `m`'s ray, from the point with barycentric
+    // weights `w` (the centroid by default); false past its last face or on
+    // a degenerate one.
+    bool faceRay(size_t m, size_t face, Ray& ray,
+                 const std::array<double, 3>& w = {1.0 / 3, 1.0 / 3, 1.0 / 3}) const;
+    // Distribution 3: the ray from uv point (u, v), if a face holds it.
+    bool uvRay(double u, double v, Ray& ray) const;
+
+    struct UvFace {
+        size_t face;
+        std::array<std::array<double, 2>, 3> uv;
+    };
+    std::vector<UvFace> uvFaces_;
+    // A uniform grid over the uv bounds: the faces overlapping each cell.
+    int gridSize_ = 0;
+    double uvLo_[2] = {0, 0}, uvScale_[2] = {1, 1};
+    std::vector<std::vector<uint32_t>> cells_;
 };
 
 }  // namespace frameray::scene

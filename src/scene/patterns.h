@@ -119,6 +119,9 @@ struct Pattern {
     // pattern values), so the parser rounds them to float.
     double frequency = 1, phase = 0;
     NoiseGenerator noiseGenerator = NoiseGenerator::RangeCorrected;
+    // noise_generator written in the pattern; otherwise the parser gives it
+    // global_settings' noise_generator.
+    bool noiseGeneratorGiven = false;
     double agateTurb = 1.0;
     std::shared_ptr<const ImageMap> image;             // image_pattern
     std::shared_ptr<const CompiledFunction> function;  // function { ... }

@@ -182,6 +182,8 @@ void parsePatternKeyword(BuildContext& c, scene::Pattern& pattern, bool inNormal
 // The object pattern's list entries sit inside its braces: callers call
 // this after reading a list pattern's entries.
 void closeListPattern(BuildContext& c, const scene::Pattern& pattern);
+// After 'noise_generator': its number (1 or 2; 3 stops as not supported).
+scene::NoiseGenerator parseNoiseGenerator(BuildContext& c, const Token& at);
 bool parseTurbulenceItem(BuildContext& c, scene::Turbulence& turb);  // turbulence, octaves...
 // One modifier of a pattern (waves, frequency, phase, turbulence, warps,
 // the settings of brick, crackle, facets, fractals, pavement...), the same

@@ -290,6 +290,7 @@ class FunctionCompiler {
             if (fn_->unavailable.empty())
                 fn_->unavailable = nativeRefusal(*callee->compiled, starts);
             fn_->callees.push_back(callee->compiled);
+            if (callee->compiled->followsNoiseGenerator) fn_->followsNoiseGenerator = true;
             emit({FnOp::Call, static_cast<int32_t>(fn_->callees.size() - 1), n}, 1 - n);
             return;
         }
@@ -523,8 +524,44 @@ Value Reader::parseInternalFunctionBody() {
         value.variadic = true;
         return FunctionPtr(std::make_shared<FunctionValue>(value));
     }
-    value.compiled = nativeBody(internal.name, 3 + internal.extraParams, internal.function);
+    auto compiled = nativeBody(internal.name, 3 + internal.extraParams, internal.function);
+    if (internal.name == "f_noise3d") {
+        compiled->followsNoiseGenerator = true;
+        compiled->noiseInternal = static_cast<int>(n);
+    }
+    value.compiled = std::move(compiled);
     return FunctionPtr(std::make_shared<FunctionValue>(value));
+}
+
+namespace {
+
+// `function` with every f_noise3d it calls bound to generator g (a copy
+// where anything changes).
+std::shared_ptr<const CompiledFunction> withNoiseGenerator(
+    const std::shared_ptr<const CompiledFunction>& function, scene::NoiseGenerator g) {
+    if (!function->followsNoiseGenerator) return function;
+    auto bound = std::make_shared<CompiledFunction>(*function);
+    if (function->noiseInternal >= 0) {
+        bound->natives = {scene::internalFunction(function->noiseInternal, g).function};
+        return bound;
+    }
+    for (auto& callee : bound->callees) callee = withNoiseGenerator(callee, g);
+    return bound;
+}
+
+}  // namespace
+
+std::shared_ptr<const CompiledFunction> Reader::boundToNoise(
+    const std::shared_ptr<const CompiledFunction>& function) {
+    if (!function->followsNoiseGenerator) return function;
+    noiseGeneratorUsed_ = true;
+    return withNoiseGenerator(function, noiseGenerator_);
+}
+
+void Reader::setNoiseGenerator(scene::NoiseGenerator g, const Token& at) {
+    if (g != noiseGenerator_ && noiseGeneratorUsed_)
+        unsupported(at, "global noise_generator after a pattern or f_noise3d");
+    noiseGenerator_ = g;
 }
 
 // A `function { ... }` of x, y, z that the renderer will evaluate (patterns,
@@ -549,7 +586,7 @@ std::shared_ptr<const CompiledFunction> Reader::parseXyzFunction(const Token& at
         fail(at, fmt::format("{} takes {} parameters; here it is given only x, y, z",
                              fn.compiled->name, fn.compiled->paramCount));
     checkFunctionCost(*fn.compiled, at);
-    return fn.compiled;
+    return boundToNoise(fn.compiled);
 }
 
 void Reader::checkFunctionCost(const CompiledFunction& function, const Token& at) {
@@ -575,7 +612,7 @@ Value Reader::callFunction(const FunctionValue& function, const Token& at) {
     values.resize(std::max<size_t>(values.size(), static_cast<size_t>(expected)), 0.0);
     checkFunctionCost(*function.compiled, at);
     try {
-        return function.compiled->eval(values.data());
+        return boundToNoise(function.compiled)->eval(values.data());
     } catch (const std::runtime_error& e) {
         fail(at, e.what());
     }

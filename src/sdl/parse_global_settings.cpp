@@ -35,8 +35,10 @@ void parseGlobalSettings(BuildContext& c) {
                 g.iridWavelength = r.parseColor().rgb;
                 break;
             case Keyword::kw_number_of_waves:
-            case Keyword::kw_noise_generator:
                 r.parseFloat();
+                break;
+            case Keyword::kw_noise_generator:
+                r.setNoiseGenerator(parseNoiseGenerator(c, t), t);
                 break;
             case Keyword::kw_charset: {
                 static constexpr std::pair<Keyword, scene::TextCharset> kCharsets[] = {

@@ -37,9 +37,9 @@ std::shared_ptr<scene::MeshCamera> parseMeshCamera(BuildContext& c, const Token&
     r.accept(Sym::Comma);
     if (rays < 1 || rays != static_cast<int>(rays))
         r.fail(raysAt, "mesh_camera needs a whole number of rays per pixel, 1 or more");
-    if (distribution == 2 || distribution == 3)
+    if (distribution == 2)
         r.unsupported(distributionAt, fmt::format("mesh_camera distribution {}", distribution));
-    if (distribution != 0 && distribution != 1)
+    if (distribution != 0 && distribution != 1 && distribution != 3)
         r.fail(distributionAt, "mesh_camera distribution must be 0, 1, 2 or 3");
     camera->raysPerPixel = static_cast<int>(rays);
     camera->distribution = static_cast<int>(distribution);
@@ -59,6 +59,11 @@ std::shared_ptr<scene::MeshCamera> parseMeshCamera(BuildContext& c, const Token&
     if (camera->distribution == 0 &&
         static_cast<size_t>(camera->raysPerPixel) > camera->meshes.size())
         r.fail(raysAt, "Rays per pixel must be <= number of meshes");
+    if (camera->distribution == 3) {
+        if (camera->raysPerPixel != 1)
+            r.fail(raysAt, "Rays per pixel must be 1 for distribution 3");
+        camera->prepareUvLookup();
+    }
     return camera;
 }
 

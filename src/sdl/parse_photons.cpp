@@ -21,14 +21,34 @@ int positiveInt(double v) {
     return v >= 1 ? static_cast<int>(v) : 1;
 }
 
+// The loop all three blocks share: `{`, settings until `}`. `setting`
+// reads one setting and says whether it knew the token; an unknown keyword
+// is "not supported yet" (it may be a 3.7 setting we lack), anything else
+// an error. `where` names the block in messages ("light photons").
+template <class Setting>
+void parseSettings(Reader& r, std::string_view where, Setting&& setting) {
+    r.expect(Sym::LBrace, "'{' after 'photons'");
+    while (!r.accept(Sym::RBrace)) {
+        const Token t = r.next();
+        if (setting(t)) continue;
+        if (t.kind == TokenKind::Word && t.kw != Keyword::None)
+            r.unsupported(t, fmt::format("'{}' in {}", t.text, where));
+        r.fail(t, fmt::format("expected a {} setting or '}}', found {}", where, describeToken(t)));
+    }
+}
+
+// refraction and reflection, alike in objects and lights.
+bool parseOpticsSetting(Reader& r, const Token& t, bool& refraction, bool& reflection) {
+    if (t.kw != Keyword::kw_refraction && t.kw != Keyword::kw_reflection) return false;
+    (t.kw == Keyword::kw_refraction ? refraction : reflection) = r.parseFloat() != 0;
+    return true;
+}
+
 }  // namespace
 
 void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
     Reader& r = c.reader;
-    r.expect(Sym::LBrace, "'{' after 'photons'");
-    for (;;) {
-        if (r.accept(Sym::RBrace)) break;
-        const Token t = r.next();
+    parseSettings(r, "global photons", [&](const Token& t) {
         switch (t.kw) {
             case Keyword::kw_spacing:
                 s.spacing = r.parseFloat();
@@ -76,30 +96,20 @@ void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
             case Keyword::kw_load_file:
                 r.unsupported(t, fmt::format("photon map files ('{}')", t.text));
             default:
-                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    r.unsupported(t, fmt::format("'{}' in global photons", t.text));
-                r.fail(t, fmt::format("expected a photons setting or '}}', found {}",
-                                      describeToken(t)));
+                return false;
         }
-    }
+        return true;
+    });
 }
 
 void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& p, const Token& block) {
     Reader& r = c.reader;
-    r.expect(Sym::LBrace, "'{' after 'photons'");
     p.given = true;
-    for (;;) {
-        if (r.accept(Sym::RBrace)) break;
-        const Token t = r.next();
+    parseSettings(r, "object photons", [&](const Token& t) {
+        if (parseOpticsSetting(r, t, p.refraction, p.reflection)) return true;
         switch (t.kw) {
             case Keyword::kw_target:
                 p.target = r.floatFollows() ? r.parseFloat() : 1.0;
-                break;
-            case Keyword::kw_refraction:
-                p.refraction = r.parseFloat() != 0;
-                break;
-            case Keyword::kw_reflection:
-                p.reflection = r.parseFloat() != 0;
                 break;
             case Keyword::kw_collect:
                 p.collect = r.parseFloat() != 0;
@@ -108,12 +118,10 @@ void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& p, const Token& b
                 p.passThrough = r.parseOptionalBool();
                 break;
             default:
-                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    r.unsupported(t, fmt::format("'{}' in object photons", t.text));
-                r.fail(t, fmt::format("expected an object photons setting or '}}', found {}",
-                                      describeToken(t)));
+                return false;
         }
-    }
+        return true;
+    });
     // povray 3.7's check, made when the block ends (measured wording; it
     // warns whether or not refraction was asked for).
     if (p.passThrough && p.target > 0) {
@@ -124,27 +132,12 @@ void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& p, const Token& b
 
 void parseLightPhotons(BuildContext& c, scene::LightPhotons& p) {
     Reader& r = c.reader;
-    r.expect(Sym::LBrace, "'{' after 'photons'");
-    for (;;) {
-        if (r.accept(Sym::RBrace)) break;
-        const Token t = r.next();
-        switch (t.kw) {
-            case Keyword::kw_refraction:
-                p.refraction = r.parseFloat() != 0;
-                break;
-            case Keyword::kw_reflection:
-                p.reflection = r.parseFloat() != 0;
-                break;
-            case Keyword::kw_area_light:
-                p.areaLight = r.parseOptionalBool();
-                break;
-            default:
-                if (t.kind == TokenKind::Word && t.kw != Keyword::None)
-                    r.unsupported(t, fmt::format("'{}' in light photons", t.text));
-                r.fail(t, fmt::format("expected a light photons setting or '}}', found {}",
-                                      describeToken(t)));
-        }
-    }
+    parseSettings(r, "light photons", [&](const Token& t) {
+        if (parseOpticsSetting(r, t, p.refraction, p.reflection)) return true;
+        if (t.kw != Keyword::kw_area_light) return false;
+        p.areaLight = r.parseOptionalBool();
+        return true;
+    });
 }
 
 }  // namespace frameray::sdl

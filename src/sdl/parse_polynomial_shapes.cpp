@@ -137,28 +137,25 @@ void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
         const Token t = r.peek();
         if (r.accept(Keyword::kw_threshold)) {
             threshold = r.parseFloat();
-        } else if (r.accept(Keyword::kw_sphere)) {
-            r.expect(Sym::LBrace, "'{' after 'sphere'");
+        } else if (t.is(Keyword::kw_sphere) || t.is(Keyword::kw_cylinder)) {
+            // sphere { C, R, [strength] S ... }, cylinder { A, B, R, ... }:
+            // the commas optional, as in povray.
+            r.next();
+            const bool cylinder = t.is(Keyword::kw_cylinder);
+            const char* what = cylinder ? "cylinder" : "sphere";
+            r.expectAfter(Sym::LBrace, "'{'", what);
             Component comp;
+            if (cylinder) comp.kind = Component::Kind::Cylinder;
             comp.a = r.parseVec3();
-            r.accept(Sym::Comma);  // optional, as in povray
+            r.accept(Sym::Comma);
+            if (cylinder) {
+                comp.b = r.parseVec3();
+                r.accept(Sym::Comma);
+            }
             comp.radius = r.parseFloat();
-            r.accept(Sym::Comma);  // optional, as in povray
+            r.accept(Sym::Comma);
             comp.strength = parseStrength();
-            parseComponentModifiers(comp, "sphere");
-            components.push_back(comp);
-        } else if (r.accept(Keyword::kw_cylinder)) {
-            r.expect(Sym::LBrace, "'{' after 'cylinder'");
-            Component comp;
-            comp.kind = Component::Kind::Cylinder;
-            comp.a = r.parseVec3();
-            r.accept(Sym::Comma);  // optional, as in povray
-            comp.b = r.parseVec3();
-            r.accept(Sym::Comma);  // optional, as in povray
-            comp.radius = r.parseFloat();
-            r.accept(Sym::Comma);  // optional, as in povray
-            comp.strength = parseStrength();
-            parseComponentModifiers(comp, "cylinder");
+            parseComponentModifiers(comp, what);
             components.push_back(comp);
         } else if (r.accept(Keyword::kw_component)) {
             // The 2.0 form: component Strength, Radius, <Centre>.

@@ -159,13 +159,34 @@ std::vector<Color> defaultListColors(scene::PatternKind kind) {
     }
 }
 
+// The patterns whose values depend on the noise generator (a global
+// noise_generator after one of them cannot be applied to it). Others, like
+// functions.inc's f_hexagon pigment, may come before global_settings.
+bool readsNoiseGenerator(scene::PatternKind kind) {
+    using K = scene::PatternKind;
+    switch (kind) {
+        case K::Bozo:
+        case K::Spotted:
+        case K::Bumps:
+        case K::Dents:
+        case K::Granite:
+        case K::Marble:
+        case K::Agate:
+        case K::Wrinkles:
+        case K::Crackle:
+            return true;
+        default:
+            return false;
+    }
+}
+
 }  // namespace
 
 // Defined below.
 static void checkPavement(BuildContext& c, const scene::Pattern& pattern, const Token& at);
 static void parseFractalHead(BuildContext& c, const Token& kind, scene::FractalSettings& f);
 static void parseFractalItem(BuildContext& c, const Token& item, scene::FractalSettings& f);
-static scene::NoiseGenerator parseNoiseGenerator(BuildContext& c, const Token& at);
+
 static void parsePigmentBody(BuildContext& c, scene::Pigment& result, Sym closing);
 static void parseSlopeArguments(BuildContext& c, scene::Pattern& pattern);
 static scene::Warp parseWarp(BuildContext& c);
@@ -269,6 +290,8 @@ void parsePatternKeyword(BuildContext& c, scene::Pattern& pattern, bool inNormal
     if (kind == scene::PatternKind::Facets && !inNormal)
         r.fail(item, "'facets' can only be used in a normal");
     pattern.kind = kind;
+    if (!pattern.noiseGeneratorGiven) pattern.noiseGenerator = r.noiseGenerator();
+    if (readsNoiseGenerator(kind)) r.noteNoiseGeneratorUse();
     if (kind == scene::PatternKind::Gradient) {
         const Vec3 g = r.parseVec3();
         const double len = length(g);
@@ -604,6 +627,7 @@ bool parsePatternModifier(BuildContext& c, scene::Pattern& pattern) {
         case Keyword::kw_noise_generator:
             r.next();
             pattern.noiseGenerator = parseNoiseGenerator(c, item);
+            pattern.noiseGeneratorGiven = true;
             return true;
         case Keyword::kw_warp:
             r.next();
@@ -848,7 +872,7 @@ static void parseFractalItem(BuildContext& c, const Token& item, scene::FractalS
     }
 }
 
-static scene::NoiseGenerator parseNoiseGenerator(BuildContext& c, const Token& at) {
+scene::NoiseGenerator parseNoiseGenerator(BuildContext& c, const Token& at) {
     Reader& r = c.reader;
     const double g = r.parseFloat();
     if (g == 1) return scene::NoiseGenerator::Original;

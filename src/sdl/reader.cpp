@@ -50,6 +50,25 @@ void Reader::begin(std::shared_ptr<const TokenizedFile> file, std::string inputF
             symbols_.global()[name] = value;
     }
     cursors_.push_back({file, 0, CursorKind::File, 1, 0, false});
+    // Include_Header (+HI): read before the scene's first line, as an
+    // #include there (povray: its declarations precede the scene's
+    // #version; a missing one stops the parse).
+    if (const std::string& name = frame_.includeHeader; !name.empty()) {
+        const fs::path path = findIncludeFile(name);
+        if (path.empty())
+            throw SdlError(
+                {}, fmt::format("cannot open include header file '{}' (Include_Header)", name));
+        if (const std::string refusal = frame_.fileAccess.checkRead(path, name); !refusal.empty())
+            throw SdlError({}, refusal);
+        filesRead_.push_back(path);
+        auto header = cache_.get(path);
+        if (!header)
+            throw SdlError({}, fmt::format("cannot read include header file '{}'", path.string()));
+        symbols_.push();
+        cursors_.push_back(
+            {std::move(header), 0, CursorKind::File, symbols_.size() - 1, blocks_.size(), false});
+        ++includeDepth_;
+    }
 }
 
 void Reader::end() {

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/noise.h"
 #include "sdl/cursor.h"
 #include "sdl/diagnostics.h"
 #include "sdl/frame_context.h"
@@ -159,6 +160,17 @@ class Reader {
     bool declarationBeforeVersion() const { return declarationBeforeVersion_; }
     // assumed_gamma, which sRGB colours need (global_settings sets it).
     void setAssumedGamma(double gamma) { assumedGamma_ = gamma; }
+    // global_settings' noise_generator, which patterns and f_noise3d take
+    // as they are read. povray applies it to every pattern whatever the
+    // order, so once one has taken it (noteNoiseGeneratorUse) a change
+    // stops as not supported (setNoiseGenerator, at `at`).
+    scene::NoiseGenerator noiseGenerator() const { return noiseGenerator_; }
+    void noteNoiseGeneratorUse() { noiseGeneratorUsed_ = true; }
+    void setNoiseGenerator(scene::NoiseGenerator g, const Token& at);
+    // `function` as the scene uses it: every f_noise3d it calls bound to
+    // the noise_generator in force now, which is then fixed.
+    std::shared_ptr<const CompiledFunction> boundToNoise(
+        const std::shared_ptr<const CompiledFunction>& function);
 
   private:
     friend class FunctionCompiler;  // compiles function bodies from this token stream
@@ -249,7 +261,9 @@ class Reader {
     bool versionSeen_ = false;
     bool declarationBeforeVersion_ = false;
     std::optional<double> assumedGamma_;  // null until global_settings gives it
-    bool pathnameMode_ = false;           // string literals keep their backslashes
+    scene::NoiseGenerator noiseGenerator_ = scene::NoiseGenerator::RangeCorrected;
+    bool noiseGeneratorUsed_ = false;
+    bool pathnameMode_ = false;  // string literals keep their backslashes
     int includeDepth_ = 0;
     int nesting_ = 0;                      // NestingGuard levels held
     size_t iterations_ = 0;                // loop iterations and macro calls so far

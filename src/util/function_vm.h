@@ -92,6 +92,12 @@ class CompiledFunction {
     // Why this function (or one it calls) cannot run yet: empty when it
     // can. Shapes check it before rendering so no frame stops midway.
     std::string unavailable;
+    // functions.inc's f_noise3d follows global_settings' noise_generator,
+    // which povray applies whatever the order: this function is f_noise3d
+    // (noiseInternal, its internal number, >= 0) or calls it, so the parser
+    // binds the generator when the function is used (sdl/functions.cpp).
+    bool followsNoiseGenerator = false;
+    int noiseInternal = -1;
 
     // Evaluates with `paramCount` arguments. Throws std::runtime_error for
     // a call of a function that cannot run yet.

@@ -11,6 +11,10 @@
 3. A frame that fails leaves a `failed` event (level error) with the reason.
 4. Log_Level=debug adds `parse_done` and `render_done` for every frame;
    Log_Level=off writes no log; a still image writes none.
+5. Hooks and option warnings: a Post_Frame_Command leaves one `hook` event
+   per frame (its exit code and the action taken), a failing Post_Scene
+   command a warning-level one; an option povray 3.7 ignores leaves an
+   `option_warning` event.
 """
 import json
 import os
@@ -122,6 +126,22 @@ def main():
     code, out = run("-V", "Final_Frame=1", "+Ostill.png")
     if code != 0 or os.path.exists(log):
         fail("a still wrote a run log (exit %d)" % code)
+    # 5. Hooks and option warnings (the still above left no log).
+    code, out = run("-V", "Allow_Shell_Commands=on", "Post_Frame_Command=true",
+                    "Post_Scene_Command=exit 3", "Light_Buffer=on")
+    if code != 0:
+        fail("the run with hooks failed:\n" + out)
+    hooked = events(log)
+    post_frame = [e for e in hooked if e["event"] == "hook" and e["hook"] == "post_frame"]
+    if sorted(e["frame"] for e in post_frame) != list(range(1, FRAMES + 1)) or any(
+            e["exit_code"] != 0 or e["action"] != "continue" or e["level"] != "info"
+            for e in post_frame):
+        fail("post_frame hook events: %s" % post_frame)
+    post_scene = [e for e in hooked if e["event"] == "hook" and e["hook"] == "post_scene"]
+    if len(post_scene) != 1 or post_scene[0]["exit_code"] != 3 or post_scene[0]["level"] != "warning":
+        fail("post_scene hook event: %s" % post_scene)
+    if not any(e["event"] == "option_warning" and "Light_Buffer" in e["message"] for e in hooked):
+        fail("no option_warning event for Light_Buffer: %s" % [e["event"] for e in hooked])
     print("run log: %d lines JSON, %d written, %d kept, failed and debug events as expected"
           % (len(both), len(written), len(kept)))
     return 0

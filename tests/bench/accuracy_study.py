@@ -113,6 +113,14 @@ KNOBS = {
         "IsoAccuracy", ("0.1", "0.03", "0.01", "0.001", "0.0001", "0.00001"))),
     "sturm": Knob("sturm", [("off", ["Declare=Sturm=0"]), ("on", ["Declare=Sturm=1"])]),
     "quality": Knob("Quality (+Q)", [(str(q), [f"+Q{q}"]) for q in range(0, 12)]),
+    # Radiosity (issue 26): the scene declares each setting behind #ifndef.
+    "rad_count": Knob("radiosity count", _declares("RadCount", (10, 20, 35, 70, 150, 300))),
+    "rad_error_bound": Knob("radiosity error_bound", _declares(
+        "RadErrorBound", ("3", "1.8", "1", "0.5", "0.25"))),
+    "rad_pretrace_end": Knob("radiosity pretrace_end", _declares(
+        "RadPretraceEnd", ("0.08", "0.04", "0.02", "0.01", "0.005"))),
+    "rad_recursion": Knob("radiosity recursion_limit", _declares("RadRecursion", (1, 2, 3))),
+    "rad_nearest": Knob("radiosity nearest_count", _declares("RadNearest", (1, 3, 5, 10, 20))),
 }
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""+O- and Grayscale_Output as povray 3.7 writes them (issue 30).
+"""+O-, Grayscale_Output and Include_Header as povray 3.7 does them (issue 30).
 
 Measured with povray 3.7.0.10: `+O-` writes the image to standard output,
 PNG by default, PPM with +FP, the frames of an animation one after another
@@ -164,6 +164,40 @@ def main():
                     for i in range(len(px)))
         if worst > 1.5:
             failures.append(f"grey PPM differs from the grey of the colour by {worst} levels")
+
+    # Include_Header (+HI): read before the scene, found through the
+    # library path. povray 3.7.0.10 writes this scene's 4x4 PPM as
+    # 255 188 0 and stops with "Cannot open include header file" when the
+    # header is missing.
+    os.makedirs(os.path.join(scratch, "lib"))
+    with open(os.path.join(scratch, "lib", "head.inc"), "w") as f:
+        f.write("#declare HC = rgb <1, 0.5, 0>;\n")
+    with open(os.path.join(scratch, "header.pov"), "w") as f:
+        f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\nbackground { HC }\n")
+    env = {k: v for k, v in os.environ.items() if k not in ("POVINI", "POVRAYOPT", "XDG_CONFIG_HOME")}
+    env["HOME"] = os.path.join(scratch, "home")
+    p = subprocess.run([frameray, "header.pov", "+W4", "+H4", "+FP", "+Oheader.ppm", "+HIhead.inc",
+                        "+Llib"], cwd=scratch, env=env, capture_output=True)
+    if p.returncode != 0:
+        failures.append(f"Include_Header: exit {p.returncode}: {p.stderr.decode()}")
+    else:
+        _, _, _, _, px, _ = ppm_parts(read(os.path.join(scratch, "header.ppm")))
+        if list(px[:3]) != [255, 188, 0]:
+            failures.append(f"Include_Header: pixel {list(px[:3])}, povray 255 188 0")
+    p = subprocess.run([frameray, "header.pov", "+W4", "+H4", "+Omissing.png", "+HInope.inc"],
+                       cwd=scratch, env=env, capture_output=True)
+    if p.returncode == 0 or b"cannot open include header file 'nope.inc'" not in p.stderr:
+        failures.append(f"Include_Header missing: exit {p.returncode}: {p.stderr.decode()}")
+
+    # Real_Time_Raytracing (+RTR): povray 3.7.0.10 without a display renders
+    # every frame once, writes no image and warns of a beta feature.
+    rtr = os.path.join(scratch, "rtr")
+    os.makedirs(rtr)
+    p = subprocess.run([frameray, os.path.join(scratch, "header.pov"), "+W4", "+H4", "+KFI1",
+                        "+KFF3", "+RTR", "+HIhead.inc", "+L" + os.path.join(scratch, "lib"),
+                        "+O" + rtr + "/"], cwd=scratch, env=env, capture_output=True)
+    if p.returncode != 0 or os.listdir(rtr) or b"Real_Time_Raytracing" not in p.stderr:
+        failures.append(f"+RTR: exit {p.returncode}, files {os.listdir(rtr)}: {p.stderr.decode()}")
 
     for f in failures:
         print("FAIL:", f)

@@ -455,8 +455,8 @@ TEST(Options, UnsupportedValuesAreNamed) {
     EXPECT_EQ(firstUnsupported(parse({"+Q2"})), "");
     EXPECT_EQ(firstUnsupported(parse({"+Q0"})), "");  // quick colours
     EXPECT_EQ(firstUnsupported(parse({"+Q1"})), "");
-    EXPECT_NE(firstUnsupported(parse({"+HIx.inc"})).find("Include_Header"), std::string::npos);
-    EXPECT_EQ(firstUnsupported(parse({"+O-"})), "");  // standard output
+    EXPECT_EQ(firstUnsupported(parse({"+HIx.inc"})), "");  // Include_Header
+    EXPECT_EQ(firstUnsupported(parse({"+O-"})), "");       // standard output
     EXPECT_EQ(firstUnsupported(parse({"Grayscale_Output=on", "+FP"})), "");
     // povray: "Unsupported combination of options".
     EXPECT_NE(firstUnsupported(parse({"Grayscale_Output=on", "+FT"})).find("Grayscale_Output"),
@@ -588,6 +588,7 @@ TEST(Options, OldAndPreviewKeysAreAcceptedAndWrittenBack) {
         {"+KLA", "Clockless_Animation=On"},
         {"+HR", "High_Reproducibility=On"},
         {"-RTR", "Real_Time_Raytracing=Off"},
+        {"+RTR", "Real_Time_Raytracing=On"},
         {"+WL3", "Warning_Level=3"},
         {"+RFfoo", "Radiosity_File_Name=\"foo\""},
         {"-RFI", "Radiosity_From_File=Off"},
@@ -654,9 +655,10 @@ TEST(Options, IncludeIniAndBareIniNames) {
 }
 
 TEST(Options, UnsupportedNewValuesAreNamed) {
-    EXPECT_NE(firstUnsupported(parse({"+RTR"})).find("Real_Time_Raytracing"), std::string::npos);
-    EXPECT_NE(firstUnsupported(parse({"+RFI"})).find("Radiosity_From_File"), std::string::npos);
-    EXPECT_NE(firstUnsupported(parse({"Radiosity_To_File=on"})).find("Radiosity_To_File"),
-              std::string::npos);
+    EXPECT_EQ(firstUnsupported(parse({"+RTR"})), "");  // frames render, no image is written
+    EXPECT_FALSE(parse({"+RTR"}).writesImages());
+    EXPECT_TRUE(parse({"+RTR", "-RTR"}).writesImages());
+    // Radiosity cache files are read and written (render/radiosity_file.h).
+    EXPECT_EQ(firstUnsupported(parse({"+RFI", "Radiosity_To_File=on"})), "");
     EXPECT_EQ(firstUnsupported(parse({"+UL", "+RFfile", "+SP8", "Dither=off"})), "");
 }

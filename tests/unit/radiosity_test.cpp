@@ -4,11 +4,14 @@
 #include <tbb/task_arena.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <vector>
 
 #include "parse_support.h"
 #include "render/radiosity_cache.h"
+#include "render/radiosity_file.h"
 #include "render/renderer.h"
 #include "render/world.h"
 
@@ -89,10 +92,11 @@ TEST(Radiosity, LookupsBlendNearbySamplesAndAskForNewOnes) {
     EXPECT_EQ(final.interpolate(Vec3(0.3, 0, 0), Vec3(0, -1, 0), 0).found, 0);
     pretrace.add({Vec3(0.2, 0, 0), up, RGB(0.0), 1.0, 1});
     EXPECT_EQ(final.interpolate(Vec3(0.1, 0, 0), up, 0).found, 1);
-    const auto both = final.interpolate(Vec3(0.1, 0, 0), up, 1);
-    EXPECT_EQ(both.found, 2);
-    EXPECT_GT(both.irradiance.r, 0.0);
-    EXPECT_LT(both.irradiance.r, 1.0);
+    // A lookup one bounce deep uses only samples gathered as deep (a
+    // shallower sample holds more bounces than the lookup may see).
+    const auto deeper = final.interpolate(Vec3(0.1, 0, 0), up, 1);
+    EXPECT_EQ(deeper.found, 1);
+    EXPECT_EQ(deeper.irradiance.r, 0.0);
     // A final-pass block keeps its samples to itself.
     final.add({Vec3(5, 0, 0), up, RGB(0.5), 1.0, 0});
     EXPECT_EQ(final.interpolate(Vec3(5, 0, 0), up, 0).found, 1);
@@ -101,10 +105,10 @@ TEST(Radiosity, LookupsBlendNearbySamplesAndAskForNewOnes) {
 
 namespace {
 
-render::FrameImage renderText(const std::string& text, int threads, render::FrameStats& stats) {
+render::FrameImage renderText(const std::string& text, int threads, render::FrameStats& stats,
+                              render::FrameSettings settings = {}) {
     test_support::ParsedScene parsed(text);
     render::World world(parsed.scene);
-    render::FrameSettings settings;
     settings.width = 48;
     settings.height = 36;
     settings.blockSize = 8;
@@ -185,4 +189,66 @@ TEST(RadiosityParser, SettingsRangesAndWarnings) {
     EXPECT_NE(parseErrorOf("sphere { 0, 1 radiosity { importance 0 } }")
                   .find("importance must be greater than 0.0 and at most 1.0"),
               std::string::npos);
+}
+
+TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "frameray_radiosity_file_test";
+    fs::create_directories(dir);
+    const std::vector<render::RadiositySample> samples = {
+        {Vec3(0.1, -2.0 / 3.0, 1e-9), Vec3(0, 1, 0), RGB(0.25, 1.0 / 7.0, 3.0), 0.123456789, 0},
+        {Vec3(-5, 4, 3), normalize(Vec3(1, 1, 1)), RGB(0.0), 1e6, 2}};
+    render::writeRadiosityFile(dir / "a.rca", samples);
+    const std::vector<render::RadiositySample> back = render::readRadiosityFile(dir / "a.rca");
+    ASSERT_EQ(back.size(), samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        EXPECT_EQ(back[i].point.x, samples[i].point.x);
+        EXPECT_EQ(back[i].point.y, samples[i].point.y);
+        EXPECT_EQ(back[i].point.z, samples[i].point.z);
+        EXPECT_EQ(back[i].normal.x, samples[i].normal.x);
+        EXPECT_EQ(back[i].irradiance.g, samples[i].irradiance.g);
+        EXPECT_EQ(back[i].radius, samples[i].radius);
+        EXPECT_EQ(back[i].depth, samples[i].depth);
+    }
+    // A povray cache file (its sample lines start with C and a depth).
+    std::ofstream(dir / "pov.rca") << "C2\t-1.29\t-0.9\t0.76\t7ffe7f\t0.0985\t0.0988\t0.1161\n";
+    try {
+        render::readRadiosityFile(dir / "pov.rca");
+        ADD_FAILURE() << "a povray file was read";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("not a frameray radiosity cache file"),
+                  std::string::npos);
+    }
+    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 1\n0 1 2 3\n";
+    EXPECT_THROW(render::readRadiosityFile(dir / "bad.rca"), std::runtime_error);
+    EXPECT_THROW(render::readRadiosityFile(dir / "missing.rca"), std::runtime_error);
+    fs::remove_all(dir);
+}
+
+// A frame started from another frame's whole cache (Radiosity_From_File,
+// Radiosity_Stable) gathers few new samples (the pretrace still wants
+// nearest_count near each of its points) and renders the same bytes for
+// any thread count.
+TEST(Radiosity, AFrameStartedFromAFullCacheReusesIt) {
+    render::FrameSettings keep;
+    keep.keepRadiosity = true;
+    render::FrameStats first;
+    render::FrameImage seeded = renderText(room(true), 2, first, keep);
+    ASSERT_GT(seeded.radiosityCache.size(), 0u);
+    EXPECT_EQ(seeded.radiosityCache.size(), first.radiosity.samples);
+    render::FrameStats firstAgain;
+    render::FrameImage again = renderText(room(true), 1, firstAgain, keep);
+    EXPECT_EQ(seeded.radiosityCache.size(), again.radiosityCache.size());
+
+    render::FrameSettings start;
+    start.radiosityStart =
+        std::make_shared<const std::vector<render::RadiositySample>>(seeded.radiosityCache);
+    render::FrameStats one, two;
+    const render::FrameImage a = renderText(room(true), 1, one, start);
+    const render::FrameImage b = renderText(room(true), 2, two, start);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(one.radiosity.samples, two.radiosity.samples);
+    EXPECT_LT(one.radiosity.samples * 4, seeded.radiosityCache.size());
+    EXPECT_GT(one.radiosity.reused, 0u);
+    EXPECT_TRUE(a.radiosityCache.empty());
 }

@@ -145,6 +145,16 @@ TEST(Progress, TerminalLine) {
               std::string::npos);
 }
 
+// Issue 29: frames per second and the slowest frame so far.
+TEST(Progress, TerminalLineShowsPaceAndSlowestFrame) {
+    EXPECT_EQ(anim::Progress::terminalLine(5, 20, {6, 7}, 10.0, 30.0, {0.5, 3, 4.25}),
+              "frames 5/20 (25%) | 0.50 frames/s | slowest 3 (4.2 s) | rendering 6 7 | elapsed "
+              "10.0 s | ETA 30.0 s");
+    // Nothing rendered yet: no pace, no slowest frame.
+    EXPECT_EQ(anim::Progress::terminalLine(0, 3, {1}, 0.5, -1, {}),
+              "frames 0/3 (0%) | rendering 1 | elapsed 0.5 s | ETA ?");
+}
+
 TEST(Statistics, SequenceJsonPerFrameStatsAndSums) {
     anim::FrameRecord a;
     a.number = 1;

@@ -1,0 +1,65 @@
+#include "render/radiosity_file.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace frameray::render {
+
+namespace {
+
+constexpr const char* kHeader = "frameray radiosity cache 1";
+
+}  // namespace
+
+void writeRadiosityFile(const std::filesystem::path& file,
+                        std::span<const RadiositySample> samples) {
+    std::string text = fmt::format("{}\n", kHeader);
+    // Shortest round-trip numbers: a file read back gives the same samples
+    // bit for bit, so a render started from it is deterministic.
+    for (const RadiositySample& s : samples)
+        text += fmt::format("{} {} {} {} {} {} {} {} {} {} {}\n", s.depth, s.point.x, s.point.y,
+                            s.point.z, s.normal.x, s.normal.y, s.normal.z, s.irradiance.r,
+                            s.irradiance.g, s.irradiance.b, s.radius);
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out)
+        throw std::runtime_error(
+            fmt::format("cannot write the radiosity cache file '{}'", file.string()));
+}
+
+std::vector<RadiositySample> readRadiosityFile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw std::runtime_error(
+            fmt::format("cannot open the radiosity cache file '{}'", file.string()));
+    std::string line;
+    if (!std::getline(in, line) || line != kHeader)
+        throw std::runtime_error(
+            fmt::format("'{}' is not a frameray radiosity cache file (frameray reads only the "
+                        "files it writes with Radiosity_To_File, not povray's)",
+                        file.string()));
+    std::vector<RadiositySample> samples;
+    for (int number = 2; std::getline(in, line); ++number) {
+        if (line.empty()) continue;
+        std::istringstream fields(line);
+        fields.imbue(std::locale::classic());
+        RadiositySample s;
+        fields >> s.depth >> s.point.x >> s.point.y >> s.point.z >> s.normal.x >> s.normal.y >>
+            s.normal.z >> s.irradiance.r >> s.irradiance.g >> s.irradiance.b >> s.radius;
+        std::string rest;
+        if (!fields || (fields >> rest) || s.depth < 0 || !(s.radius > 0))
+            throw std::runtime_error(fmt::format(
+                "{}:{}: not a radiosity sample (depth, point, normal, irradiance, radius)",
+                file.string(), number));
+        samples.push_back(s);
+    }
+    return samples;
+}
+
+}  // namespace frameray::render
