@@ -52,16 +52,15 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
     if (!keepNormalLengths)
         for (Vec3& n : normals_)
             if (dot(n, n) > 0) n = normalize(n);
-    triangles_.reserve(triangles.size());
-    inputFaces_.reserve(triangles.size());
-    for (const MeshTriangle& t : triangles) {
-        inputFaces_.push_back(t);
+    // In place: a mesh from an exported file holds millions of triangles.
+    triangles_ = std::move(triangles);
+    inputFaces_ = triangles_;  // as given, degenerate ones included (mesh_camera)
+    std::erase_if(triangles_, [&](const MeshTriangle& t) {
         const Vec3 &a = vertices_[t.vertex[0]], &b = vertices_[t.vertex[1]],
                    &c = vertices_[t.vertex[2]];
         const Vec3 n = cross(b - a, c - a);
-        if (dot(n, n) == 0) continue;
-        triangles_.push_back(t);
-    }
+        return dot(n, n) == 0;
+    });
     // Group by texture, keeping the order of first appearance.
     std::stable_sort(
         triangles_.begin(), triangles_.end(),
@@ -72,6 +71,10 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
         centroids[i] =
             (vertices_[t.vertex[0]] + vertices_[t.vertex[1]] + vertices_[t.vertex[2]]) / 3.0;
     }
+    // The BVH is built over an index permutation, applied to the triangles
+    // once at the end (no per-level copies of triangles and centroids).
+    std::vector<uint32_t> order(triangles_.size());
+    std::iota(order.begin(), order.end(), 0u);
     uint32_t begin = 0;
     while (begin < triangles_.size()) {
         uint32_t end = begin;
@@ -80,19 +83,37 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<Vec3> normals
         Group g;
         g.texture = triangles_[begin].texture;
         g.nodes.reserve(2 * (end - begin) / kLeafSize + 1);
-        build(g, begin, end, centroids);
+        build(g, order, begin, end, centroids);
         groups_.push_back(std::move(g));
         begin = end;
     }
+    std::vector<Vec3>().swap(centroids);  // freed before the triangles move
+    // triangles_[k] = old triangles_[order[k]], cycle by cycle, in place.
+    for (uint32_t i = 0; i < order.size(); ++i) {
+        if (order[i] == i) continue;
+        const MeshTriangle first = triangles_[i];
+        uint32_t k = i;
+        for (;;) {
+            const uint32_t from = order[k];
+            order[k] = k;
+            if (from == i) {
+                triangles_[k] = first;
+                break;
+            }
+            triangles_[k] = triangles_[from];
+            k = from;
+        }
+    }
 }
 
-uint32_t TriangleMesh::build(Group& g, uint32_t begin, uint32_t end, std::vector<Vec3>& centroids) {
+uint32_t TriangleMesh::build(Group& g, std::vector<uint32_t>& order, uint32_t begin, uint32_t end,
+                             const std::vector<Vec3>& centroids) {
     const auto index = static_cast<uint32_t>(g.nodes.size());
     g.nodes.emplace_back();
     Bounds box, centroidBox;
     for (uint32_t i = begin; i < end; ++i) {
-        for (const uint32_t v : triangles_[i].vertex) box.extend(vertices_[v]);
-        centroidBox.extend(centroids[i]);
+        for (const uint32_t v : triangles_[order[i]].vertex) box.extend(vertices_[v]);
+        centroidBox.extend(centroids[order[i]]);
     }
     g.nodes[index].box = padded(box);
     if (end - begin <= kLeafSize) {
@@ -106,21 +127,11 @@ uint32_t TriangleMesh::build(Group& g, uint32_t begin, uint32_t end, std::vector
     const int axis =
         extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const uint32_t mid = begin + (end - begin) / 2;
-    std::vector<uint32_t> order(end - begin);
-    std::iota(order.begin(), order.end(), begin);
     std::nth_element(
-        order.begin(), order.begin() + (mid - begin), order.end(),
+        order.begin() + begin, order.begin() + mid, order.begin() + end,
         [&](uint32_t x, uint32_t y) { return centroids[x][axis] < centroids[y][axis]; });
-    std::vector<MeshTriangle> tris(order.size());
-    std::vector<Vec3> cents(order.size());
-    for (size_t k = 0; k < order.size(); ++k) {
-        tris[k] = triangles_[order[k]];
-        cents[k] = centroids[order[k]];
-    }
-    std::copy(tris.begin(), tris.end(), triangles_.begin() + begin);
-    std::copy(cents.begin(), cents.end(), centroids.begin() + begin);
-    build(g, begin, mid, centroids);
-    const uint32_t right = build(g, mid, end, centroids);
+    build(g, order, begin, mid, centroids);
+    const uint32_t right = build(g, order, mid, end, centroids);
     g.nodes[index].first = right;
     g.nodes[index].count = 0;
     return index;

@@ -99,7 +99,10 @@ class TriangleMesh {
         std::vector<Node> nodes;
     };
 
-    uint32_t build(Group& g, uint32_t begin, uint32_t end, std::vector<Vec3>& centroids);
+    // Builds the node for triangles order[begin, end) (indices into
+    // triangles_), reordering that range of `order`.
+    uint32_t build(Group& g, std::vector<uint32_t>& order, uint32_t begin, uint32_t end,
+                   const std::vector<Vec3>& centroids);
     // Calls visit(triangle index) for every triangle in a leaf the ray's box
     // test passes in (tMin, tMax()); tMax is re-read so a closest-hit search
     // can shrink it.

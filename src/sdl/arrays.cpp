@@ -33,7 +33,7 @@ Value Reader::parseArrayDeclaration() {
     }
     if (array->dims.empty()) fail(at, "expected '[' with the array size after 'array'");
     chargeArrayElements(total, at);
-    array->elements.assign(total, Value{});
+    array->reset(total);
     if (rawPeek().is(Sym::LBrace)) {
         size_t next = 0;
         parseArrayInitializer(*array, 0, next);
@@ -87,18 +87,14 @@ size_t Reader::parseArrayIndex(const ArrayValue& array, const Token& at) {
 }
 
 void Reader::setArrayElement(ArrayValue& array, size_t index, Value value, const Token& at) {
-    for (const Value& e : array.elements) {
-        if (std::holds_alternative<std::monostate>(e)) continue;
-        if (std::string_view(valueKindName(e)) != valueKindName(value))
-            fail(at, fmt::format("array elements are {}s; cannot store a {}", valueKindName(e),
-                                 valueKindName(value)));
-        break;
-    }
+    if (const char* kind = array.kind(); kind && std::string_view(kind) != valueKindName(value))
+        fail(at,
+             fmt::format("array elements are {}s; cannot store a {}", kind, valueKindName(value)));
     if (auto* nested = std::get_if<ArrayPtr>(&value)) {
-        chargeArrayElements((*nested)->elements.size(), at);
+        chargeArrayElements((*nested)->size(), at);
         value = std::make_shared<ArrayValue>(**nested);
     }
-    array.elements[index] = std::move(value);
+    array.set(index, std::move(value));
 }
 
 }  // namespace frameray::sdl

@@ -265,7 +265,7 @@ Value Reader::parseRValue() {
     Value v = parseExpression();
     // Arrays are values: a declaration from another array copies it.
     if (auto* arr = std::get_if<ArrayPtr>(&v)) {
-        chargeArrayElements((*arr)->elements.size(), start);
+        chargeArrayElements((*arr)->size(), start);
         return std::make_shared<ArrayValue>(**arr);
     }
     return v;
@@ -347,8 +347,7 @@ bool Reader::conditionIfdef() {
         // #ifdef (A[i]): whether that element has been set.
         if (v && std::holds_alternative<ArrayPtr>(*v) && peek().is(Sym::LBracket)) {
             const ArrayPtr array = std::get<ArrayPtr>(*v);
-            defined = !std::holds_alternative<std::monostate>(
-                array->elements[parseArrayIndex(*array, t)]);
+            defined = array->isSet(parseArrayIndex(*array, t));
         }
     } else {
         fail(t, fmt::format("expected an identifier, found {}", describeToken(t)));

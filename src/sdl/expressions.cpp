@@ -648,7 +648,7 @@ Value Reader::identifierValue(const Token& name, const Value* known) {
     while (std::holds_alternative<ArrayPtr>(out) && peekAfterOperand().is(Sym::LBracket)) {
         const ArrayPtr array = std::get<ArrayPtr>(out);  // keep alive while indexing
         const size_t index = parseArrayIndex(*array, name);
-        out = array->elements[index];
+        out = array->get(index);
         if (std::holds_alternative<std::monostate>(out))
             fail(name,
                  fmt::format("element {} of array '{}' used before it was set", index, name.text));

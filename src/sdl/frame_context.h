@@ -46,8 +46,8 @@ struct FrameContext {
         int nesting = 400;
         int macroCalls = 200;    // macro calls in progress at once
         int includeFiles = 100;  // #include files open at once
-        // Array elements (about 56 bytes each): one array (1 GB), and all
-        // arrays made or copied in the frame (4 GB).
+        // Array elements (8 bytes each for floats, about 56 for other kinds):
+        // one array, and all arrays made or copied in the frame.
         size_t arrayElements = size_t(1) << 24;
         size_t totalArrayElements = size_t(1) << 26;
         size_t stringLength = size_t(1) << 24;  // bytes in one string value

@@ -210,7 +210,16 @@ void parseMesh2Body(BuildContext& c, const Token&, ObjectValue& object) {
     MeshParts parts;
     std::vector<std::array<int64_t, 3>> faces, normalFaces;
     std::vector<int64_t> faceTextures;
-    std::vector<Token> faceAt;
+    // Where each face starts, for messages: the first face's token, and
+    // every face's line and column (a million faces: 8 bytes each).
+    Token firstFace;
+    std::vector<std::array<uint32_t, 2>> faceAt;
+    const auto faceToken = [&](size_t i) {
+        Token at = firstFace;
+        at.line = faceAt[i][0];
+        at.column = faceAt[i][1];
+        return at;
+    };
     bool haveNormalIndices = false;
     std::vector<std::array<int64_t, 3>> uvFaces;
     bool haveUvIndices = false;
@@ -248,7 +257,9 @@ void parseMesh2Body(BuildContext& c, const Token&, ObjectValue& object) {
                 continue;
             case Keyword::kw_face_indices:
                 parseMesh2List(c, t, [&](size_t) {
-                    faceAt.push_back(r.peek());
+                    const Token at = r.peek();
+                    if (faceAt.empty()) firstFace = at;
+                    faceAt.push_back({at.line, at.column});
                     const Vec3 f = r.parseVec3();
                     faces.push_back({std::llround(f.x), std::llround(f.y), std::llround(f.z)});
                     int64_t tex = -1;
@@ -291,23 +302,24 @@ void parseMesh2Body(BuildContext& c, const Token&, ObjectValue& object) {
     // Without normal_indices, normals are per vertex when there are as many.
     const bool perVertexNormals = !haveNormalIndices && !parts.normals.empty();
     if (perVertexNormals && parts.normals.size() != parts.vertices.size())
-        r.fail(faceAt.front(),
+        r.fail(firstFace,
                "Number of normals does not match the number of vertices (normal_indices needed).");
     if (haveNormalIndices && normalFaces.size() != faces.size())
-        r.fail(faceAt.front(), "Number of normal indices does not match the number of faces.");
+        r.fail(firstFace, "Number of normal indices does not match the number of faces.");
     if (haveUvIndices && uvFaces.size() != faces.size())
-        r.fail(faceAt.front(), "Number of uv indices does not match the number of faces.");
+        r.fail(firstFace, "Number of uv indices does not match the number of faces.");
+    parts.triangles.reserve(faces.size());
     for (size_t i = 0; i < faces.size(); ++i) {
         scene::MeshTriangle tri;
         for (size_t k = 0; k < 3; ++k) {
             if (faces[i][k] < 0 || faces[i][k] >= static_cast<int64_t>(parts.vertices.size()))
-                r.fail(faceAt[i], "Mesh face index out of range.");
+                r.fail(faceToken(i), "Mesh face index out of range.");
             tri.vertex[k] = static_cast<uint32_t>(faces[i][k]);
             if (perVertexNormals) tri.normal[k] = static_cast<int32_t>(faces[i][k]);
             if (haveNormalIndices) {
                 if (normalFaces[i][k] < 0 ||
                     normalFaces[i][k] >= static_cast<int64_t>(parts.normals.size()))
-                    r.fail(faceAt[i], "Mesh normal index out of range.");
+                    r.fail(faceToken(i), "Mesh normal index out of range.");
                 tri.normal[k] = static_cast<int32_t>(normalFaces[i][k]);
             }
             // uv per face, else per vertex (an index past the list leaves
@@ -317,10 +329,15 @@ void parseMesh2Body(BuildContext& c, const Token&, ObjectValue& object) {
                 tri.uv[k] = static_cast<int32_t>(uvIndex);
         }
         if (faceTextures[i] >= static_cast<int64_t>(parts.textures.size()))
-            r.fail(faceAt[i], "Texture index out of range in mesh2.");
+            r.fail(faceToken(i), "Texture index out of range in mesh2.");
         tri.texture = static_cast<int32_t>(faceTextures[i]);
         parts.triangles.push_back(tri);
     }
+    // Freed before the mesh and its BVH are built (the peak).
+    for (auto* list : {&faces, &normalFaces, &uvFaces})
+        std::vector<std::array<int64_t, 3>>().swap(*list);
+    std::vector<int64_t>().swap(faceTextures);
+    std::vector<std::array<uint32_t, 2>>().swap(faceAt);
     buildMeshObject(obj, parts);
 }
 

@@ -52,27 +52,32 @@ inline uint32_t identifierHash(std::string_view name) {
     return static_cast<uint32_t>(std::hash<std::string_view>{}(name)) | 1u;
 }
 
+// 40 bytes: an exported mesh file is tens of millions of tokens, all kept
+// (loops and macros jump back), so every byte here is tens of MB there.
 struct Token {
-    TokenKind kind = TokenKind::End;
-    Sym sym = Sym::None;         // for Symbol
-    Keyword kw = Keyword::None;  // for Word: the reserved word, or None for an identifier
-    uint32_t line = 0, column = 0;
-    std::string_view text;  // Word spelling, String contents (escapes decoded)
-    double number = 0;      // for Number
+    TokenKind kind : 7 = TokenKind::End;
     // String: holds an escape the language does not define ("\\q"). An
     // error in a string expression, as in povray; file names take the
     // string's raw text, where backslashes are no escapes (see rawString).
-    bool unknownEscape = false;
+    bool unknownEscape : 1 = false;
+    Sym sym = Sym::None;         // for Symbol
+    Keyword kw = Keyword::None;  // for Word: the reserved word, or None for an identifier
+    uint32_t line = 0, column = 0;
     // Word identifiers: identifierHash(text), computed once by the lexer so
     // symbol lookups do not hash the name again (0: not computed).
     uint32_t nameHash = 0;
+    std::string_view text;  // Word spelling, String contents (escapes decoded)
+    double number = 0;      // for Number
 
     bool is(Sym s) const { return kind == TokenKind::Symbol && sym == s; }
     bool is(Keyword k) const { return kind == TokenKind::Word && kw == k; }
     bool isIdentifier() const { return kind == TokenKind::Word && kw == Keyword::None; }
 };
 
+static_assert(sizeof(Token) == 40);
+
 // One lexed file: its source and its tokens, ending with an End token.
+
 struct TokenizedFile {
     std::shared_ptr<const SourceFile> source;
     std::vector<Token, HugePageAllocator<Token>> tokens;

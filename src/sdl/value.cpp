@@ -38,4 +38,34 @@ const char* valueKindName(const Value& v) {
     return std::visit(Namer{}, v);
 }
 
+void ArrayValue::set(size_t i, Value value) {
+    if (std::holds_alternative<std::monostate>(value)) {  // unset it again
+        if (!values_.empty())
+            values_[i] = std::move(value);
+        else if (!floatSet_.empty())
+            floatSet_[i] = false;
+        return;
+    }
+    if (!kind_) kind_ = valueKindName(value);
+    if (const double* f = std::get_if<double>(&value); f && values_.empty()) {
+        if (floats_.empty()) {
+            floats_.assign(size_, 0.0);
+            floatSet_.assign(size_, false);
+        }
+        floats_[i] = *f;
+        floatSet_[i] = true;
+        return;
+    }
+    if (values_.empty()) {
+        // The first element not a float (the kind check lets that happen
+        // only while no float is set): every element becomes a Value.
+        values_.resize(size_);
+        for (size_t k = 0; k < floatSet_.size(); ++k)
+            if (floatSet_[k]) values_[k] = floats_[k];
+        std::vector<double>().swap(floats_);  // freed, not only emptied
+        std::vector<bool>().swap(floatSet_);
+    }
+    values_[i] = std::move(value);
+}
+
 }  // namespace frameray::sdl

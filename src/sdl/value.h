@@ -70,7 +70,7 @@ struct DensityValue {
 };
 using DensityPtr = std::shared_ptr<const DensityValue>;
 
-struct ArrayValue;
+class ArrayValue;
 struct FileHandle;
 struct SplineValue;
 struct FunctionValue;
@@ -98,12 +98,52 @@ using Value =
                  SplinePtr, FunctionPtr, IdentifierAlias, FogPtr, SkySpherePtr, InteriorPtr,
                  BlendMapPtr, NormalPtr, MaterialPtr, MediaPtr, DensityPtr>;
 
-// Arrays of up to five dimensions. Elements start unset (monostate); once
-// one is set, every other must have the same kind (seed: "all other
-// elements can only be defined as that type").
-struct ArrayValue {
+// Arrays of up to five dimensions. Elements start unset; once one is set,
+// every other must have the same kind (seed: "all other elements can only
+// be defined as that type"). Float elements, the kind of the largest
+// arrays scenes make, are kept unboxed (8 bytes and a bit each, as povray
+// keeps them) instead of as 56-byte Values; the storage for a kind is
+// made when the first element of it is set.
+class ArrayValue {
+  public:
     std::vector<int> dims;
-    std::vector<Value> elements;  // row-major
+
+    // Sets the element count; every element unset.
+    void reset(size_t count) {
+        size_ = count;
+        kind_ = nullptr;
+        std::vector<double>().swap(floats_);
+        std::vector<bool>().swap(floatSet_);
+        std::vector<Value>().swap(values_);
+    }
+    size_t size() const { return size_; }
+    // valueKindName of the elements set so far; null while none is set.
+    const char* kind() const { return kind_; }
+    bool isSet(size_t i) const {
+        return values_.empty() ? !floatSet_.empty() && floatSet_[i]
+                               : !std::holds_alternative<std::monostate>(values_[i]);
+    }
+    // Element i (monostate while unset).
+    Value get(size_t i) const {
+        if (!values_.empty()) return values_[i];
+        if (!floatSet_.empty() && floatSet_[i]) return floats_[i];
+        return {};
+    }
+    // The first element set, in row-major order (none: monostate).
+    Value firstSet() const {
+        for (size_t i = 0; i < size_; ++i)
+            if (isSet(i)) return get(i);
+        return {};
+    }
+    // Stores element i; the caller has checked `value`'s kind against kind().
+    void set(size_t i, Value value);
+
+  private:
+    size_t size_ = 0;
+    const char* kind_ = nullptr;
+    std::vector<double> floats_;  // float elements, while values_ is empty
+    std::vector<bool> floatSet_;
+    std::vector<Value> values_;  // elements of any other kind
 };
 
 // Whether `v` is an array whose elements hold a T. Elements are all of one
@@ -111,12 +151,9 @@ struct ArrayValue {
 template <typename T>
 bool arrayHolds(const Value& v) {
     const auto* array = std::get_if<ArrayPtr>(&v);
-    if (!array || !*array) return false;
-    for (const Value& e : (*array)->elements) {
-        if (std::holds_alternative<std::monostate>(e)) continue;
-        return std::holds_alternative<T>(e) || arrayHolds<T>(e);
-    }
-    return false;
+    if (!array || !*array || !(*array)->kind()) return false;
+    const Value first = (*array)->firstSet();
+    return std::holds_alternative<T>(first) || arrayHolds<T>(first);
 }
 
 // "float", "vector", "object"... for messages.
