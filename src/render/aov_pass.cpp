@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "render/camera_rays.h"
+#include "render/texture_blend.h"
 
 namespace frameray::render {
 
@@ -23,14 +24,7 @@ void collectIds(const scene::Object& obj, float id, ObjectIds& ids) {
 // The pigment colour of the top texture layer at p (see aov_pass.h).
 RGB albedoOf(const scene::Texture& texture, const Vec3& p, const Vec3& uv) {
     const Vec3 at = texture.uvMapping ? uv : p;
-    if (texture.map) {
-        RGB color(0.0);
-        const Vec3 q = texture.transform.inversePoint(at);
-        const Vec3 entry = texture.map->entryPoint(q);
-        texture.map->visit(
-            q, [&](const scene::Texture& t, double w) { color += albedoOf(t, entry, uv) * w; });
-        return color;
-    }
+    if (texture.map) return blendTextureMap(texture, at, uv, albedoOf);
     if (!texture.pigment) return RGB(0.0);
     scene::SurfaceInfo surface{};
     surface.uv = uv;

@@ -8,6 +8,7 @@
 #include "render/lighting.h"
 #include "render/optics.h"
 #include "render/photons.h"
+#include "render/texture_blend.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
@@ -231,14 +232,11 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
 RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const {
     const scene::Texture& bottom = top.layersBelow.empty() ? top : *top.layersBelow.back();
     const Vec3 at = bottom.uvMapping ? uv : p;
-    if (bottom.map) {
-        RGB color(0.0);
-        const Vec3 q = bottom.transform.inversePoint(at);
-        const Vec3 entry = bottom.map->entryPoint(q);
-        bottom.map->visit(
-            q, [&](const scene::Texture& t, double w) { color += quickColour(t, entry, uv) * w; });
-        return color;
-    }
+    if (bottom.map)
+        return blendTextureMap(
+            bottom, at, uv, [this](const scene::Texture& t, const Vec3& entry, const Vec3& uvAt) {
+                return quickColour(t, entry, uvAt);
+            });
     if (!bottom.pigment) return RGB(0.0);
     const scene::Pigment& pigment = *bottom.pigment;
     if (pigment.quickColor()) return pigment.quickColor()->rgb;
