@@ -6,11 +6,9 @@
 //   corner, gets level floor(v * levels + 1 - M / n^2) with M from the
 //   matrices in dither.cpp; so a value exactly on a level is raised by one
 //   where M is 0 (povray writes black as 1 there too).
-// - FS: Floyd-Steinberg error diffusion, rows left to right, rounding to
-//   the nearest level, 7/16 of the error to the right, 3/16, 5/16, 1/16 to
-//   the row below. That equals povray's pixels for some flat colours
-//   (100.25 and 100.4 of 255 on 8x6) but not all: povray's own variant
-//   carries the error differently (one level apart in a few pixels).
+// - FS: povray's Floyd-Steinberg variant, exact on 16x16 flat fields at
+//   File_Gamma 1.0 and 2.2 (rules in dither.cpp): the error is carried in
+//   working space, and column 0 takes the error meant for the row above.
 // Each colour channel is dithered on its own; alpha is rounded.
 #pragma once
 

@@ -32,4 +32,13 @@ double GammaEncoding::encode(double v) const {
     return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
+double GammaEncoding::decode(double v) const {
+    if (curve_ == Curve::Identity) return v;
+    const double linear = curve_ == Curve::Power ? std::pow(v, fileGamma_)
+                          : v <= 0.04045         ? v / 12.92
+                                                 : std::pow((v + 0.055) / 1.055, 2.4);
+    if (assumedGamma_ == 1.0) return linear;
+    return std::pow(linear, 1.0 / assumedGamma_);
+}
+
 }  // namespace frameray::image

@@ -16,8 +16,19 @@ class GammaEncoding {
     static GammaEncoding forScene(bool assumedGammaSet, double assumedGamma, double languageVersion,
                                   double fileGamma);
 
+    // File values equal working values (no gamma handling).
+    static GammaEncoding identity() {
+        GammaEncoding g;
+        g.curve_ = Curve::Identity;
+        return g;
+    }
+
     // Maps a working-space value in [0,1] (already clipped) to [0,1] file space.
     double encode(double working) const;
+
+    // The inverse of encode: a file value in [0,1] back to working space
+    // (Floyd-Steinberg dithering carries its error there, as povray does).
+    double decode(double file) const;
 
     // Working space -> linear light (identity when gamma handling is off,
     // as for pre-3.7 scenes without assumed_gamma).

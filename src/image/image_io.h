@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "image/gamma.h"
 #include "util/pixel_buffer.h"
 
 namespace frameray::image {
@@ -32,6 +33,9 @@ struct EncodedImage {
     int bitDepth = 8;
     std::vector<float> values;
     Dither dither = Dither::None;
+    // How `values` were encoded from working space: Floyd-Steinberg
+    // dithering carries its error in working space, as povray does.
+    GammaEncoding gamma = GammaEncoding::identity();
     // EXR only: more channels after the colour (Output_AOVs), stored as
     // 32-bit floats under these names, extraNames.size() per pixel in
     // `extraValues`; and the compression (OpenEXR's codec name, empty: the

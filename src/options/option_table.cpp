@@ -445,7 +445,8 @@ const OptionSpec kOptions[] = {
      FR_WRITE(onOff(o.cyclicAnimation)), nullptr},
     FR_STREAM(TextStream::Debug, "Debug", "D", "#debug"),
     {"Declare", "", OptionType::Declare, "",
-     "Declare=Name=Value: a float or string identifier set before parsing.",
+     "Declare=Name=Value: a float (six significant digits, as povray keeps it) or string "
+     "identifier set before parsing.",
      [](RenderOptions& o, const OptionInput& in) {
          const std::string v = trimQuotes(in.value);
          const auto eq = v.find('=');
@@ -471,9 +472,8 @@ const OptionSpec kOptions[] = {
      [](RenderOptions& o, const OptionInput& in) { o.dither = toBool(in); },
      FR_WRITE(onOff(o.dither)), nullptr},
     {"Dither_Method", "", OptionType::String, "FS",
-     "How Dither dithers: B2, B3, B4 Bayer patterns of that size (povray's, pixel for pixel), FS "
-     "Floyd-Steinberg error diffusion (povray's own variant differs by one level in some "
-     "pixels).",
+     "How Dither dithers: B2, B3, B4 Bayer patterns of that size, FS Floyd-Steinberg error "
+     "diffusion in povray's own variant (all pixel for pixel as povray's).",
      [](RenderOptions& o, const OptionInput& in) {
          std::string v = trimQuotes(in.value);
          for (char& c : v) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace frameray::sdl {
 
@@ -44,10 +45,15 @@ void Reader::begin(std::shared_ptr<const TokenizedFile> file, std::string inputF
     for (const auto& [name, value] : frame_.declares) {
         char* end = nullptr;
         const double number = std::strtod(value.c_str(), &end);
-        if (end && *end == '\0' && !value.empty())
-            symbols_.global()[name] = number;
-        else
+        if (end && *end == '\0' && !value.empty()) {
+            // povray keeps six significant digits of the value (measured:
+            // Declare=V=0.123456789 reads back as 0.123457).
+            char rounded[32];
+            std::snprintf(rounded, sizeof rounded, "%g", number);
+            symbols_.global()[name] = std::strtod(rounded, nullptr);
+        } else {
             symbols_.global()[name] = value;
+        }
     }
     cursors_.push_back({file, 0, CursorKind::File, 1, 0, false});
     // Include_Header (+HI): read before the scene's first line, as an

@@ -199,6 +199,28 @@ def main():
     if p.returncode != 0 or os.listdir(rtr) or b"Real_Time_Raytracing" not in p.stderr:
         failures.append(f"+RTR: exit {p.returncode}, files {os.listdir(rtr)}: {p.stderr.decode()}")
 
+    # Dither_Method=FS as povray 3.7.0.10 writes it, and Declare= values
+    # kept to six significant digits as povray keeps them: a flat field of
+    # Declare=V=100.5/255 (read as 0.394118) at File_Gamma 1.0. povray's
+    # 16x16 PPM: rows "1010..." twice, then "0101..." twice (levels minus
+    # 100), the pattern column 0's delayed error gives; plain
+    # Floyd-Steinberg or the unrounded value give other pixels.
+    with open(os.path.join(scratch, "flat.pov"), "w") as f:
+        f.write("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                "camera { orthographic location <0,0,-1> look_at 0 right x up y }\n"
+                "plane { z, 0 pigment { rgb V } finish { emission 1 diffuse 0 ambient 0 } }\n")
+    p = subprocess.run([frameray, "flat.pov", "+W16", "+H16", "-A", "+FP", "+Oflat.ppm",
+                        "File_Gamma=1.0", "Dither=on", "Dither_Method=FS",
+                        "Declare=V=0.3941176470588235"], cwd=scratch, env=env, capture_output=True)
+    if p.returncode != 0:
+        failures.append(f"FS dither: exit {p.returncode}: {p.stderr.decode()}")
+    else:
+        _, _, _, _, px, _ = ppm_parts(read(os.path.join(scratch, "flat.ppm")))
+        got = ["".join(str(px[3 * (16 * y + x)] - 100) for x in range(16)) for y in range(16)]
+        want = ["10" * 8 if y % 4 < 2 else "01" * 8 for y in range(16)]
+        if got != want:
+            failures.append(f"FS dither: rows {got}, povray {want}")
+
     for f in failures:
         print("FAIL:", f)
     print("output_test:", "ok" if not failures else f"{len(failures)} failures")

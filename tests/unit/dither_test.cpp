@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 using namespace frameray::image;
 
@@ -54,6 +55,57 @@ TEST(Dither, FloydSteinbergMatchesPovrayOnTheseColours) {
               "000000000101010100000000010101010000000001010100");
     EXPECT_EQ(pattern(flat(8, 6, (100 + 0.4) / 255, Dither::FloydSteinberg), 100),
               "010010100101000101001100010100100100101001010010");
+}
+
+// 16 x 16 flat fields of working value v (as povray's Declare=V= passes
+// it: six significant digits), encoded with `gamma`, against povray
+// 3.7.0.10's PPM pixels (Dither_Method=FS, assumed_gamma 1, File_Gamma
+// 1.0 and 2.2): the levels minus `base`, one row per string.
+std::string rows(double v, const GammaEncoding& gamma, int base) {
+    EncodedImage img = flat(16, 16, gamma.encode(v), Dither::FloydSteinberg);
+    img.gamma = gamma;
+    const std::string p = pattern(img, base);
+    std::string out;
+    for (int y = 0; y < 16; ++y) out += p.substr(y * 16, 16) + "\n";
+    return out;
+}
+
+std::string join(const std::vector<std::string>& lines) {
+    std::string out;
+    for (const auto& l : lines) out += l + "\n";
+    return out;
+}
+
+TEST(Dither, FloydSteinbergIsPovraysVariant) {
+    // Column 0 takes the error meant for the row above (povray turns its
+    // row buffers after reading it): at .5 each row pattern comes twice.
+    const GammaEncoding linear = GammaEncoding::forScene(true, 1.0, 3.7, 1.0);
+    EXPECT_EQ(
+        rows(0.394118, linear, 100),
+        join({"1010101010101010", "1010101010101010", "0101010101010101", "0101010101010101",
+              "1010101010101010", "1010101010101010", "0101010101010101", "0101010101010101",
+              "1010101010101010", "1010101010101010", "0101010101010101", "0101010101010101",
+              "1010101010101010", "1010101010101010", "0101010101010101", "0101010101010101"}));
+    EXPECT_EQ(
+        rows(0.393725, linear, 100),
+        join({"0100101001010010", "0101000101001010", "0100110100101001", "0101001010010100",
+              "0100100010100010", "0101010101010101", "0100101000101010", "0101000110010001",
+              "0100101001001010", "0101010100101001", "0100100010100100", "0101010101010101",
+              "0100010100100100", "0101010010010010", "0100101001010101", "0101000101001010"}));
+    // File_Gamma 2.2: the error is carried in working (linear) values.
+    const GammaEncoding g22 = GammaEncoding::forScene(true, 1.0, 3.7, 2.2);
+    EXPECT_EQ(
+        rows(0.393137, g22, 166),
+        join({"1111111111111111", "1101101101101101", "1111111111111111", "1101101101011011",
+              "1111111111111111", "1010110110110101", "1111111111111111", "1110101011011011",
+              "1011111111111111", "1111110110101101", "1101011111111111", "1111111011011011",
+              "1011101111111110", "1110111101101111", "1111110111111011", "1011011110111110"}));
+    EXPECT_EQ(
+        rows(0.395098, g22, 167),
+        join({"0000000000000000", "0010010010010010", "0000000000000000", "0101010101010100",
+              "0000000000000001", "0010001001001000", "0000100000000010", "0100000100100000",
+              "0001000000001001", "0000010101000000", "0101000000010100", "0000001001000001",
+              "0010000000001000", "0000101001000010", "0100000000010000", "0001001010000100"}));
 }
 
 TEST(Dither, NoneRoundsAndAlphaIsNotDithered) {
