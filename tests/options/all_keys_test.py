@@ -23,7 +23,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from output_test import png_samples, read  # noqa: E402
+from output_test import png_samples, read, report  # noqa: E402
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "all_keys")
 
@@ -58,10 +58,7 @@ def main():
             failures.append(f"Dither=FS: {differing} samples differ, at most by {max(diffs)}")
         if images["dither"] == images.get("nodither"):
             failures.append("Dither=on wrote the same pixels as Dither=off")
-    for f in failures:
-        print("FAIL:", f)
-    print("all_keys_test:", "ok" if not failures else f"{len(failures)} failures")
-    return 1 if failures else 0
+    return report("all_keys_test", failures)
 
 
 if __name__ == "__main__":

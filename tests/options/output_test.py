@@ -110,6 +110,14 @@ def ppm_parts(data):
     return toks[0], w, h, maxval, data[i:i + size], data[i + size:]
 
 
+def report(name, failures):
+    """Prints the failures and the verdict; the exit status."""
+    for f in failures:
+        print("FAIL:", f)
+    print(f"{name}:", "ok" if not failures else f"{len(failures)} failures")
+    return 1 if failures else 0
+
+
 def main():
     frameray, scratch = sys.argv[1], sys.argv[2]
     shutil.rmtree(scratch, ignore_errors=True)
@@ -221,10 +229,7 @@ def main():
         if got != want:
             failures.append(f"FS dither: rows {got}, povray {want}")
 
-    for f in failures:
-        print("FAIL:", f)
-    print("output_test:", "ok" if not failures else f"{len(failures)} failures")
-    return 1 if failures else 0
+    return report("output_test", failures)
 
 
 if __name__ == "__main__":
