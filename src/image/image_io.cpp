@@ -16,6 +16,7 @@
 #include "image/png_reader.h"
 #include "image/png_writer.h"
 #include "image/pnm_reader.h"
+#include "image/ppm_writer.h"
 #include "image/tga_reader.h"
 #include "util/durable_file.h"
 
@@ -81,7 +82,7 @@ std::vector<float> withExtraChannels(const EncodedImage& image, EncodeRequest& r
 }
 
 bool hasDeepChannels(FileType t) {
-    return t == FileType::PNG || t == FileType::PPM || t == FileType::TIFF;
+    return t == FileType::PNG || t == FileType::TIFF;
 }
 
 }  // namespace
@@ -128,6 +129,11 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
 std::vector<unsigned char> encodeFile(FileType type, const EncodedImage& image,
                                       const fs::path& path) {
     const TypeInfo& ti = info(type);
+    if (type == FileType::PPM) {
+        const int bits = std::clamp(image.bitDepth, 1, 16);
+        return encodePpm(image.width, image.height, image.channels, bits,
+                         quantizeToLevels(image, std::ldexp(1.0, bits) - 1.0));
+    }
     const bool floatFile = type == FileType::EXR || type == FileType::HDR;
     const int bits = std::clamp(image.bitDepth, 1, hasDeepChannels(type) ? 16 : 8);
     const bool deep = bits > 8;

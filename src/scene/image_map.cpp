@@ -86,6 +86,14 @@ ImageTexels::ImageTexels(std::shared_ptr<const util::PixelBuffer> pixels,
         levels_.resize(levels);
         for (std::size_t l = 0; l < levels; ++l)
             levels_[l] = decode(static_cast<double>(static_cast<float>(l) * scale));
+        // povray keeps an 8-bit grey image (no alpha, no palette) in an
+        // 8-bit buffer after decoding it, truncating the decoded value
+        // (measured over all 256 levels of a grey PNG, sRGB, gamma 2.2 and
+        // gAMA 2.2: povray's colours are floor(decoded * 255) / 255;
+        // 16-bit grey, grey with alpha and colour images keep every value).
+        const bool neutral = decoding_.asStored || decoding_.fileGamma == decoding_.workingGamma;
+        if (levels == 256 && px.channels() == 1 && !neutral)
+            for (double& v : levels_) v = std::floor(v * 255.0 + 1e-7) / 255.0;
     }
 }
 

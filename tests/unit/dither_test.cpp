@@ -1,12 +1,17 @@
-// Dither=on as povray 3.7 writes it (Dither_Method B2, B3, B4, FS).
+// Dither=on as povray 3.7 writes it (Dither_Method B2, B3, B4, FS), and
+// the PPM files the levels go to.
 // Expected pixels are povray 3.7.0.10's, measured on flat colours
 // (background rgb v, assumed_gamma 1, File_Gamma 1.0, 8-bit PPM).
 #include "image/dither.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
+
+#include "image/ppm_writer.h"
 
 using namespace frameray::image;
 
@@ -116,4 +121,33 @@ TEST(Dither, NoneRoundsAndAlphaIsNotDithered) {
     const std::vector<double> q = quantizeToLevels(rgba, 255);
     for (size_t i = 3; i < q.size(); i += 4) EXPECT_EQ(q[i], 100) << i;
     EXPECT_EQ(q[3 * 4], 101);  // pixel (3, 0): matrix 0
+}
+
+// PPM files carry povray's maximum value 2^bits - 1 at any depth (measured:
+// +FP5 maxval 31, +FP12 4095, +FP16 65535), one byte per sample up to 255,
+// two (most significant first) above; alpha is not written.
+TEST(PpmWriter, MaximumValueIsTheDepthsAsPovrayWritesIt) {
+    EncodedImage img = flat(2, 1, 0.5, Dither::None);
+    for (const auto& [bits, header, sample] :
+         {std::tuple{5, std::string("P6\n2 1\n31\n"), std::vector<unsigned char>{16}},
+          std::tuple{8, std::string("P6\n2 1\n255\n"), std::vector<unsigned char>{128}},
+          std::tuple{12, std::string("P6\n2 1\n4095\n"), std::vector<unsigned char>{0x08, 0x00}},
+          std::tuple{16, std::string("P6\n2 1\n65535\n"),
+                     std::vector<unsigned char>{0x80, 0x00}}}) {
+        const double levels = std::ldexp(1.0, bits) - 1;
+        const std::vector<unsigned char> file =
+            encodePpm(2, 1, 3, bits, quantizeToLevels(img, levels));
+        ASSERT_EQ(file.size(), header.size() + 6 * sample.size()) << bits;
+        EXPECT_EQ(std::string(file.begin(), file.begin() + header.size()), header);
+        EXPECT_EQ(std::vector<unsigned char>(file.begin() + header.size(),
+                                             file.begin() + header.size() + sample.size()),
+                  sample)
+            << bits;
+    }
+    // Grey with alpha: P5, the grey only.
+    EncodedImage ga = flat(1, 1, 1.0, Dither::None);
+    ga.channels = 2;
+    ga.values = {1.0f, 0.5f};
+    const std::vector<unsigned char> grey = encodePpm(1, 1, 2, 8, quantizeToLevels(ga, 255));
+    EXPECT_EQ(std::string(grey.begin(), grey.end()), std::string("P5\n1 1\n255\n") + '\xff');
 }
