@@ -3,6 +3,7 @@
 
     slurm_test.py FRAMERAY REPO_ROOT WORKDIR
 
+0. Without slurm-wlm and munge it runs scripts/setup.sh (it never skips).
 1. A minimal cluster in a temporary folder: its own munge key and munged
    socket, a generated slurm.conf (this host as the only node, a partition
    of 2 CPUs, no accounting database, no cgroups), slurmctld and slurmd.
@@ -258,11 +259,18 @@ def main():
         print(__doc__)
         return 2
     frameray, root, work = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), os.path.abspath(sys.argv[3])
-    missing = [p for p in DAEMONS + CLIENTS if not find(p)]
-    if missing:
-        fail(f"not installed: {', '.join(missing)} (scripts/setup.sh installs slurm-wlm and munge)")
     if os.geteuid() != 0:
         fail("needs root: slurmd runs the tasks as their user and munged as the cluster's")
+    missing = [p for p in DAEMONS + CLIENTS if not find(p)]
+    if missing:
+        # A fresh machine: install them as CI does, never skip.
+        log(f"not installed: {', '.join(missing)}; running scripts/setup.sh")
+        proc = subprocess.run(["bash", os.path.join(root, "scripts", "setup.sh")], capture_output=True, text=True,
+                              timeout=200, stdin=subprocess.DEVNULL)
+        print(proc.stdout[-2000:], proc.stderr[-2000:], flush=True)
+        missing = [p for p in DAEMONS + CLIENTS if not find(p)]
+        if proc.returncode != 0 or missing:
+            fail(f"scripts/setup.sh (exit {proc.returncode}) left {', '.join(missing) or 'nothing'} missing")
     t0 = time.time()
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
