@@ -35,13 +35,14 @@
 #include "anim/preview_video.h"
 #include "anim/progress.h"
 #include "anim/run_log.h"
+#include "anim/shard_statistics.h"
 #include "anim/statistics.h"
 #include "image/codecs.h"
 #include "image/frame_encoding.h"
 #include "image/image_io.h"
 #include "options/option_table.h"
-#include "render/radiosity_file.h"
 #include "render/aov_pass.h"
+#include "render/radiosity_file.h"
 #include "render/renderer.h"
 #include "render/world.h"
 #include "sdl/diagnostics.h"
@@ -386,6 +387,7 @@ class Run {
         switch (outcome_.kind) {
             case Outcome::Kind::None:
             case Outcome::Kind::Finish:
+                mergeShardStatistics();
                 return makeVideo() ? finish() : 1;
             case Outcome::Kind::Quit:
                 return 0;
@@ -1014,6 +1016,27 @@ class Run {
             logEvent(LogLevel::Warn, "write_failed",
                      {{"file", path.string()}, {"reason", std::string(e.what())}});
             say(TextStream::Warning, fmt::format("frameray: warning: {}\n", e.what()));
+        }
+    }
+
+    // A shard that has finished its frames merges every shard's statistics
+    // into sequence.json when all of them have finished theirs: the last
+    // shard to finish makes the sequence's one view (as `frameray
+    // --merge-stats DIR` does). Until then it says what it waits for.
+    void mergeShardStatistics() const {
+        if (!toFiles_ || !seq_.animated || seq_.shardCount <= 1 || seq_.frames.empty() ||
+            finished_.load() < seq_.frames.size())
+            return;
+        const fs::path dir = seq_.frames.front().output.parent_path();
+        try {
+            const MergedStatistics merged = mergeShardStatisticsIn(dir.empty() ? "." : dir);
+            logEvent(LogLevel::Info, "statistics_merged",
+                     {{"file", merged.file.string()}, {"shards", merged.shards}});
+            if (o_.verbose)
+                say(TextStream::Render, fmt::format("statistics of the {} shards merged into {}\n",
+                                                    merged.shards, merged.file.string()));
+        } catch (const std::exception& e) {
+            logEvent(LogLevel::Info, "statistics_waiting", {{"reason", std::string(e.what())}});
         }
     }
 

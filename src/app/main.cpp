@@ -11,6 +11,7 @@
 #include "anim/frame_loop.h"
 #include "anim/interrupt.h"
 #include "anim/sequence.h"
+#include "anim/shard_statistics.h"
 #include "app/version.h"
 #include "options/option_table.h"
 #include "options/options.h"
@@ -32,6 +33,25 @@ int main(int argc, char** argv) {
     std::erase_if(args, [&](const std::string& a) {
         return a == "--list-frames" ? (listFrames = true) : false;
     });
+    // --merge-stats DIR: one sequence.json for a sequence rendered in
+    // shards, from their sequence.shard-I-of-N.json files in DIR.
+    if (!args.empty() && args[0] == "--merge-stats") {
+        if (args.size() != 2) {
+            std::fputs(
+                "frameray: error: --merge-stats takes one folder: frameray --merge-stats DIR\n",
+                stderr);
+            return 2;
+        }
+        try {
+            const anim::MergedStatistics merged = anim::mergeShardStatisticsIn(args[1]);
+            std::printf("%s: %zu shards, %zu frames rendered, %zu kept (+C)\n", merged.file.c_str(),
+                        merged.shards, merged.framesRendered, merged.framesKept);
+            return 0;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "frameray: error: --merge-stats: %s\n", e.what());
+            return 2;
+        }
+    }
     for (const std::string& a : args)
         if (a == "--help" || a == "-h" || a == "-?") {
             std::fputs(options::helpText().c_str(), stdout);

@@ -955,6 +955,8 @@ std::string helpText() {
         "(+X/-X).\n"
         "--list-frames prints the frames the options ask for (number, clock, file) without "
         "rendering.\n"
+        "--merge-stats DIR writes DIR/sequence.json for a sequence rendered in shards, from "
+        "their sequence.shard-I-of-N.json files.\n"
         "--version prints frameray's version and those of its libraries.\n"
         "Read in order: povray.ini ($POVINI, ./povray.ini, ~/.povray/3.7/povray.ini, "
         "/etc/povray/3.7/povray.ini: "

@@ -10,7 +10,8 @@ state through files is refused.
 2. The same options with Shard_Index=i Shard_Count=N for i in 0..N-1, all
    processes at once, into shared/: the union of their PNGs must equal
    one/'s (names and bytes); no shard may write another's frame, each
-   writes its own journal and sequence.shard-I-of-N.json.
+   writes its own journal and sequence.shard-I-of-N.json, and the last to
+   finish merges them into sequence.json.
 3. A shard killed mid-run and run again with +C finishes its frames.
 4. tests/anim/state_passing/bounce.pov with +SHC2: refused (exit != 0,
    a message naming Shard_Count, no image, no state file written).
@@ -79,6 +80,16 @@ def main():
         if not os.path.exists(os.path.join(shared, f".demo.shard-{i}-of-{shards}.frameray-journal")):
             fail(f"shard {i} wrote no journal of its own")
     print(f"{shards} shards: union of {len(union)} frames byte-identical to one process")
+    # The last shard to finish merged the shards' statistics (issue 28).
+    whole = os.path.join(shared, "sequence.json")
+    if not os.path.exists(whole):
+        fail("no sequence.json merged from the shards' statistics")
+    with open(whole) as f:
+        stats = json.load(f)
+    numbers = [frame["number"] for frame in stats["frames"]]
+    if numbers != list(range(3, 23)) or stats["shard_count"] != shards or len(stats["shards"]) != shards:
+        fail(f"merged sequence.json: frames {numbers}, shard_count {stats['shard_count']}")
+    print(f"sequence.json merged from {shards} shards: frames 3..22")
 
     # A shard that dies is run again with +C (what a Slurm requeue or a
     # Kubernetes retry does): it keeps its finished frames and renders the rest.
