@@ -1219,6 +1219,7 @@ class Run {
         image::EncodedImage out =
             image::encodeFrame(frame.width, frame.height, frame.rgb, frame.alpha, gamma,
                                fileBitDepth(), seq_.window, o_.grayscaleOutput);
+        out.gamma = o_.fileGamma;  // stated in PNG files (gAMA, sRGB)
         if (o_.dither) {
             static constexpr std::pair<std::string_view, image::Dither> kMethods[] = {
                 {"FS", image::Dither::FloydSteinberg},

@@ -169,7 +169,7 @@ std::vector<unsigned char> encodeFile(FileType type, const EncodedImage& image,
     try {
         // PNG, the default, without loading OpenImageIO (png_writer.h).
         bytes = type == FileType::PNG ? encodePng(request.width, request.height, request.channels,
-                                                  deep ? 16 : 8, request.pixels)
+                                                  deep ? 16 : 8, request.pixels, image.gamma)
                                       : codecs().encode(request);
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(fmt::format("cannot encode '{}': {}", path.string(), e.what()));

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct EncodedImage {
     std::vector<std::string> extraNames;
     std::vector<float> extraValues;
     std::string compression;
+    // The gamma the values are encoded with (File_Gamma, <= 0: sRGB), which
+    // a PNG file states in gAMA and sRGB chunks as povray's do (a scene
+    // that image_maps the frame decodes it by them); none: unstated.
+    std::optional<double> gamma;
 };
 
 const char* extensionFor(FileType type);
@@ -80,8 +85,11 @@ EncodedImage read(const std::filesystem::path& path);
 // file says about its gamma.
 struct SourceImage {
     std::shared_ptr<const util::PixelBuffer> pixels;
-    // The gamma the file declares (PNG gAMA), 0 when it declares none.
+    // The gamma the file declares (PNG gAMA without an sRGB chunk), 0 when
+    // it declares none; declaresSrgb: a PNG sRGB chunk (with or without
+    // gAMA), which povray reads as the sRGB curve.
     double declaredGamma = 0;
+    bool declaresSrgb = false;
     int width() const { return pixels ? pixels->width() : 0; }
     int height() const { return pixels ? pixels->height() : 0; }
     bool isPalette() const { return pixels && pixels->isPalette(); }

@@ -153,6 +153,7 @@ SourceImage readPng(const std::filesystem::path& path) {
         // is the default), gAMA's 1 / exponent is rounded to 2 decimals.
         if (h.gamma > 0 && !h.srgb)
             src.declaredGamma = static_cast<float>(std::round(100.0 / h.gamma) / 100.0);
+        src.declaresSrgb = h.srgb;
     }
     if (!ok)
         throw std::runtime_error(fmt::format("cannot read '{}': {}", path.string(), error.text));

@@ -2,6 +2,7 @@
 
 #include <png.h>
 
+#include <cmath>
 #include <csetjmp>
 #include <cstring>
 #include <stdexcept>
@@ -49,7 +50,7 @@ int colorType(int channels) {
 }  // namespace
 
 std::vector<unsigned char> encodePng(int width, int height, int channels, int bitsPerSample,
-                                     const void* samples) {
+                                     const void* samples, std::optional<double> gamma) {
     if (width <= 0 || height <= 0 || channels < 1 || channels > 4 ||
         (bitsPerSample != 8 && bitsPerSample != 16))
         throw std::runtime_error("PNG: unsupported image layout");
@@ -76,6 +77,13 @@ std::vector<unsigned char> encodePng(int width, int height, int channels, int bi
     png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height),
                  bitsPerSample, colorType(channels), PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (gamma) {
+        // gAMA holds 100000 / gamma rounded (povray: 1.8 -> 55556).
+        const bool srgb = *gamma <= 0;
+        const double g = srgb ? 2.2 : *gamma;
+        png_set_gAMA_fixed(png, info, static_cast<png_fixed_point>(std::lround(100000.0 / g)));
+        if (srgb) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    }
     png_write_info(png, info);
     // PNG stores 16-bit samples big-endian; ours are in memory order.
     if (bitsPerSample == 16) png_set_swap(png);

@@ -6,15 +6,20 @@ namespace frameray::scene::csg {
 
 namespace {
 
-// Whether child `self`'s crossing at p lies on the node's boundary.
-bool keepsCrossing(const Object& node, size_t self, const Vec3& p) {
+// Whether child `self`'s crossing at p lies on the node's boundary. An
+// inverted union keeps only its outer crossings, as a merge (measured:
+// povray hides the overlap of a subtracted union's operands, and of an
+// `inverse` union's).
+bool keepsCrossing(const Object& node, size_t self, const Vec3& p, bool inverted) {
     const auto& kids = node.children;
     for (size_t j = 0; j < kids.size(); ++j) {
         if (j == self) continue;
         const Object& other = *kids[j];
         switch (node.op) {
             case CsgOp::Union:
-                return true;
+                if (!inverted) return true;
+                if (other.inside(p)) return false;
+                break;
             case CsgOp::Merge:
                 if (other.inside(p)) return false;
                 break;
@@ -107,18 +112,20 @@ bool hasPatchOperand(const Object& node) {
 }  // namespace
 
 void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
-             std::vector<SurfaceHit>& hits) {
+             std::vector<SurfaceHit>& hits, bool inverted) {
     if ((node.op == CsgOp::Intersection || node.op == CsgOp::Difference) &&
         !rayMeetsOperandBoxes(node, ray, tMin))
         return;
     const size_t from = hits.size();
     for (size_t i = 0; i < node.children.size(); ++i) {
         const size_t start = hits.size();
-        node.children[i]->allHits(ray, tMin, tMax, kind, hits);
-        if (node.op == CsgOp::Union) continue;
+        // A difference inverts its later operands.
+        const bool subtracted = node.op == CsgOp::Difference && i > 0;
+        node.children[i]->allHits(ray, tMin, tMax, kind, hits, inverted != subtracted);
+        if (node.op == CsgOp::Union && !inverted) continue;
         size_t kept = start;
         for (size_t r = start; r < hits.size(); ++r)
-            if (keepsCrossing(node, i, ray.at(hits[r].t))) hits[kept++] = hits[r];
+            if (keepsCrossing(node, i, ray.at(hits[r].t), inverted)) hits[kept++] = hits[r];
         hits.resize(kept);
     }
     // Stable: at equal t the earlier child comes first.

@@ -19,9 +19,10 @@ namespace frameray::scene::csg {
 
 // The crossings of a CSG node's combined surface in (tMin, tMax),
 // appended to `hits` in increasing t. The node's own modifiers (inverse,
-// clipped_by, bounded_by) are the caller's (Object) to apply.
+// clipped_by, bounded_by) are the caller's (Object) to apply; `inverted`:
+// the node counts inverted (its own inverse included), as in Object::allHits.
 void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
-             std::vector<SurfaceHit>& hits);
+             std::vector<SurfaceHit>& hits, bool inverted);
 // The combined inside test, before the node's inverse and clips.
 bool inside(const Object& node, const Vec3& p);
 // Bounds of the combined surface and inside, before the node's modifiers.

@@ -61,14 +61,16 @@ Vec3 normalPatternVector(const Normal& nm, const Vec3& q, const Vec3& m) {
         case PatternKind::Ripples:
         case PatternKind::Waves: {
             const bool waves = pat.kind == PatternKind::Waves;
+            const WaveSources& w = pat.waveSources();
+            const double n = static_cast<double>(w.center.size());
             Vec3 sum;
-            for (int i = 0; i < kWaveSourceCount; ++i) {
-                const Vec3 d = q - waveSourceCenter(i);
+            for (std::size_t i = 0; i < w.center.size(); ++i) {
+                const Vec3 d = q - w.center[i];
                 double len = length(d);
                 if (len == 0) len = 1;
-                const double f = waves ? waveSourceFrequency(i) : 1.0;
+                const double f = waves ? w.frequency[i] : 1.0;
                 const double s = cycloidal(len * pat.frequency * f + pat.phase) * nm.amount;
-                sum += d * (s / (len * kWaveSourceCount * (waves ? f : 1.0)));
+                sum += d * (s / (len * n * (waves ? f : 1.0)));
             }
             return sum;
         }

@@ -104,7 +104,7 @@ bool insideAllClips(const Object& obj, const Vec3& p) {
 }  // namespace
 
 void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
-                     std::vector<SurfaceHit>& hits) const {
+                     std::vector<SurfaceHit>& hits, bool inverted) const {
     // povray cuts an object at an undersized bound for what the camera
     // sees but not for the shadow it casts.
     if (kind != RayKind::Shadow && !boundedBy.empty() && !passesBoundedBy(*this, ray, tMin)) return;
@@ -118,7 +118,7 @@ void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
         shape->allHits(local, tMin, tMax, ts);
         for (const double t : ts) hits.push_back({t, this});
     } else {
-        csg::allHits(*this, ray, tMin, tMax, kind, hits);
+        csg::allHits(*this, ray, tMin, tMax, kind, hits, inverted != inverse);
     }
     if (clippedBy.empty()) return;
     size_t kept = from;
@@ -139,7 +139,7 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind,
         hit = {t, this};
         return true;
     }
-    if (!shape && plain && op == CsgOp::Union) {
+    if (!shape && plain && op == CsgOp::Union && !inverse) {
         // The nearest child hit; no inside tests needed.
         bool found = false;
         for (const ObjectRef& child : children) {

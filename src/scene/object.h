@@ -111,9 +111,12 @@ struct Object {
     // Every surface crossing in (tMin, tMax), appended to `hits` in
     // increasing t (the caller's vector is used as scratch beyond its end).
     // `kind` only decides whether bounded_by applies (not to shadow rays);
-    // the flags are firstHit's to check.
+    // the flags are firstHit's to check. `inverted`: the object is an
+    // operand an odd number of inversions deep (povray inverts a union
+    // into the intersection of its inverted operands, which hides the
+    // crossings inside its other operands).
     void allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
-                 std::vector<SurfaceHit>& hits) const;
+                 std::vector<SurfaceHit>& hits, bool inverted = false) const;
     // povray's inside test: the object's own region (toggled by inverse,
     // except for patches, which enclose nothing) within every clip.
     bool inside(const Vec3& p) const;

@@ -166,37 +166,29 @@ double spiral(const Vec3& p, int arms, bool second) {
     return second ? triangle(sum) + triangle(rad) : sum;
 }
 
-// The wave sources of ripples and waves: povray places number_of_waves
-// (10) sources at the normalised vector noise of (i, 0, 0) and gives each a
-// frequency from its SDL random generator (state' = state * 1812433253 +
-// 12345, started at -560851967; bits 16..30 scaled to [0.01, 1.01]).
-struct WaveSources {
-    static constexpr int kCount = 10;
-    std::array<Vec3, kCount> center;
-    std::array<double, kCount> frequency;
-};
-
-const WaveSources& waveSources() {
-    static const WaveSources sources = [] {
-        WaveSources w{};
-        std::uint32_t state = static_cast<std::uint32_t>(-560851967);
-        for (int i = 0; i < WaveSources::kCount; ++i) {
-            w.center[i] = normalize(vectorNoise(Vec3(i, 0, 0)));
-            state = state * 1812433253u + 12345u;
-            w.frequency[i] = static_cast<double>((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
-        }
-        return w;
-    }();
-    return sources;
-}
-
 }  // namespace
 
-Vec3 waveSourceCenter(int i) {
-    return waveSources().center[static_cast<std::size_t>(i)];
+// The wave sources of ripples and waves: povray places number_of_waves
+// (10 unless global_settings says) sources at the normalised vector noise
+// of (i, 0, 0) and gives each a frequency from its SDL random generator
+// (state' = state * 1812433253 + 12345, started at -560851967; bits 16..30
+// scaled to [0.01, 1.01]); fewer or more sources are the first ones of the
+// same sequence (measured: 1, 2, 3, 5 and 20 match povray).
+std::shared_ptr<const WaveSources> makeWaveSources(int count) {
+    auto w = std::make_shared<WaveSources>();
+    std::uint32_t state = static_cast<std::uint32_t>(-560851967);
+    for (int i = 0; i < count; ++i) {
+        w->center.push_back(normalize(vectorNoise(Vec3(i, 0, 0))));
+        state = state * 1812433253u + 12345u;
+        w->frequency.push_back(static_cast<double>((state >> 16) & 0x7FFF) * 0.000030518509476 +
+                               0.01);
+    }
+    return w;
 }
-double waveSourceFrequency(int i) {
-    return waveSources().frequency[static_cast<std::size_t>(i)];
+
+const WaveSources& Pattern::waveSources() const {
+    static const std::shared_ptr<const WaveSources> kDefault = makeWaveSources(kDefaultWaveCount);
+    return waves ? *waves : *kDefault;
 }
 
 namespace {
@@ -205,26 +197,26 @@ double cycloidal(double v) {
     return std::sin(v * kTwoPi);
 }
 
-double ripples(const Vec3& p, double frequency, double phase) {
-    const WaveSources& w = waveSources();
+double ripplesValue(const Vec3& p, const WaveSources& w, double frequency, double phase) {
+    const std::size_t n = w.center.size();
     double sum = 0;
-    for (int i = 0; i < WaveSources::kCount; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         double len = length(p - w.center[i]);
         if (len == 0) len = 1;
         sum += cycloidal(len * frequency + phase);
     }
-    return 0.5 * (1.0 + sum / WaveSources::kCount);
+    return 0.5 * (1.0 + sum / static_cast<double>(n));
 }
 
-double waves(const Vec3& p, double frequency, double phase) {
-    const WaveSources& w = waveSources();
+double wavesValue(const Vec3& p, const WaveSources& w, double frequency, double phase) {
+    const std::size_t n = w.center.size();
     double sum = 0;
-    for (int i = 0; i < WaveSources::kCount; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         double len = length(p - w.center[i]);
         if (len == 0) len = 1;
         sum += cycloidal(len * frequency * w.frequency[i] + phase) / w.frequency[i];
     }
-    return 0.2 * (2.5 + sum / WaveSources::kCount);
+    return 0.2 * (2.5 + sum / static_cast<double>(n));
 }
 
 double granite(const Vec3& p, NoiseGenerator gen) {
@@ -443,9 +435,9 @@ double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
         case PatternKind::Wrinkles:
             return wrinkles(p, noiseGenerator);
         case PatternKind::Ripples:
-            return ripples(p, frequency, phase);
+            return ripplesValue(p, waveSources(), frequency, phase);
         case PatternKind::Waves:
-            return waves(p, frequency, phase);
+            return wavesValue(p, waveSources(), frequency, phase);
         case PatternKind::Image:
             return image ? image->valueAt(p) : 0.0;
         case PatternKind::Crackle:

@@ -93,10 +93,14 @@ enum class PatternKind {
     Pavement,
 };
 
-// The sources of ripples and waves (shared with their normals).
-inline constexpr int kWaveSourceCount = 10;
-Vec3 waveSourceCenter(int i);
-double waveSourceFrequency(int i);
+// The sources of ripples and waves (shared with their normals):
+// global_settings' number_of_waves of them, povray's default 10.
+struct WaveSources {
+    std::vector<Vec3> center;
+    std::vector<double> frequency;
+};
+inline constexpr int kDefaultWaveCount = 10;
+std::shared_ptr<const WaveSources> makeWaveSources(int count);
 
 // quilted's offset from the unit cube's centre, scaled by the quilt curve
 // of its length (the pattern averages its coordinates; the normal adds it).
@@ -122,6 +126,10 @@ struct Pattern {
     // noise_generator written in the pattern; otherwise the parser gives it
     // global_settings' noise_generator.
     bool noiseGeneratorGiven = false;
+    // ripples and waves: the sources for the number_of_waves in force
+    // (null: the default 10).
+    std::shared_ptr<const WaveSources> waves;
+    const WaveSources& waveSources() const;
     double agateTurb = 1.0;
     std::shared_ptr<const ImageMap> image;             // image_pattern
     std::shared_ptr<const CompiledFunction> function;  // function { ... }

@@ -558,6 +558,10 @@ std::shared_ptr<const CompiledFunction> Reader::boundToNoise(
     return withNoiseGenerator(function, noiseGenerator_);
 }
 
+void Reader::setNumberOfWaves(int count) {
+    *waveSources_ = *scene::makeWaveSources(count);
+}
+
 void Reader::setNoiseGenerator(scene::NoiseGenerator g, const Token& at) {
     if (g != noiseGenerator_ && noiseGeneratorUsed_)
         unsupported(at, "global noise_generator after a pattern or f_noise3d");

@@ -34,9 +34,21 @@ void parseGlobalSettings(BuildContext& c) {
             case Keyword::kw_irid_wavelength:
                 g.iridWavelength = r.parseColor().rgb;
                 break;
-            case Keyword::kw_number_of_waves:
-                r.parseFloat();
+            case Keyword::kw_number_of_waves: {
+                // Whole sources (2.7 is 2); below 1 is 1, with povray's
+                // warning (measured).
+                const double n = r.parseFloat();
+                if (!(n < 1e6)) r.fail(t, "number_of_waves must be below 1000000");
+                int count = n < 1 ? 0 : static_cast<int>(n);
+                if (count < 1) {
+                    r.warn(t,
+                           "Illegal Value: number_of_waves must be greater than 0. Changed "
+                           "to 1.");
+                    count = 1;
+                }
+                r.setNumberOfWaves(count);
                 break;
+            }
             case Keyword::kw_noise_generator:
                 r.setNoiseGenerator(parseNoiseGenerator(c, t), t);
                 break;

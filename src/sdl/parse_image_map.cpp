@@ -7,7 +7,8 @@
 //     the one a PNG declares, else sRGB for PNG, TGA, GIF, JPEG, IFF and
 //     sys files and linear for PPM, PGM, TIFF, EXR and HDR - and re-encoded
 //     in the scene's working gamma; before 3.7 a file of unknown gamma
-//     (no `gamma`, no gAMA) gives its values as they are;
+//     (no `gamma`; no gAMA or sRGB chunk, or a scene without
+//     assumed_gamma) gives its values as they are;
 //   - alpha becomes transmit (1 - alpha) on top of `transmit all`; the
 //     colour is taken as not premultiplied unless `premultiplied` says so;
 //   - `filter N` / `transmit N` set palette entries of palette images (GIF)
@@ -291,14 +292,22 @@ static std::shared_ptr<const scene::ImageTexels> imageTexels(BuildContext& c,
     // File values -> linear light -> the working gamma in force now.
     scene::ImageTexels::ColorDecoding d;
     // Before 3.7 a file whose gamma neither the scene (`gamma`) nor the
-    // file (PNG gAMA) gives holds working-space values, whatever the
-    // assumed_gamma (measured: #version 3.6, assumed_gamma 2.2 shows the
-    // file value v as v^2.2 of linear light). A function image's values are
-    // working-space values whatever the assumed_gamma (measured).
-    const bool fileGammaKnown = s.gamma || src.declaredGamma > 0;
-    d.asStored = (!fileGammaKnown && c.reader.version() < 3.7 - 1e-9) || fromFunction;
+    // file (PNG gAMA or sRGB chunk) gives holds working-space values,
+    // whatever the assumed_gamma (measured: #version 3.6, assumed_gamma 2.2
+    // shows the file value v as v^2.2 of linear light); what the file
+    // says counts only in a scene that sets assumed_gamma (measured: a
+    // 3.6 scene without it shows gAMA 1/2.2 and 1/1.8 files as stored). A
+    // PNG sRGB chunk is the sRGB curve, with or without gAMA (measured). A
+    // function image's values are working-space values whatever the
+    // assumed_gamma (measured).
+    const bool pre37 = c.reader.version() < 3.7 - 1e-9;
+    const bool fileSays = src.declaresSrgb || src.declaredGamma > 0;
+    const bool fileGammaKnown =
+        s.gamma || (fileSays && (!pre37 || c.scene.globals.assumedGammaSet));
+    d.asStored = (!fileGammaKnown && pre37) || fromFunction;
     d.workingGamma = c.scene.globals.assumedGammaSet ? c.scene.globals.assumedGamma : 1.0;
     d.fileGamma = s.gamma                 ? *s.gamma
+                  : src.declaresSrgb      ? 0.0
                   : src.declaredGamma > 0 ? src.declaredGamma
                                           : defaultFileGamma(s.type, s.name);
     d.premultiplied = s.premultiplied;

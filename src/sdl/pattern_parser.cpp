@@ -292,6 +292,8 @@ void parsePatternKeyword(BuildContext& c, scene::Pattern& pattern, bool inNormal
     pattern.kind = kind;
     if (!pattern.noiseGeneratorGiven) pattern.noiseGenerator = r.noiseGenerator();
     if (readsNoiseGenerator(kind)) r.noteNoiseGeneratorUse();
+    if (kind == scene::PatternKind::Ripples || kind == scene::PatternKind::Waves)
+        pattern.waves = r.waveSources();
     if (kind == scene::PatternKind::Gradient) {
         const Vec3 g = r.parseVec3();
         const double len = length(g);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "scene/noise.h"
+#include "scene/patterns.h"
 #include "sdl/cursor.h"
 #include "sdl/diagnostics.h"
 #include "sdl/frame_context.h"
@@ -167,6 +168,12 @@ class Reader {
     scene::NoiseGenerator noiseGenerator() const { return noiseGenerator_; }
     void noteNoiseGeneratorUse() { noiseGeneratorUsed_ = true; }
     void setNoiseGenerator(scene::NoiseGenerator g, const Token& at);
+    // The sources of ripples and waves. povray applies global_settings'
+    // number_of_waves to every such pattern whatever the order (measured),
+    // so every pattern read shares this one set, which setNumberOfWaves
+    // refills while the scene parses; frozen with the scene.
+    std::shared_ptr<const scene::WaveSources> waveSources() const { return waveSources_; }
+    void setNumberOfWaves(int count);
     // `function` as the scene uses it: every f_noise3d it calls bound to
     // the noise_generator in force now, which is then fixed.
     std::shared_ptr<const CompiledFunction> boundToNoise(
@@ -263,6 +270,8 @@ class Reader {
     std::optional<double> assumedGamma_;  // null until global_settings gives it
     scene::NoiseGenerator noiseGenerator_ = scene::NoiseGenerator::RangeCorrected;
     bool noiseGeneratorUsed_ = false;
+    std::shared_ptr<scene::WaveSources> waveSources_ =
+        std::make_shared<scene::WaveSources>(*scene::makeWaveSources(scene::kDefaultWaveCount));
     bool pathnameMode_ = false;  // string literals keep their backslashes
     int includeDepth_ = 0;
     int nesting_ = 0;                      // NestingGuard levels held

@@ -9,9 +9,11 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,7 @@
 #include "image/codecs.h"
 #include "image/image_io.h"
 #include "image/png_reader.h"
+#include "image/png_writer.h"
 
 namespace frameray {
 namespace {
@@ -257,6 +260,63 @@ TEST_F(ImageDecoders, PngOfEveryColourTypeAndDepth) {
     s.srgb = true;
     writePng(dir_ / "srgb.png", s);
     expectSameAsOiio(dir_ / "srgb.png");
+}
+
+// The gAMA and sRGB chunks of a PNG file's bytes (none when absent).
+struct GammaChunks {
+    std::optional<std::uint32_t> gama;
+    std::optional<int> srgbIntent;
+};
+
+GammaChunks gammaChunksOf(const std::vector<unsigned char>& png) {
+    GammaChunks out;
+    auto be32 = [&](size_t at) {
+        return static_cast<std::uint32_t>(png[at]) << 24 |
+               static_cast<std::uint32_t>(png[at + 1]) << 16 |
+               static_cast<std::uint32_t>(png[at + 2]) << 8 | png[at + 3];
+    };
+    for (size_t at = 8; at + 8 <= png.size();) {
+        const std::uint32_t length = be32(at);
+        const std::string type(reinterpret_cast<const char*>(&png[at + 4]), 4);
+        if (type == "gAMA") out.gama = be32(at + 8);
+        if (type == "sRGB") out.srgbIntent = png[at + 8];
+        at += 12 + length;
+    }
+    return out;
+}
+
+// Frames state their File_Gamma as povray 3.7 writes them (measured with
+// +FN: sRGB gives gAMA 45455 and an sRGB chunk, intent 0; File_Gamma=2.2
+// gAMA 45455 only, 1.8 55556, 1.0 100000), and the reader takes the sRGB
+// chunk back as the sRGB curve, a lone gAMA as its gamma.
+TEST_F(ImageDecoders, PngStatesTheFileGammaAsPovrayDoes) {
+    const std::vector<std::uint8_t> rgb(4 * 2 * 3, 100);
+    struct Case {
+        std::optional<double> gamma;
+        std::optional<std::uint32_t> gama;
+        std::optional<int> srgb;
+        double declared;
+    };
+    const Case cases[] = {{std::nullopt, std::nullopt, std::nullopt, 0.0},
+                          {0.0, 45455u, 0, 0.0},
+                          {2.2, 45455u, std::nullopt, 2.2},
+                          {1.8, 55556u, std::nullopt, 1.8},
+                          {1.0, 100000u, std::nullopt, 1.0}};
+    int n = 0;
+    for (const Case& c : cases) {
+        SCOPED_TRACE(n);
+        const std::vector<unsigned char> png = image::encodePng(4, 2, 3, 8, rgb.data(), c.gamma);
+        const GammaChunks chunks = gammaChunksOf(png);
+        EXPECT_EQ(chunks.gama, c.gama);
+        EXPECT_EQ(chunks.srgbIntent, c.srgb);
+        const fs::path path = dir_ / fmt::format("g{}.png", n++);
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(png.data()),
+                   static_cast<std::streamsize>(png.size()));
+        const image::SourceImage back = image::readPng(path);
+        EXPECT_EQ(back.declaresSrgb, c.srgb.has_value());
+        EXPECT_NEAR(back.declaredGamma, c.declared, 1e-6);
+    }
 }
 
 TEST_F(ImageDecoders, PalettePngKeepsItsIndices) {

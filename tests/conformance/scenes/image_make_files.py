@@ -11,13 +11,15 @@ def chunk(kind, data):
     return c + struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff)
 
 
-def write_png(path, w, h, values, channels):
-    """values: flat 8-bit channel values, rows from the top."""
+def write_png(path, w, h, values, channels, extra=()):
+    """values: flat 8-bit channel values, rows from the top; extra: chunks
+    between IHDR and IDAT."""
     ctype = {1: 0, 2: 4, 3: 2, 4: 6}[channels]
     raw = b''.join(b'\0' + bytes(values[y * w * channels:(y + 1) * w * channels])
                    for y in range(h))
     data = b'\x89PNG\r\n\x1a\n'
     data += chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, ctype, 0, 0, 0))
+    data += b''.join(extra)
     data += chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b'')
     open(path, 'wb').write(data)
 
@@ -157,3 +159,16 @@ for y in range(16):
         else:
             mat_idx.append(int(math.hypot(x - 5.5, y - 9.5) / 2.5) % 6)
 write_png_palette('material_palette.png', 16, 16, mat_idx, mat_palette)
+
+# Dark ramps (red, green on even rows, blue at half) with the gamma chunks
+# povray writes or could meet: image_gamma_chunks_v36*.pov.
+ramp_levels = [0, 2, 4, 6, 8, 11, 14, 18, 23, 30, 40, 55, 80, 120, 180, 250]
+ramp = [v for y in range(4) for x in range(16)
+        for v in (ramp_levels[x], ramp_levels[x] if y % 2 == 0 else 0, ramp_levels[x] // 2)]
+gama = lambda v: chunk(b'gAMA', struct.pack('>I', v))
+srgb = chunk(b'sRGB', b'\0')
+write_png('image_ramp_plain.png', 16, 4, ramp, 3)
+write_png('image_ramp_srgb.png', 16, 4, ramp, 3, [gama(45455), srgb])
+write_png('image_ramp_srgbonly.png', 16, 4, ramp, 3, [srgb])
+write_png('image_ramp_g22.png', 16, 4, ramp, 3, [gama(45455)])
+write_png('image_ramp_g18.png', 16, 4, ramp, 3, [gama(55556)])
