@@ -24,6 +24,7 @@ struct Sample {
         return *this;
     }
     Sample operator*(double s) const { return {light * s, extinction * s}; }
+    Sample operator+(const Sample& o) const { return {light + o.light, extinction + o.extinction}; }
 };
 
 // Where the ray [0, depth] crosses the volume a spot or cylinder light
@@ -113,7 +114,10 @@ class Sampler {
     }
     Sample at(double t) const;
     RGB inScattered(const Vec3& p, const RGB* scattering) const;
-    Sample segment(double a, double b, const Sample& va, const Sample& vb, int level) const;
+    // `scale`: the interval's length, which the light differences are
+    // multiplied by before they are compared with aa_threshold.
+    Sample segment(double a, double b, const Sample& va, const Sample& vb, int level,
+                   double scale) const;
     double jittered(double t, double spacing, uint64_t index) const;
     struct Piece {
         double from, to;
@@ -183,16 +187,26 @@ Sample Sampler::at(double t) const {
     return s;
 }
 
-// The mean over [a, b] given its end points, split while the light of the
-// middle point differs from an end's by aa_threshold (below aa_level).
-Sample Sampler::segment(double a, double b, const Sample& va, const Sample& vb, int level) const {
+// The mean over [a, b] given its end points. Below aa_level a half whose
+// end points' light differs by aa_threshold or more, once multiplied by
+// the interval's length (measured: halving the interval doubles the
+// density at which povray starts to split), is split in turn; a half that
+// does not differ counts as the mean of its two ends with the outer end
+// weighed twice (measured with povray 3.7 on emitting slabs whose density
+// grows as a power of the depth: a one-sided split gives exactly that).
+Sample Sampler::segment(double a, double b, const Sample& va, const Sample& vb, int level,
+                        double scale) const {
     const double m = 0.5 * (a + b);
     const Sample vm = at(m);
-    if (level < settings_.aaLevel &&
-        (summedDifference(va.light, vm.light) >= settings_.aaThreshold ||
-         summedDifference(vm.light, vb.light) >= settings_.aaThreshold)) {
-        Sample sum = segment(a, m, va, vm, level + 1);
-        sum += segment(m, b, vm, vb, level + 1);
+    const bool left =
+        level < settings_.aaLevel &&
+        summedDifference(va.light, vm.light) * scale >= settings_.aaThreshold;
+    const bool right =
+        level < settings_.aaLevel &&
+        summedDifference(vm.light, vb.light) * scale >= settings_.aaThreshold;
+    if (left || right) {
+        Sample sum = left ? segment(a, m, va, vm, level + 1, scale) : (va * 2.0 + vm) * (1.0 / 3.0);
+        sum += right ? segment(m, b, vm, vb, level + 1, scale) : (vm + vb * 2.0) * (1.0 / 3.0);
         return sum * 0.5;
     }
     Sample sum = va;
@@ -281,7 +295,7 @@ MediaResult Sampler::run(double depth) const {
             for (int k = 0; k < n; ++k) {
                 const double b = jittered(start + (2.0 * k + 2.0) * spacing, spacing, index++);
                 const Sample vb = at(b);
-                const Sample mean = segment(a, b, va, vb, 1);
+                const Sample mean = segment(a, b, va, vb, 1, intervalLength);
                 result.light += result.transmittance * mean.light * weight;
                 const RGB od = mean.extinction * weight;
                 result.transmittance *= RGB(std::exp(-od.r), std::exp(-od.g), std::exp(-od.b));

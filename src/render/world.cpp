@@ -241,7 +241,10 @@ World::World(const scene::Scene& scene)
     if (!device_) throw std::runtime_error("Embree: cannot create a device");
     bvh_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(bvh_, RTC_BUILD_QUALITY_HIGH);
-    for (const auto& obj : scene.objects) add(obj.get());
+    for (const auto& obj : scene.objects) {
+        add(obj.get());
+        noteInverted(*obj, false);
+    }
     if (!bounded_.objects.empty()) {
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(bounded_.objects.size()));
@@ -280,6 +283,21 @@ void World::add(const scene::Object* obj) {
     bounded_.objects.push_back(obj);
     bounded_.bounds.push_back(bounds);
     bounded_.kinds.push_back(kindOf(*obj));
+}
+
+void World::noteInverted(const scene::Object& obj, bool flipped) {
+    flipped = flipped != obj.inverse;
+    if (!obj.isCsg()) {
+        if (flipped) inverted_.insert(&obj);
+        return;
+    }
+    for (size_t i = 0; i < obj.children.size(); ++i)
+        noteInverted(*obj.children[i], flipped != (obj.op == scene::CsgOp::Difference && i > 0));
+}
+
+Vec3 World::outwardNormal(const scene::Object& primitive, const Vec3& p) const {
+    const Vec3 n = primitive.normalAt(p);
+    return inverted_.count(&primitive) ? -n : n;
 }
 
 World::~World() {
@@ -435,7 +453,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
             inside[i] = inside[--insideCount];
             return;
         }
-        if (dot(obj.normalAt(p), ray.direction) < 0 && insideCount < inside.size())
+        if (dot(outwardNormal(obj, p), ray.direction) < 0 && insideCount < inside.size())
             inside[insideCount++] = {in, t};
     };
     // Hollow objects with media: the light is dimmed by the media between
@@ -459,7 +477,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
             inMedia[i] = inMedia[--inMediaCount];
             return;
         }
-        if (dot(obj.normalAt(p), ray.direction) < 0) {
+        if (dot(outwardNormal(obj, p), ray.direction) < 0) {
             if (inMediaCount < inMedia.size()) inMedia[inMediaCount++] = {in, t};
         } else {
             mediaBetween(*in, tMin, t);

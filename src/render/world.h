@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -90,6 +91,15 @@ class World {
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);
+    // Records the primitives under `obj` whose surface bounds their object
+    // from the other side (a difference's subtracted operands, `inverse`),
+    // `flipped` telling whether `obj` itself is turned so.
+    void noteInverted(const scene::Object& obj, bool flipped);
+    // The normal of a primitive's surface pointing out of the top-level
+    // object it belongs to (its own normal turned for the primitives
+    // noteInverted recorded): a shadow ray entering an interior has it
+    // facing back.
+    Vec3 outwardNormal(const scene::Object& primitive, const Vec3& p) const;
 
     const scene::Scene& scene_;
     RTCDevice device_ = nullptr;
@@ -98,6 +108,7 @@ class World {
     std::vector<const scene::Object*> unbounded_;
     std::vector<std::uint16_t> unboundedKinds_;
     bool hasBounded_ = false;
+    std::unordered_set<const scene::Object*> inverted_;  // see noteInverted
     std::unique_ptr<const Photons> photons_;
     // A top-level object that blocked a shadow ray, with its statistics kind.
     struct Blocker {
