@@ -19,7 +19,9 @@
 //   length, dimmed by the extinction of the sub-intervals before it only.
 //
 // Several media along the same stretch are sampled together with the first
-// one's settings. Jitter is hashed from the ray (povray's is random).
+// one's settings; their scattering is summed and scattered with the mean
+// of their phase functions (a media that does not scatter counts as
+// isotropic there), as povray 3.7 does. Jitter is hashed from the ray (povray's is random).
 #pragma once
 
 #include <array>
