@@ -7,6 +7,7 @@
 #include <embree3/rtcore.h>
 #include <tbb/enumerable_thread_specific.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -85,9 +86,20 @@ class World {
     };
 
   private:
-    // shadowFilter without the scene's media.
+    // Stretches of a shadow ray inside objects that are not hollow, where
+    // fog does not dim the light (at most kCapacity of them).
+    struct SolidSpans {
+        static constexpr size_t kCapacity = 8;
+        std::array<std::pair<double, double>, kCapacity> spans{};
+        size_t count = 0;
+        void add(double from, double to) {
+            if (count < kCapacity && to > from) spans[count++] = {from, to};
+        }
+    };
+    // shadowFilter without the scene's media and fogs; `solid`, when given,
+    // receives the stretches inside objects that are not hollow.
     RGB surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                      const scene::Light* light) const;
+                      const scene::Light* light, SolidSpans* solid = nullptr) const;
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);
