@@ -184,11 +184,17 @@ Color AtmosphereView::throughFogs(const Vec3& origin, const Vec3& d, double dept
 }
 
 double fogLightTransmittance(const scene::Scene& scene, const Vec3& origin,
-                             const Vec3& unitDirection, double depth) {
+                             const Vec3& unitDirection, double depth,
+                             std::span<const std::pair<Vec3, double>> without) {
     double keep = 1.0;
     for (const scene::Fog& fog : scene.atmosphere.fogs) {
         if (!(std::fabs(fog.distance) > kEpsilon)) continue;
-        keep *= std::max(fogTransmittance(fog, origin, unitDirection, depth), fog.color.transmit);
+        double t = fogTransmittance(fog, origin, unitDirection, depth);
+        for (const auto& [from, length] : without) {
+            const double inside = fogTransmittance(fog, from, unitDirection, length);
+            if (inside > 0) t /= inside;
+        }
+        keep *= std::max(std::min(t, 1.0), fog.color.transmit);
     }
     return keep;
 }

@@ -15,6 +15,9 @@
 // used.
 #pragma once
 
+#include <span>
+#include <utility>
+
 #include "scene/ray.h"
 #include "scene/scene.h"
 #include "util/color.h"
@@ -57,7 +60,10 @@ class AtmosphereView {
 // fogs' transmittance alone, their colour adds nothing (measured: a white
 // plane lit through fog { distance 10 } from 10 units away gets exp(-1)
 // of the light, whatever the fog's colour).
+// `without`: stretches (start point, length) of that path where there is
+// no fog (inside objects that are not hollow).
 double fogLightTransmittance(const scene::Scene& scene, const Vec3& origin,
-                             const Vec3& unitDirection, double depth);
+                             const Vec3& unitDirection, double depth,
+                             std::span<const std::pair<Vec3, double>> without = {});
 
 }  // namespace frameray::render

@@ -10,15 +10,18 @@
 //   sub-intervals' points but uses only the first N, so the last stretch of
 //   every interval is never sampled. Each sub-interval stands for L / N.
 // - A sub-interval's value is the mean of its three points unless, below
-//   aa_level, the light (emission plus in-scattered light) of a point and
-//   the middle one differ by aa_threshold or more (summed over R, G, B):
-//   then it is the mean of its two halves, each sampled the same way.
-//   Extinction never splits a sub-interval.
+//   aa_level, the light (emission plus in-scattered light, summed over R,
+//   G, B) of an end and the middle one, times the interval's length,
+//   differ by aa_threshold or more: then it is the mean of its two halves,
+//   a half that differs sampled the same way, one that does not valued as
+//   (2 * outer end + middle) / 3. Extinction never splits a sub-interval.
 // - Sub-intervals are added front to back: each adds its light times its
 //   length, dimmed by the extinction of the sub-intervals before it only.
 //
 // Several media along the same stretch are sampled together with the first
-// one's settings. Jitter is hashed from the ray (povray's is random).
+// one's settings; their scattering is summed and scattered with the mean
+// of their phase functions (a media that does not scatter counts as
+// isotropic there), as povray 3.7 does. Jitter is hashed from the ray (povray's is random).
 #pragma once
 
 #include <array>

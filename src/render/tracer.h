@@ -219,6 +219,7 @@ class Tracer {
     // max(colour) - transmit, not 1 - filter - transmit (localLight).
     bool legacyFilterOpacity_;
     InteriorStack cameraInside_;  // regions containing the camera
+    void addCameraRegions(const scene::Object& obj);
 };
 
 }  // namespace frameray::render

@@ -7,9 +7,11 @@
 #include <embree3/rtcore.h>
 #include <tbb/enumerable_thread_specific.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -84,12 +86,32 @@ class World {
     };
 
   private:
-    // shadowFilter without the scene's media.
+    // Stretches of a shadow ray inside objects that are not hollow, where
+    // fog does not dim the light (at most kCapacity of them).
+    struct SolidSpans {
+        static constexpr size_t kCapacity = 8;
+        std::array<std::pair<double, double>, kCapacity> spans{};
+        size_t count = 0;
+        void add(double from, double to) {
+            if (count < kCapacity && to > from) spans[count++] = {from, to};
+        }
+    };
+    // shadowFilter without the scene's media and fogs; `solid`, when given,
+    // receives the stretches inside objects that are not hollow.
     RGB surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                      const scene::Light* light) const;
+                      const scene::Light* light, SolidSpans* solid = nullptr) const;
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);
+    // Records the primitives under `obj` whose surface bounds their object
+    // from the other side (a difference's subtracted operands, `inverse`),
+    // `flipped` telling whether `obj` itself is turned so.
+    void noteInverted(const scene::Object& obj, bool flipped);
+    // The normal of a primitive's surface pointing out of the top-level
+    // object it belongs to (its own normal turned for the primitives
+    // noteInverted recorded): a shadow ray entering an interior has it
+    // facing back.
+    Vec3 outwardNormal(const scene::Object& primitive, const Vec3& p) const;
 
     const scene::Scene& scene_;
     RTCDevice device_ = nullptr;
@@ -98,6 +120,7 @@ class World {
     std::vector<const scene::Object*> unbounded_;
     std::vector<std::uint16_t> unboundedKinds_;
     bool hasBounded_ = false;
+    std::unordered_set<const scene::Object*> inverted_;  // see noteInverted
     std::unique_ptr<const Photons> photons_;
     // A top-level object that blocked a shadow ray, with its statistics kind.
     struct Blocker {
