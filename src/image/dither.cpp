@@ -48,7 +48,7 @@ double clamped(float v) {
 void floydSteinberg(const EncodedImage& image, double levels, int colourChannels,
                     std::vector<double>& out) {
     const int w = image.width, ch = image.channels;
-    const GammaEncoding& gamma = image.gamma;
+    const GammaEncoding& gamma = image.encoding;
     // Carried error per pixel and channel, for the row being written and
     // the row below; one spare pixel on the left (index 0) and on the right.
     const auto at = [ch](int px, int c) { return static_cast<size_t>(px + 1) * ch + c; };

@@ -17,7 +17,7 @@ EncodedImage toGrey(const EncodedImage& colour) {
     out.width = colour.width;
     out.height = colour.height;
     out.bitDepth = colour.bitDepth;
-    out.gamma = colour.gamma;
+    out.encoding = colour.encoding;
     const int in = colour.channels;
     out.channels = in == 4 ? 2 : 1;
     const size_t pixels = static_cast<size_t>(colour.width) * colour.height;
@@ -43,7 +43,7 @@ EncodedImage encodeFrame(int width, int height, const std::vector<float>& rgb,
     const bool alpha = !alphaValues.empty();
     out.channels = alpha ? 4 : 3;
     out.bitDepth = bitDepth;
-    out.gamma = gamma;
+    out.encoding = gamma;
     out.values.resize(static_cast<size_t>(width) * height * out.channels);
     // Rows in parallel: three pow() per pixel are tens of milliseconds a
     // frame, which a still image would otherwise spend on one core.

@@ -36,7 +36,7 @@ struct EncodedImage {
     Dither dither = Dither::None;
     // How `values` were encoded from working space: Floyd-Steinberg
     // dithering carries its error in working space, as povray does.
-    GammaEncoding gamma = GammaEncoding::identity();
+    GammaEncoding encoding = GammaEncoding::identity();
     // EXR only: more channels after the colour (Output_AOVs), stored as
     // 32-bit floats under these names, extraNames.size() per pixel in
     // `extraValues`; and the compression (OpenEXR's codec name, empty: the

@@ -68,7 +68,7 @@ TEST(Dither, FloydSteinbergMatchesPovrayOnTheseColours) {
 // 1.0 and 2.2): the levels minus `base`, one row per string.
 std::string rows(double v, const GammaEncoding& gamma, int base) {
     EncodedImage img = flat(16, 16, gamma.encode(v), Dither::FloydSteinberg);
-    img.gamma = gamma;
+    img.encoding = gamma;
     const std::string p = pattern(img, base);
     std::string out;
     for (int y = 0; y < 16; ++y) out += p.substr(y * 16, 16) + "\n";
