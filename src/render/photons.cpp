@@ -110,16 +110,16 @@ Response respondLayers(const scene::Texture& top, const Vec3& texP, const Vec3& 
         const scene::SurfaceInfo info{n, dir, uv};
         const Color surface = tex.pigment->at(tex.transform.inversePoint(layerP), &info);
         RGB reflectivity(0.0);
-        if (tex.finish.reflection.any()) {
+        if (tex.finish->reflection.any()) {
             const double cosView = std::clamp(-dot(dir, n), 0.0, 1.0);
-            reflectivity = reflectance(tex.finish.reflection, cosView, fresnelRatio, surface.rgb);
+            reflectivity = reflectance(tex.finish->reflection, cosView, fresnelRatio, surface.rgb);
             r.reflect += reflectivity;
             if (i == 0) r.reflectNormal = n;
         }
         r.refractNormal = n;
         if (surface.filter + surface.transmit <= 0) return r;
         through = through * (surface.rgb * surface.filter + RGB(surface.transmit));
-        if (tex.finish.conserveEnergy) through = through * (RGB(1.0) - reflectivity);
+        if (tex.finish->conserveEnergy) through = through * (RGB(1.0) - reflectivity);
     }
     r.through = through;
     return r;

@@ -267,7 +267,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
                        const RGB& fade, RayCounts& counts, const RGB* gathered,
                        bool radiosityRay) const {
-    const scene::Finish& fin = tex.finish;
+    const scene::Finish& fin = *tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
     // passes unchanged. Ambient, emission and diffuse light are scaled by
@@ -490,7 +490,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
     const size_t layerCount = 1 + top.layersBelow.size();
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
-        const scene::Finish& fin = tex.finish;
+        const scene::Finish& fin = *tex.finish;
         // A uv-mapped layer is evaluated at the surface's uv.
         const Vec3& layerP = tex.uvMapping ? at.uv : at.texP;
         const scene::SurfaceInfo unperturbed{at.geometric, at.viewDir, at.uv};

@@ -68,58 +68,76 @@ ColorMap defaultColorMap(const Pattern& pattern) {
 
 }  // namespace
 
+std::shared_ptr<const Pigment> defaultPigment() {
+    static const Pigment black;
+    // Aliasing an empty owner: no allocation, no reference count.
+    return {std::shared_ptr<const Pigment>(), &black};
+}
+
+std::shared_ptr<const Finish> defaultFinish() {
+    static const Finish finish;
+    return {std::shared_ptr<const Finish>(), &finish};
+}
+
 void Pigment::setPattern(const Pattern& p) {
-    pattern_ = p;
-    average_ = false;
+    Patterned& m = more_.edit();
+    m.pattern = p;
+    m.average = false;
     // A pigment_map given before the pattern keyword still applies.
-    kind_ = p.isList()             ? Kind::List
-            : !pigmentMap_.empty() ? Kind::PigmentMapped
-                                   : Kind::ColorMapped;
-    if (kind_ == Kind::ColorMapped && (colorMap_.empty() || defaultColorMap_)) {
-        colorMap_ = defaultColorMap(p);
-        defaultColorMap_ = true;
+    kind_ = p.isList()              ? Kind::List
+            : !m.pigmentMap.empty() ? Kind::PigmentMapped
+                                    : Kind::ColorMapped;
+    if (kind_ == Kind::ColorMapped && (m.colorMap.empty() || m.defaultColorMap)) {
+        m.colorMap = defaultColorMap(p);
+        m.defaultColorMap = true;
     }
 }
 
 void Pigment::settleDefaultColorMap() {
-    if (defaultColorMap_) colorMap_ = defaultColorMap(pattern_);
+    if (!more_.holds() || !more_.get().defaultColorMap) return;
+    Patterned& m = more_.edit();
+    m.colorMap = defaultColorMap(m.pattern);
 }
 
 void Pigment::setColorMap(ColorMap map) {
-    colorMap_ = std::move(map);
-    defaultColorMap_ = false;
+    Patterned& m = more_.edit();
+    m.colorMap = std::move(map);
+    m.defaultColorMap = false;
     if (kind_ == Kind::PigmentMapped) kind_ = Kind::ColorMapped;
 }
 
 void Pigment::setPigmentMap(std::vector<MapEntry> map) {
-    pigmentMap_ = std::move(map);
+    more_.edit().pigmentMap = std::move(map);
     kind_ = Kind::PigmentMapped;
 }
 
 Color Pigment::at(const Vec3& given, const SurfaceInfo* surface) const {
     if (kind_ == Kind::Solid) return color_;
+    const Patterned& m = more_.get();
+    const Pattern& pattern = m.pattern;
+    const auto& pigmentMap = m.pigmentMap;
     const Vec3 point = uvMapping_ && surface ? surface->uv : given;
     const SurfaceInfo* sub = surface;  // world-space: the same for sub-pigments
     // Sub-pigments are evaluated in this pigment's space, at the point its
     // warps displaced (povray: the entries of a turbulent map are
     // turbulent too; measured).
-    Vec3 p = mapEntryPoint(pattern_, point);
-    if (hasTransform_) p = transform_.inversePoint(p);
+    Vec3 p = mapEntryPoint(pattern, point);
+    if (m.hasTransform) p = m.transform.inversePoint(p);
     switch (kind_) {
         case Kind::List: {
-            const auto i = static_cast<std::size_t>(pattern_.index(point));
-            return i < list_.size() && list_[i] ? list_[i]->at(p, sub) : Color();
+            const auto i = static_cast<std::size_t>(pattern.index(point));
+            return i < m.list.size() && m.list[i] ? m.list[i]->at(p, sub) : Color();
         }
         case Kind::ColorMapped:
-            return colorMap_.at(pattern_.value(point, surface));
+            return m.colorMap.at(pattern.value(point, surface));
         case Kind::PigmentMapped: {
-            if (pigmentMap_.empty()) return Color();
-            if (average_) {
+            if (pigmentMap.empty()) return Color();
+            if (m.average) {
                 // Every entry weighted by its value (povray's `average`).
                 double total = 0;
                 RGB rgb(0.0);
                 double filter = 0, transmit = 0;
-                for (const MapEntry& e : pigmentMap_) {
+                for (const MapEntry& e : pigmentMap) {
                     if (e.value == 0) continue;
                     const Color c = e.pigment->at(p, sub);
                     rgb += c.rgb * e.value;
@@ -130,13 +148,13 @@ Color Pigment::at(const Vec3& given, const SurfaceInfo* surface) const {
                 if (total == 0) return Color();
                 return Color(rgb * (1.0 / total), filter / total, transmit / total);
             }
-            const double v = pattern_.value(point, surface);
-            if (v <= pigmentMap_.front().value) return pigmentMap_.front().pigment->at(p, sub);
+            const double v = pattern.value(point, surface);
+            if (v <= pigmentMap.front().value) return pigmentMap.front().pigment->at(p, sub);
             std::size_t hi = 1;
-            while (hi < pigmentMap_.size() && pigmentMap_[hi].value <= v) ++hi;
-            if (hi == pigmentMap_.size()) return pigmentMap_.back().pigment->at(p, sub);
-            const MapEntry& a = pigmentMap_[hi - 1];
-            const MapEntry& b = pigmentMap_[hi];
+            while (hi < pigmentMap.size() && pigmentMap[hi].value <= v) ++hi;
+            if (hi == pigmentMap.size()) return pigmentMap.back().pigment->at(p, sub);
+            const MapEntry& a = pigmentMap[hi - 1];
+            const MapEntry& b = pigmentMap[hi];
             const double span = b.value - a.value;
             if (span <= 0) return b.pigment->at(p, sub);
             const double t = (v - a.value) / span, s = 1.0 - t;
@@ -145,7 +163,7 @@ Color Pigment::at(const Vec3& given, const SurfaceInfo* surface) const {
                          ca.transmit * s + cb.transmit * t);
         }
         case Kind::ImageMapped:
-            return imageMap_->colorAt(pattern_.patternPoint(point));
+            return m.imageMap->colorAt(pattern.patternPoint(point));
         case Kind::Solid:
             break;
     }
@@ -195,9 +213,10 @@ void TextureMap::transformBy(const Transform& t) {
 
 bool Pigment::usesUv() const {
     if (uvMapping_) return true;
-    for (const auto& p : list_)
+    if (!more_.holds()) return false;
+    for (const auto& p : more_.get().list)
         if (p && p->usesUv()) return true;
-    for (const MapEntry& e : pigmentMap_)
+    for (const MapEntry& e : more_.get().pigmentMap)
         if (e.pigment && e.pigment->usesUv()) return true;
     return false;
 }

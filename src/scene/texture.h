@@ -15,13 +15,17 @@
 #include "scene/patterns.h"
 #include "util/color.h"
 #include "util/matrix.h"
+#include "util/shared_transform.h"
+#include "util/value_box.h"
 
 namespace frameray::scene {
 
 // A pigment is a solid colour, a colour-list pattern (checker, hexagon,
 // brick: one sub-pigment per index), a colour-mapped pattern or a
 // pigment-mapped pattern. Evaluation is const, thread-safe and does not
-// allocate.
+// allocate. A plain colour is 56 bytes: the pattern and everything that
+// goes with it live out of line, only once written (issue 23: 10^6
+// spheres each with its own colour).
 class Pigment {
   public:
     enum class Kind { Solid, List, ColorMapped, PigmentMapped, ImageMapped };
@@ -39,6 +43,9 @@ class Pigment {
     Color at(const Vec3& p, const SurfaceInfo* surface = nullptr) const;
     const Color& solidColor() const { return color_; }
     Kind kind() const { return kind_; }
+    // Whether anything beyond the kind, colour and uv_mapping was written
+    // (pattern, maps, transformation, quick_color).
+    bool hasPatternPart() const { return more_.holds(); }
     bool isSolid() const { return kind_ == Kind::Solid; }
 
     // Builders used by the parser.
@@ -47,10 +54,12 @@ class Pigment {
         color_ = c;
     }
     void setPattern(const Pattern& p);  // picks List or ColorMapped from the pattern
-    Pattern& pattern() { return pattern_; }
-    const Pattern& pattern() const { return pattern_; }
-    void setList(std::vector<std::shared_ptr<const Pigment>> list) { list_ = std::move(list); }
-    const std::vector<std::shared_ptr<const Pigment>>& list() const { return list_; }
+    Pattern& pattern() { return more_.edit().pattern; }
+    const Pattern& pattern() const { return more_.get().pattern; }
+    void setList(std::vector<std::shared_ptr<const Pigment>> list) {
+        more_.edit().list = std::move(list);
+    }
+    const std::vector<std::shared_ptr<const Pigment>>& list() const { return more_.get().list; }
     void setColorMap(ColorMap map);
     // A pattern without a colour_map takes povray's default map for it,
     // which may depend on items after the pattern keyword (mandel's
@@ -59,10 +68,10 @@ class Pigment {
     void setPigmentMap(std::vector<MapEntry> map);
     // image_map (image_map.h): the image, seen through the pattern's chain.
     void setImageMap(std::shared_ptr<const ImageMap> map) {
-        imageMap_ = std::move(map);
+        more_.edit().imageMap = std::move(map);
         kind_ = Kind::ImageMapped;
     }
-    const std::shared_ptr<const ImageMap>& imageMap() const { return imageMap_; }
+    const std::shared_ptr<const ImageMap>& imageMap() const { return more_.get().imageMap; }
     // uv_mapping: the pigment is evaluated at the surface's (u, v, 0)
     // (SurfaceInfo::uv) through its own transformations only (povray 3.7,
     // measured: the texture's and object's transformations do not move it).
@@ -71,36 +80,46 @@ class Pigment {
     // Whether this pigment or one it holds is uv-mapped.
     bool usesUv() const;
     // quick_color: what +Q0/+Q1 show instead of the pigment.
-    void setQuickColor(const Color& c) { quickColor_ = c; }
-    const std::optional<Color>& quickColor() const { return quickColor_; }
+    void setQuickColor(const Color& c) { more_.edit().quickColor = c; }
+    const std::optional<Color>& quickColor() const { return more_.get().quickColor; }
     // `average`: the pigment map's entries are averaged, weighted by their
     // values, instead of picked by the pattern.
-    void setAverage() { average_ = true; }
+    void setAverage() { more_.edit().average = true; }
     // Pigment-local transformation ("this, then t"); composes before the
     // texture's transform.
     // The pattern keeps the same transformation in its own chain, where
     // warps may interleave with it.
     void transform(const Transform& t) {
-        transform_ = transform_.then(t);
-        hasTransform_ = true;
-        pattern_.addTransform(t);
+        Patterned& m = more_.edit();
+        m.transform = m.transform.then(t);
+        m.hasTransform = true;
+        m.pattern.addTransform(t);
     }
 
   private:
+    // Everything but the kind, the colour and uv_mapping: absent for a
+    // plain colour (an empty box reads as these defaults).
+    struct Patterned {
+        std::optional<Color> quickColor;
+        Pattern pattern;
+        std::vector<std::shared_ptr<const Pigment>> list;
+        ColorMap colorMap;
+        std::vector<MapEntry> pigmentMap;
+        std::shared_ptr<const ImageMap> imageMap;
+        bool average = false;
+        bool defaultColorMap = false;  // colorMap is the pattern's default
+        bool hasTransform = false;
+        Transform transform;
+    };
     Kind kind_ = Kind::Solid;
-    Color color_;  // POV-Ray's default pigment is black
-    std::optional<Color> quickColor_;
-    Pattern pattern_;
-    std::vector<std::shared_ptr<const Pigment>> list_;
-    ColorMap colorMap_;
-    std::vector<MapEntry> pigmentMap_;
-    std::shared_ptr<const ImageMap> imageMap_;
-    bool average_ = false;
-    bool defaultColorMap_ = false;  // colorMap_ is the pattern's default
     bool uvMapping_ = false;
-    bool hasTransform_ = false;
-    Transform transform_;
+    Color color_;  // POV-Ray's default pigment is black
+    ValueBox<Patterned> more_;
 };
+
+// The pigment a texture starts with (black): one immutable instance that
+// every default texture points at, without an allocation.
+std::shared_ptr<const Pigment> defaultPigment();
 
 // How much of the mirrored ray a surface adds (the 3.7 reflection block;
 // `reflection C` is min = max = C). The reflectance at an angle of
@@ -148,6 +167,10 @@ struct Finish {
     // object's interior when it has none of its own.
     double legacyIor = 0.0;  // 0 = not given
 };
+
+// povray's default finish: one immutable instance that every default
+// texture points at, without an allocation.
+std::shared_ptr<const Finish> defaultFinish();
 
 // Which of a finish block's values were given with `albedo`: povray 3.7
 // then reads them as the fraction of the light the surface sends back in
@@ -204,12 +227,16 @@ struct TextureMap {
     Vec3 entryPoint(const Vec3& p) const { return mapEntryPoint(pattern, p); }
 };
 
+// A texture is ~130 bytes: its pigment, finish and transformations are
+// shared (never null; the defaults are shared instances), so the textures
+// of 10^6 objects that differ only in colour carry little more than the
+// pigment (issue 23).
 struct Texture {
-    std::shared_ptr<const Pigment> pigment = std::make_shared<Pigment>();
-    Finish finish;
+    std::shared_ptr<const Pigment> pigment = defaultPigment();
+    std::shared_ptr<const Finish> finish = defaultFinish();
     // Object-to-texture space; a transform applied after the texture moves
     // it with the object (seed 003 B.3).
-    Transform transform;
+    SharedTransform transform;
 
     // uv_mapping: the texture (pigment, normal and patterned entries) is
     // evaluated at the surface's (u, v, 0) moved by `transform`, which
@@ -220,7 +247,7 @@ struct Texture {
     // leave the uv point alone but still turn the normal's perturbation
     // (measured: a bumps normal on a rotated sphere), also for the
     // textures of a uv-mapped texture's map.
-    Transform uvObjectTransform;
+    SharedTransform uvObjectTransform;
     // Adds t to uvObjectTransform of this texture, its layers and entries.
     void turnNormalsBy(const Transform& t);
     // The same for each entry of the map (copies; no-op without a map).
@@ -262,7 +289,7 @@ struct Texture {
                        const SurfaceInfo* surface = nullptr) const {
         if (!normal) return n;
         if (normal->uvMapping) return normalize(normal->perturb(uv, n, surface));
-        if (uvObjectTransform.isIdentity()) {
+        if (uvObjectTransform.get().isIdentity()) {
             const Vec3 tn = normalize(transform.inverse().normal(n));
             return normalize(
                 transform.normal(normal->perturb(transform.inversePoint(p), tn, surface)));

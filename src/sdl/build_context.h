@@ -27,6 +27,9 @@ struct BuildContext {
     // pigments and finishes start, and what objects without a texture get.
     scene::Texture defaultTexture;
     bool defaultTextureSet = false;
+    // defaultTexture as given to the objects placed without a texture: one
+    // instance they all share (made on first use, dropped by #default).
+    std::shared_ptr<const scene::Texture> placedDefaultTexture;
     // What a normal without a base starts from: #default's normal settings,
     // kept even without a pattern (measured: #default { normal { bump_size
     // 1.5 } } makes normal { gradient x } and normal_map entries 1.5 deep).

@@ -158,7 +158,7 @@ FinishPtr parseFinish(BuildContext& c, const scene::Finish* base) {
     Reader& r = c.reader;
     r.next();  // finish
     r.expect(Sym::LBrace, "'{' after 'finish'");
-    scene::Finish f = base ? *base : c.defaultTexture.finish;
+    scene::Finish f = base ? *base : *c.defaultTexture.finish;
     const Token t = r.peek();
     if (t.isIdentifier()) {
         r.next();

@@ -29,6 +29,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "image/image_io.h"
 #include "scene/image_map.h"
@@ -385,7 +386,9 @@ bool parseImagePigmentItem(BuildContext& c, scene::Pigment& pigment) {
         pigment.setImageMap(parseImageBlock(c, item, nullptr));
         return true;
     }
-    scene::Pattern pattern = pigment.pattern();
+    // Read through the const view: a plain colour's pigment keeps no
+    // pattern part unless an item sets one (issue 23).
+    scene::Pattern pattern = std::as_const(pigment).pattern();
     if (!parseImagePatternItem(c, pattern)) return false;
     pigment.setPattern(pattern);
     return true;

@@ -128,9 +128,9 @@ ObjectValue parseObject(BuildContext& c) {
     }
     if (texture) obj->texture = std::make_shared<const scene::Texture>(*texture);
     // The 2.0 form `finish { ior N }` fills an object that has no interior.
-    if (obj->texture && obj->texture->finish.legacyIor > 0 && !obj->interior) {
+    if (obj->texture && obj->texture->finish->legacyIor > 0 && !obj->interior) {
         scene::Interior interior;
-        interior.ior = obj->texture->finish.legacyIor;
+        interior.ior = obj->texture->finish->legacyIor;
         obj->interior = std::make_shared<const scene::Interior>(interior);
     }
     return result;
@@ -230,7 +230,9 @@ void placeObject(BuildContext& c, const ObjectValue& object) {
     scene::ObjectRef obj = object.object;
     if (c.defaultTextureSet && !obj->texture) {
         auto textured = std::make_shared<scene::Object>(*obj);
-        textured->texture = std::make_shared<const scene::Texture>(c.defaultTexture);
+        if (!c.placedDefaultTexture)
+            c.placedDefaultTexture = std::make_shared<const scene::Texture>(c.defaultTexture);
+        textured->texture = c.placedDefaultTexture;
         obj = std::move(textured);
     }
     c.scene.objects.push_back(placeObjectLights(c, scene::csg::resolveInheritance(obj),
@@ -266,7 +268,7 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         }
         case Keyword::kw_finish: {
             scene::Texture& tx = editTexture();
-            tx.finish = *parseFinish(c, &tx.finish);
+            tx.finish = parseFinish(c, tx.finish.get());
             return true;
         }
         case Keyword::kw_texture: {

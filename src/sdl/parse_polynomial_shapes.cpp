@@ -117,7 +117,7 @@ void parseBlobBody(BuildContext& c, const Token&, ObjectValue& blob) {
             }
             if (at.is(Keyword::kw_finish)) {
                 scene::Texture& tx = editTexture();
-                tx.finish = *parseFinish(c, &tx.finish);
+                tx.finish = parseFinish(c, tx.finish.get());
                 continue;
             }
             if (at.is(Keyword::kw_texture)) {

@@ -137,7 +137,7 @@ static void parseTextureBody(BuildContext& c, scene::Texture& tex, Sym closing) 
         } else if (item.is(Keyword::kw_normal)) {
             tex.normal = parseTextureNormal(c, tex);
         } else if (item.is(Keyword::kw_finish)) {
-            tex.finish = *parseFinish(c, &tex.finish);
+            tex.finish = parseFinish(c, tex.finish.get());
         } else if (parseTexturePatternItem(c, tex, draft)) {
             continue;
         } else if (item.kind == TokenKind::Word && item.kw != Keyword::None) {
@@ -403,7 +403,7 @@ void parseDefaultDirective(BuildContext& c) {
                     parseNormal(c, c.defaultTexture.normal.get(), &c.defaultNormal);
                 break;
             case Keyword::kw_finish:
-                c.defaultTexture.finish = *parseFinish(c, &c.defaultTexture.finish);
+                c.defaultTexture.finish = parseFinish(c, c.defaultTexture.finish.get());
                 break;
             default:
                 r.fail(t, fmt::format(
@@ -411,6 +411,7 @@ void parseDefaultDirective(BuildContext& c) {
                               describeToken(t)));
         }
         c.defaultTextureSet = true;
+        c.placedDefaultTexture.reset();
     }
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "sdl/builders.h"
 #include "sdl/function_value.h"
@@ -261,7 +262,7 @@ static void parsePigmentBody(BuildContext& c, scene::Pigment& result, Sym closin
         r.fail(item,
                fmt::format("expected a color or pigment item, found {}", describeToken(item)));
     }
-    checkPavement(c, result.pattern(), r.peek());
+    checkPavement(c, std::as_const(result).pattern(), r.peek());
     result.settleDefaultColorMap();
 }
 
@@ -533,8 +534,15 @@ bool parsePigmentPatternItem(BuildContext& c, scene::Pigment& pigment) {
             r.next();
             pigment.setAverage();
             return true;
-        default:
-            return parsePatternModifier(c, pigment.pattern());
+        default: {
+            if (pigment.hasPatternPart()) return parsePatternModifier(c, pigment.pattern());
+            // A plain colour gets its pattern part only when a modifier is
+            // there to set (issue 23: 56-byte plain pigments).
+            scene::Pattern pattern = std::as_const(pigment).pattern();
+            if (!parsePatternModifier(c, pattern)) return false;
+            pigment.pattern() = std::move(pattern);
+            return true;
+        }
     }
 }
 

@@ -100,25 +100,25 @@ TEST(FinishParser, ReflectionBlockAndInterior) {
     )");
     ASSERT_EQ(p.scene.objects.size(), 3u);
     const auto& a = *p.scene.objects[0];
-    EXPECT_TRUE(a.texture->finish.reflection.fresnel);
-    EXPECT_EQ(a.texture->finish.reflection.min.g, 0.0);  // one value with fresnel: the maximum
-    EXPECT_EQ(a.texture->finish.reflection.max.g, 0.8);
-    EXPECT_EQ(a.texture->finish.reflection.metallic, 1.0);
-    EXPECT_TRUE(a.texture->finish.conserveEnergy);
+    EXPECT_TRUE(a.texture->finish->reflection.fresnel);
+    EXPECT_EQ(a.texture->finish->reflection.min.g, 0.0);  // one value with fresnel: the maximum
+    EXPECT_EQ(a.texture->finish->reflection.max.g, 0.8);
+    EXPECT_EQ(a.texture->finish->reflection.metallic, 1.0);
+    EXPECT_TRUE(a.texture->finish->conserveEnergy);
     ASSERT_TRUE(a.interior);
     EXPECT_EQ(a.interior->ior, 1.33);
     EXPECT_EQ(a.interior->fadePower, 1001);
     const auto& b = *p.scene.objects[1];
-    EXPECT_EQ(b.texture->finish.reflection.min.r, 0.1);
-    EXPECT_EQ(b.texture->finish.reflection.falloff, 3);
-    EXPECT_EQ(b.texture->finish.reflection.exponent, 2);
-    EXPECT_EQ(b.texture->finish.metallic, 0.5);
+    EXPECT_EQ(b.texture->finish->reflection.min.r, 0.1);
+    EXPECT_EQ(b.texture->finish->reflection.falloff, 3);
+    EXPECT_EQ(b.texture->finish->reflection.exponent, 2);
+    EXPECT_EQ(b.texture->finish->metallic, 0.5);
     const auto& c = *p.scene.objects[2];
     ASSERT_TRUE(c.interior);  // the 2.0 finish ior fills the interior
     EXPECT_EQ(c.interior->ior, 1.5);
-    EXPECT_EQ(c.texture->finish.reflection.max.r, 1.0);
-    EXPECT_EQ(c.texture->finish.reflection.max.g, 0.0);
-    EXPECT_EQ(c.texture->finish.reflection.exponent, 0.5);
+    EXPECT_EQ(c.texture->finish->reflection.max.r, 1.0);
+    EXPECT_EQ(c.texture->finish->reflection.max.g, 0.0);
+    EXPECT_EQ(c.texture->finish->reflection.exponent, 0.5);
 }
 
 TEST(Optics, IridescenceTint) {
@@ -163,18 +163,18 @@ TEST(FinishParser, AlbedoAndBackDiffuse) {
         sphere { 0, 1 finish { diffuse 0.7 } }
     )");
     ASSERT_EQ(p.scene.objects.size(), 4u);
-    const scene::Finish& a = p.scene.objects[0]->texture->finish;
+    const scene::Finish& a = *p.scene.objects[0]->texture->finish;
     EXPECT_NEAR(a.diffuse, 0.75, 1e-12);
     EXPECT_NEAR(a.diffuseBack, 0.45, 1e-12);
-    const scene::Finish& b = p.scene.objects[1]->texture->finish;
+    const scene::Finish& b = *p.scene.objects[1]->texture->finish;
     EXPECT_NEAR(b.specular, 0.01524, 1e-5);
     EXPECT_NEAR(b.phong, 0.205, 1e-12);
     // Converted when F closed; the later block does not convert again.
-    const scene::Finish& c = p.scene.objects[2]->texture->finish;
+    const scene::Finish& c = *p.scene.objects[2]->texture->finish;
     EXPECT_NEAR(c.diffuse, 0.2, 1e-12);
     EXPECT_NEAR(c.specular, 0.0275, 1e-4);
     EXPECT_NEAR(c.phong, 0.205, 1e-12);
-    EXPECT_EQ(p.scene.objects[3]->texture->finish.diffuseBack, 0.0);
+    EXPECT_EQ(p.scene.objects[3]->texture->finish->diffuseBack, 0.0);
 }
 
 TEST(FinishParser, EffectsParse) {
@@ -184,10 +184,10 @@ TEST(FinishParser, EffectsParse) {
         sphere { 0, 1 interior { dispersion_samples 1 } }
     )");
     const auto& a = *p.scene.objects[0];
-    EXPECT_EQ(a.texture->finish.crand, 0.1);
-    EXPECT_EQ(a.texture->finish.irid.amount, 0.3);
-    EXPECT_EQ(a.texture->finish.irid.thickness, 0.2);
-    EXPECT_EQ(a.texture->finish.irid.turbulence, 0.4);
+    EXPECT_EQ(a.texture->finish->crand, 0.1);
+    EXPECT_EQ(a.texture->finish->irid.amount, 0.3);
+    EXPECT_EQ(a.texture->finish->irid.thickness, 0.2);
+    EXPECT_EQ(a.texture->finish->irid.turbulence, 0.4);
     ASSERT_TRUE(a.interior);
     EXPECT_EQ(a.interior->dispersion, 1.1);
     EXPECT_EQ(a.interior->dispersionSamples, 9);

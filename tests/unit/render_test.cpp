@@ -127,7 +127,7 @@ render::RayCounts raysFor(const scene::Finish& finish, const Color& color, int q
     sphere->shape = std::make_shared<scene::Sphere>(Vec3{0, 0, 3}, 1);
     auto tex = std::make_shared<scene::Texture>();
     tex->pigment = std::make_shared<scene::Pigment>(color);
-    tex->finish = finish;
+    tex->finish = std::make_shared<const scene::Finish>(finish);
     sphere->texture = tex;
     auto interior = std::make_shared<scene::Interior>();
     interior->ior = 1.5;

@@ -35,7 +35,7 @@ plane { y, 0 texture { gradient x texture_map { [0.2 TA] [0.6 pigment { rgb 0.5 
     const Texture& tex = firstTexture(p);
     ASSERT_TRUE(tex.map);
     ASSERT_EQ(tex.map->entries.size(), 2u);
-    EXPECT_DOUBLE_EQ(tex.map->entries[1].texture->finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(tex.map->entries[1].texture->finish->phong, 1.0);
     auto at = picks(*tex.map, Vec3(0.3, 0, 0));
     ASSERT_EQ(at.size(), 2u);
     EXPECT_NEAR(at[0].second, 0.75, 1e-9);
