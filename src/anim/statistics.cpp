@@ -5,6 +5,7 @@
 #include <map>
 
 #include "anim/journal.h"
+#include "util/json.h"
 
 namespace frameray::anim {
 
@@ -44,29 +45,7 @@ std::uint64_t totalRays(const render::RayCounts& r) {
 }
 
 std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20)
-                    out += fmt::format("\\u{:04x}", static_cast<int>(c));
-                else
-                    out += c;
-        }
-    }
-    return out + "\"";
+    return util::jsonQuoted(text);
 }
 
 render::ShapeTestCounts sumShapeTests(const std::vector<FrameRecord>& records) {

@@ -41,4 +41,7 @@ JsonValue parseJson(std::string_view text);
 // On one line: {"a": 1, "b": [2, 3]}.
 std::string writeJsonInline(const JsonValue& value);
 
+// `text` as a JSON string literal, quotes included, escaped.
+std::string jsonQuoted(const std::string& text);
+
 }  // namespace frameray::util
