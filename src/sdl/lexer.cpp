@@ -306,7 +306,7 @@ class Lexer {
         }
         t.kind = TokenKind::String;
         out_->decodedStrings.push_back(std::move(value));
-        t.text = out_->decodedStrings.back();
+        t.text = std::string_view(out_->decodedStrings.back());
     }
 
     std::shared_ptr<TokenizedFile> out_;

@@ -41,8 +41,10 @@ class SymbolTable {
     // when undeclared.
     const Value* lookup(std::string_view name) const { return lookupKey(name); }
     const Value* lookup(const Token& name) const {
-        return name.nameHash ? lookupKey(HashedName{name.text, name.nameHash})
-                             : lookupKey(name.text);
+        // nameHash shares its bytes with a Number token's value.
+        return name.kind == TokenKind::Word && name.nameHash
+                   ? lookupKey(HashedName{name.text, name.nameHash})
+                   : lookupKey(name.text.view());
     }
     Value* find(std::string_view name) { return const_cast<Value*>(lookup(name)); }
     // Binds name in the innermost of the first scopeCount scopes (#local) or

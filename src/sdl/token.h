@@ -52,9 +52,39 @@ inline uint32_t identifierHash(std::string_view name) {
     return static_cast<uint32_t>(std::hash<std::string_view>{}(name)) | 1u;
 }
 
-// 40 bytes: an exported mesh file is tens of millions of tokens, all kept
+// A token's text: a view as a pointer and a 32-bit length, 12 bytes
+// without padding (a std::string_view takes 16), so that Token fits in 32
+// (issue 23). Reads as a std::string_view.
+#pragma pack(push, 1)
+class TokenText {
+  public:
+    TokenText() = default;
+    TokenText(std::string_view s)  // NOLINT(google-explicit-constructor)
+        : data_(s.data()), size_(static_cast<uint32_t>(s.size())) {}
+    operator std::string_view() const { return {data_, size_}; }  // NOLINT
+    std::string_view view() const { return {data_, size_}; }
+
+    const char* data() const { return data_; }
+    size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    const char* begin() const { return data_; }
+    const char* end() const { return data_ + size_; }
+    size_t find(std::string_view s, size_t from = 0) const { return view().find(s, from); }
+    size_t find(char c, size_t from = 0) const { return view().find(c, from); }
+    friend bool operator==(const TokenText& a, std::string_view b) { return a.view() == b; }
+
+  private:
+    const char* data_ = nullptr;
+    uint32_t size_ = 0;
+};
+#pragma pack(pop)
+static_assert(sizeof(TokenText) == 12);
+
+// 32 bytes: an exported mesh file is tens of millions of tokens, all kept
 // (loops and macros jump back), so every byte here is tens of MB there.
 struct Token {
+    TokenText text;  // Word spelling, String contents (escapes decoded), Number as written
+    uint32_t line = 0, column = 0;
     TokenKind kind : 7 = TokenKind::End;
     // String: holds an escape the language does not define ("\\q"). An
     // error in a string expression, as in povray; file names take the
@@ -62,19 +92,20 @@ struct Token {
     bool unknownEscape : 1 = false;
     Sym sym = Sym::None;         // for Symbol
     Keyword kw = Keyword::None;  // for Word: the reserved word, or None for an identifier
-    uint32_t line = 0, column = 0;
-    // Word identifiers: identifierHash(text), computed once by the lexer so
-    // symbol lookups do not hash the name again (0: not computed).
-    uint32_t nameHash = 0;
-    std::string_view text;  // Word spelling, String contents (escapes decoded)
-    double number = 0;      // for Number
+    union {
+        double number = 0;  // for Number
+        // Word identifiers: identifierHash(text), computed once by the
+        // lexer so symbol lookups do not hash the name again (0: not
+        // computed). A Number's value shares these bytes: read it for
+        // Words only (SymbolTable::lookup checks the kind).
+        uint32_t nameHash;
+    };
 
     bool is(Sym s) const { return kind == TokenKind::Symbol && sym == s; }
     bool is(Keyword k) const { return kind == TokenKind::Word && kw == k; }
     bool isIdentifier() const { return kind == TokenKind::Word && kw == Keyword::None; }
 };
-
-static_assert(sizeof(Token) == 40);
+static_assert(sizeof(Token) == 32);
 
 // One lexed file: its source and its tokens, ending with an End token.
 
