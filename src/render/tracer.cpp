@@ -223,7 +223,12 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
     // settings are used (measured with povray 3.7: two overlapping boxes
     // of media with samples 2 and 4 sample their common stretch as the
     // box the ray entered first says, whichever was declared first).
-    for (int i = 0; i < state.inside.size(); ++i) {
+    // A ray that hits nothing sees no interior media, only the scene's
+    // (measured: a camera inside a hollow half-space of media looking away
+    // from its plane sees the background untouched; two media boxes
+    // leaving the ray at one coincident face no longer show media to
+    // infinity).
+    for (int i = 0; i < state.inside.size() && !missed; ++i) {
         const InteriorStack::Region& r = state.inside[i];
         if (r.interior) set.add(r.interior->media);
     }

@@ -121,6 +121,13 @@ KNOBS = {
         "RadPretraceEnd", ("0.08", "0.04", "0.02", "0.01", "0.005"))),
     "rad_recursion": Knob("radiosity recursion_limit", _declares("RadRecursion", (1, 2, 3))),
     "rad_nearest": Knob("radiosity nearest_count", _declares("RadNearest", (1, 3, 5, 10, 20))),
+    # Participating media (issue 25), method 3 (frameray stops on methods 1
+    # and 2, so `method` has no sweep yet): declared by the scene.
+    "media_intervals": Knob("media intervals", _declares("MediaIntervals", (1, 2, 3, 5, 10))),
+    "media_samples": Knob("media samples", _declares("MediaSamples", (1, 3, 5, 10, 20, 40))),
+    "media_aa_level": Knob("media aa_level", _declares("MediaAaLevel", (1, 2, 3, 4, 5))),
+    "media_aa_threshold": Knob("media aa_threshold", _declares(
+        "MediaAaThreshold", ("0.5", "0.2", "0.1", "0.05", "0.01"))),
 }
 
 

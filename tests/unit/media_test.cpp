@@ -140,3 +140,35 @@ TEST(MediaSampling, SamplePlacementAsPovray) {
     EXPECT_NEAR(weight(0.05, "samples 1"), 2.0 / 24, 1e-12);
     EXPECT_NEAR(weight(0.1, "samples 1"), 4.0 / 24, 1e-12);
 }
+
+namespace {
+
+// A slab [0, 4] whose density is 0 up to 2.5 and B ((z - 2.5) / 0.5)^2
+// beyond: only the last of samples 4's three sub-intervals ([2, 3]) sees
+// it, its points at 2, 2.5, 3 (0, 0, B) and, split, 2.75 (B / 4).
+double lastSubInterval(double b) {
+    Parsed p(
+        "box { 0, 4 hollow interior { media { emission 0.2 samples 4 density { function { "
+        "select(z - 2.5, 0, pow((z - 2.5) / 0.5, 2) * " +
+        std::to_string(b) + ") } } } } }");
+    // light = 0.2 * (interval length / 3 sub-intervals) * mean over [2, 3]
+    // (to 1e-7: the density goes through a function pattern's colour map)
+    return slab(p.scene, 4.0).light.r / (0.2 * 4.0 / 3.0) / b;
+}
+
+}  // namespace
+
+TEST(MediaSampling, AdaptiveSplitAsPovray) {
+    // povray 3.7 (16-bit linear, 160 densities): the sub-interval splits
+    // once the light difference times the interval length (4) reaches
+    // aa_threshold 0.1 (summed over R, G, B: 3 * 0.2 * B * 4 >= 0.1) ...
+    EXPECT_NEAR(lastSubInterval(0.02625), 1.0 / 3.0, 1e-7);  // no split: (0 + 0 + 1) / 3
+    EXPECT_NEAR(lastSubInterval(0.05), 0.5 * (0 + 1.25 / 3.0), 1e-7);
+    // ... then in [2.5, 3] (0, 1/4, 1) only the right half differs: it is
+    // split, the left half counts (2 * 0 + 1/4) / 3 (povray 0.0034943 at
+    // B = 0.07625: 11/64 of the sub-interval; a full split would be 17/96) ...
+    EXPECT_NEAR(lastSubInterval(0.07625), 11.0 / 64.0, 1e-7);
+    // ... and once both halves differ both are split (povray 0.0095064 at
+    // B = 0.20125).
+    EXPECT_NEAR(lastSubInterval(0.20125), 17.0 / 96.0, 1e-7);
+}
