@@ -118,6 +118,7 @@ PolynomialSurface::PolynomialSurface(int order, const std::vector<double>& coeff
             for (int k = order - i - j; k >= 0; --k, ++index)
                 if (index < coefficients.size() && coefficients[index] != 0)
                     terms_.push_back({i, j, k, coefficients[index]});
+    bounds_ = polynomialBounds(terms_);
 }
 
 PolynomialSurface PolynomialSurface::withSturm(bool sturm) const {
@@ -159,6 +160,10 @@ Vec3 PolynomialSurface::normal(const Vec3& p) const {
 
 void PolynomialSurface::allHits(const Ray& ray, double tMin, double tMax,
                                 std::vector<double>& ts) const {
+    // Cull only: tMin and tMax stay as they are for the solver, so a ray
+    // that meets the box gets the same roots as without it.
+    double boxMin = tMin, boxMax = tMax;
+    if (!bounds_.surface.clip(ray, boxMin, boxMax)) return;
     const detail::RecentredRay rr(ray);
     if (!rr.valid()) return;
     // Powers of each coordinate along the ray as polynomials in s:

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/polynomial_bounds.h"
 #include "scene/shapes.h"
 
 namespace frameray::scene {
@@ -60,14 +61,15 @@ class Torus final : public Shape {
 
 // poly { order, <coefficients> }, cubic { <20 coefficients> } and
 // quartic { <35 coefficients> }: sum of A x^i y^j z^k = 0, inside where the
-// sum is negative. Unbounded.
+// sum is negative. Unbounded for povray; bounded here when the polynomial
+// is provably positive far away (polynomial_bounds.h), so that closed
+// surfaces (tori written as quartics) join the BVH and rays that miss
+// their box skip the root solving. The box only culls: the roots of a ray
+// that meets it are solved exactly as for an unbounded surface.
 class PolynomialSurface final : public Shape {
   public:
     // One monomial with its coefficient.
-    struct Term {
-        int i, j, k;  // powers of x, y, z
-        double coefficient;
-    };
+    using Term = PolynomialTerm;
 
     // The number of coefficients povray reads for an order: one per
     // monomial of degree <= order, (order+1)(order+2)(order+3)/6.
@@ -81,7 +83,8 @@ class PolynomialSurface final : public Shape {
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
     Vec3 normal(const Vec3& p) const override;
     bool inside(const Vec3& p) const override { return value(p) < 0; }
-    Bounds bounds() const override { return Bounds::infinite(); }
+    Bounds bounds() const override { return bounds_.surface; }
+    Bounds insideBounds() const override { return bounds_.inside; }
     const char* name() const override { return name_.c_str(); }
 
     double value(const Vec3& p) const;
@@ -96,6 +99,7 @@ class PolynomialSurface final : public Shape {
     std::vector<Term> terms_;  // non-zero terms only
     bool sturm_ = false;
     std::string name_;
+    PolynomialBounds bounds_;
 };
 
 }  // namespace frameray::scene
