@@ -147,15 +147,19 @@ void HeightField::traverse(const Ray& ray, double tMin, Limit tMax, Visit visit)
     };
     struct Entry {
         int level, i, k;
+        double t;  // where the ray enters the node's (padded) box
     };
     Entry stack[4 * 32 + 4];
     int top = 0;
     const int root = static_cast<int>(levels_.size()) - 1;
     double t0;
     if (!enter(root, 0, 0, t0)) return;
-    stack[top++] = {root, 0, 0};
+    stack[top++] = {root, 0, 0, t0};
     while (top > 0) {
         const Entry e = stack[--top];
+        // A hit found since this node was pushed may lie before its box:
+        // nothing in it can be nearer (firstHit lowers tMax as it goes).
+        if (e.t > tMax()) continue;
         if (e.level == 0) {
             if (!visit(e.i, e.k)) return;
             continue;
@@ -177,7 +181,7 @@ void HeightField::traverse(const Ray& ray, double tMin, Limit tMax, Visit visit)
         for (int a = 1; a < n; ++a)  // farthest first (at most four)
             for (int b = a; b > 0 && kids[b - 1].t < kids[b].t; --b)
                 std::swap(kids[b - 1], kids[b]);
-        for (int c = 0; c < n; ++c) stack[top++] = {e.level - 1, kids[c].i, kids[c].k};
+        for (int c = 0; c < n; ++c) stack[top++] = {e.level - 1, kids[c].i, kids[c].k, kids[c].t};
     }
 }
 

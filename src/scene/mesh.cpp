@@ -292,6 +292,8 @@ int64_t TriangleMesh::nearestTriangle(const Vec3& p, int group) const {
                 const Vec3 n = cross(b - a, c - a);
                 const double len = length(n);
                 const double plane = std::fabs(dot(p - a, n)) / len;
+                // The edge term below is >= 0: this one cannot win.
+                if (plane >= best) continue;
                 // Outside distance: for each edge, how far p lies on its
                 // outer side.
                 double outside = 0;
@@ -302,6 +304,7 @@ int64_t TriangleMesh::nearestTriangle(const Vec3& p, int group) const {
                     const Vec3 edgeNormal = cross(v - u, n) / len;  // points out of the triangle
                     const double d = dot(p - u, edgeNormal) / std::max(length(v - u), 1e-300);
                     outside = std::max(outside, d);
+                    if (plane + outside >= best) break;  // the sum only grows
                 }
                 const double score = plane + outside;
                 if (score < best) {

@@ -35,7 +35,15 @@ int sortAndMerge(double* roots, int n) {
     int kept = 0;
     for (int i = 0; i < n; ++i)
         if (std::isfinite(roots[i])) roots[kept++] = roots[i];
-    std::sort(roots, roots + kept);
+    // Insertion sort: n is at most kMaxPolynomialDegree and mostly 1 to 4,
+    // where std::sort's call overhead dominates. Equal values keep their
+    // order, as std::sort's own insertion pass leaves them at this size.
+    for (int i = 1; i < kept; ++i) {
+        const double v = roots[i];
+        int j = i;
+        for (; j > 0 && v < roots[j - 1]; --j) roots[j] = roots[j - 1];
+        roots[j] = v;
+    }
     int out = 0;
     for (int i = 0; i < kept; ++i) {
         if (out > 0) {
