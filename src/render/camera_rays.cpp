@@ -39,15 +39,30 @@ CameraRays::CameraRays(const scene::Camera& camera, int width, int height)
 }
 
 std::optional<scene::Ray> CameraRays::generate(double x, double y) const {
-    // Image-plane position centred on the image: [-0.5, 0.5], y up.
+    return makeRay(x, y, true);
+}
+
+std::optional<scene::Ray> CameraRays::generateUnnormalized(double x, double y) const {
+    return makeRay(x, y, false);
+}
+
+std::optional<scene::Ray> CameraRays::makeRay(double x, double y, bool unit) const {
+    // Image-plane position centred on the image: [-0.5, 0.5], y up, with
+    // povray's arithmetic to the last bit: its row coordinate counts from
+    // the bottom, ((height - 1) - (y - 1)) / height - 0.5, and the
+    // direction is made unit length at the end by multiplying with its
+    // reciprocal length. A surface lying exactly on a pattern's cell
+    // boundary (a plane at y = 0 under quilted) then falls on the side
+    // povray's rounding puts it.
     const double cx = x / width_ - 0.5;
-    const double cy = 0.5 - y / height_;
+    const double cy = ((height_ - 1) - (y - 1)) / height_ - 0.5;
     std::optional<scene::Ray> ray = project(cx, cy);
+    if (ray && unit) ray->direction = ray->direction * (1.0 / length(ray->direction));
     if (ray && camera_.normal) {
         // povray perturbs the unit ray direction like a surface normal, with
         // the normal pattern evaluated at the image-plane point (cx, cy, 0).
-        const Vec3 unit = normalize(ray->direction);
-        ray->direction = camera_.normal->perturb(Vec3{cx, cy, 0}, unit);
+        const Vec3 unitDirection = normalize(ray->direction);
+        ray->direction = camera_.normal->perturb(Vec3{cx, cy, 0}, unitDirection);
     }
     return ray;
 }

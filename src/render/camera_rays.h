@@ -21,6 +21,10 @@ class CameraRays {
     // Empty where the projection traces nothing (outside a fisheye's
     // circle, at a panoramic's poles).
     std::optional<scene::Ray> generate(double x, double y) const;
+    // The same ray before its direction is made unit length (a perspective
+    // ray then reaches the image plane at parameter 1; focal blur aims
+    // through it).
+    std::optional<scene::Ray> generateUnnormalized(double x, double y) const;
 
     const scene::Camera& camera() const { return camera_; }
 
@@ -29,6 +33,7 @@ class CameraRays {
     bool meshRays(double x, double y, std::vector<scene::Ray>& rays) const;
 
   private:
+    std::optional<scene::Ray> makeRay(double x, double y, bool unit) const;
     // The projection's ray, before a camera normal bends it; (cx, cy) is
     // the image-plane position centred on the image, in [-0.5, 0.5], y up.
     std::optional<scene::Ray> project(double cx, double cy) const;

@@ -137,7 +137,7 @@ PixelSample FocalBlurSampler::sample(
         for (int i = 0; i < batch && n < maxSamples_; ++i, ++n) {
             // A random position inside the pixel.
             const double sx = x + random.next() - 0.5, sy = y + random.next() - 0.5;
-            const std::optional<scene::Ray> base = camera_.generate(sx, sy);
+            const std::optional<scene::Ray> base = camera_.generateUnnormalized(sx, sy);
             const double jx = (random.next() - 0.5) * gridJitter_,
                          jy = (random.next() - 0.5) * gridJitter_;
             if (!base) {

@@ -1,7 +1,6 @@
 #include "scene/camera.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace frameray::scene {
 
@@ -11,13 +10,28 @@ double defaultAngle(Projection projection) {
     return projection == Projection::Spherical ? 360.0 : 90.0;
 }
 
+namespace {
+
+// povray's arithmetic, to the last bit: a vector is made unit length by
+// multiplying with the reciprocal of its length, and half an angle in
+// degrees becomes radians through the constant pi / 360. Primary rays then
+// match povray's exactly, which decides on which side of a pattern's cell
+// boundary a surface lying on it falls (a plane at y = 0 under quilted).
+Vec3 unitByReciprocal(const Vec3& v) {
+    const double l = length(v);
+    return l > 0 ? v * (1.0 / l) : v;
+}
+constexpr double kPiOver360 = 0.00872664625997164788;
+
+}  // namespace
+
 void finalizeCamera(Camera& cam, const CameraEdits& edits) {
     if (edits.angle) {
-        const double halfTan = std::tan(*edits.angle * std::numbers::pi / 360.0);
+        const double halfTan = std::tan(*edits.angle * kPiOver360);
         if (cam.projection == Projection::Perspective) {
             // The horizontal field of view sets the direction's length
             // relative to the right vector.
-            cam.direction = normalize(cam.direction) * (0.5 * length(cam.right) / halfTan);
+            cam.direction = unitByReciprocal(cam.direction) * (length(cam.right) / halfTan / 2.0);
         } else if (cam.projection == Projection::Orthographic) {
             // Same image area as a perspective camera of that angle has at
             // the look_at point (povray measures from the default look_at
@@ -44,12 +58,12 @@ void finalizeCamera(Camera& cam, const CameraEdits& edits) {
         // The sign of (up x direction) . right says whether the user set up
         // a left- or right-handed frame (seed 003 §5.5.4.2); keep it.
         const double handedness = dot(cross(cam.up, cam.direction), cam.right);
-        const Vec3 dir = normalize(cam.lookAt - cam.location);
+        const Vec3 dir = unitByReciprocal(cam.lookAt - cam.location);
         Vec3 right = cross(cam.sky, dir);
         // A sky parallel to the view keeps the previous right vector, as
         // povray does.
         if (length(right) < 1e-10) right = cam.right;
-        right = normalize(right);
+        right = unitByReciprocal(right);
         cam.direction = dir * dirLength;
         cam.right = right * (handedness > 0 ? rightLength : -rightLength);
         cam.up = cross(dir, right) * upLength;

@@ -172,6 +172,20 @@ static bool parseTexturePatternItem(BuildContext& c, scene::Texture& tex,
             if (map.mode == scene::TextureMap::Mode::List)
                 r.fail(item, "a list pattern takes textures, not a texture_map");
             map.entries = parseTextureMap(c);
+            // Transformations given between the pattern and its texture_map
+            // move the map's textures too, as those after it do (measured:
+            // `gradient y scale 10 texture_map { [0 T] [1 T] }` renders as
+            // `gradient y texture_map { [0 T] [1 T] } scale 10`, T's own
+            // patterns scaled).
+            Transform before;
+            for (const scene::Warp& w : map.pattern.chain)
+                if (w.kind == scene::Warp::Kind::Transform) before = before.then(w.transform);
+            if (!before.isIdentity())
+                for (auto& e : map.entries) {
+                    auto moved = std::make_shared<scene::Texture>(*e.texture);
+                    moved->transformBy(before);
+                    e.texture = std::move(moved);
+                }
             return true;
         }
         case Keyword::kw_average: {
