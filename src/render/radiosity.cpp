@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace frameray::render {
@@ -12,21 +13,31 @@ namespace {
 // index is positive.
 constexpr double kCellBias = 10000000.0;
 
-// The pool of sample directions: a two-dimensional Kronecker sequence (the
-// plastic number's R2 lattice), whose every run of consecutive points is
-// evenly spread over the unit square, taken to the unit disc by area
-// (radius sqrt(u)) and lifted to the hemisphere (Malley's method: uniform
-// over the disc is cosine-weighted over the hemisphere).
+// The pool of sample directions: the first two dimensions of Sobol's
+// sequence (base-2 radical inverse and its Pascal-matrix partner; every
+// aligned run of 2^m points stratifies the unit square into 2^m cells of
+// any shape, so consecutive runs are evenly spread), scrambled by a fixed
+// XOR, taken to the unit disc by area (radius sqrt(u)) and lifted to the
+// hemisphere (Malley's method: uniform over the disc is cosine-weighted
+// over the hemisphere).
 std::vector<Vec3> directionPool(int n) {
     std::vector<Vec3> out;
     out.reserve(static_cast<size_t>(n));
-    const double g = 1.32471795724474602596;
-    const double a1 = 1.0 / g, a2 = 1.0 / (g * g);
-    for (int k = 0; k < n; ++k) {
-        const double u = std::fmod(0.5 + a1 * k, 1.0);
-        const double v = std::fmod(0.5 + a2 * k, 1.0);
+    for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(n); ++k) {
+        std::uint32_t x = 0, y = 0, v = 1u << 31;
+        for (std::uint32_t i = k, bit = 0; i; i >>= 1, ++bit) {
+            if (i & 1) {
+                x ^= 1u << (31 - bit);
+                y ^= v;
+            }
+            v ^= v >> 1;
+        }
+        x ^= 0x5bd1e995u;
+        y ^= 0x9e3779b9u;
+        const double u = (x + 0.5) / 4294967296.0;
+        const double w = (y + 0.5) / 4294967296.0;
         const double r = std::sqrt(u);
-        const double phi = 2 * std::numbers::pi * v;
+        const double phi = 2 * std::numbers::pi * w;
         out.emplace_back(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u)));
     }
     return out;
