@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 
 namespace frameray::render {
@@ -12,36 +11,6 @@ namespace {
 // povray's cache coordinates are shifted by this much, so that every cell
 // index is positive.
 constexpr double kCellBias = 10000000.0;
-
-// The pool of sample directions: the first two dimensions of Sobol's
-// sequence (base-2 radical inverse and its Pascal-matrix partner; every
-// aligned run of 2^m points stratifies the unit square into 2^m cells of
-// any shape, so consecutive runs are evenly spread), scrambled by a fixed
-// XOR, taken to the unit disc by area (radius sqrt(u)) and lifted to the
-// hemisphere (Malley's method: uniform over the disc is cosine-weighted
-// over the hemisphere).
-std::vector<Vec3> directionPool(int n) {
-    std::vector<Vec3> out;
-    out.reserve(static_cast<size_t>(n));
-    for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(n); ++k) {
-        std::uint32_t x = 0, y = 0, v = 1u << 31;
-        for (std::uint32_t i = k, bit = 0; i; i >>= 1, ++bit) {
-            if (i & 1) {
-                x ^= 1u << (31 - bit);
-                y ^= v;
-            }
-            v ^= v >> 1;
-        }
-        x ^= 0x5bd1e995u;
-        y ^= 0x9e3779b9u;
-        const double u = (x + 0.5) / 4294967296.0;
-        const double w = (y + 0.5) / 4294967296.0;
-        const double r = std::sqrt(u);
-        const double phi = 2 * std::numbers::pi * w;
-        out.emplace_back(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u)));
-    }
-    return out;
-}
 
 // The largest power of two not above x (as a single-precision float
 // rounds it), 1 for 0.
@@ -64,19 +33,34 @@ Radiosity::Radiosity(const scene::RadiositySettings& settings, const Vec3& eye, 
     : settings_(settings),
       eye_(eye),
       legacyAmbient_(legacyAmbient),
-      pool_(directionPool(std::max(1, settings.directionPool))) {
+      poolSize_(static_cast<size_t>(std::max({1, settings.directionPool, settings.count}))) {
     for (int d = 0; d < std::max(1, settings.recursionLimit); ++d) {
         RadiosityDepth depth;
         const double scale = std::ldexp(1.0, d);
         depth.rays = std::max(5, static_cast<int>(settings.count / scale));
-        depth.reuseWeight = d == 0 ? settings.nearestCount
-                                   : (d == 1 ? std::min(2, settings.nearestCount) : 1);
+        depth.reuseWeight =
+            d == 0 ? settings.nearestCount : (d == 1 ? std::min(2, settings.nearestCount) : 1);
         depth.boundFactor = scale;
         depth.minimumReuse = settings.minimumReuse * scale;
         depth.maximumReuse = settings.maximumReuse * scale;
         depth.cellFactor = settings.errorBound * scale / (d == 0 ? 1.0 : 8.0);
         depths_.push_back(depth);
     }
+}
+
+Vec3 Radiosity::direction(int i, int count, size_t start) {
+    // Point i of a spiral lattice over the unit disc (radius
+    // sqrt((i + 1/2) / count), turned by the golden angle each step),
+    // lifted to the hemisphere (Malley's method: uniform over the disc is
+    // cosine-weighted over the hemisphere); the whole set turned by the
+    // set's angle.
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    const double set = static_cast<double>(start / static_cast<size_t>(count));
+    const double turn = 2 * std::numbers::pi * std::fmod(set * 0.6180339887498949, 1.0);
+    const double r2 = (i + 0.5) / count;
+    const double r = std::sqrt(r2);
+    const double phi = golden * i + turn;
+    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r2))};
 }
 
 RadiosityCell Radiosity::cellOf(const RadiositySample& sample) const {
@@ -199,9 +183,10 @@ bool RadiosityTask::wantsSample(const Lookup& found, int depth) const {
 }
 
 size_t RadiosityTask::takeDirections(int depth, size_t count) {
-    if (cursor_.size() <= static_cast<size_t>(depth)) cursor_.resize(static_cast<size_t>(depth) + 1);
+    if (cursor_.size() <= static_cast<size_t>(depth))
+        cursor_.resize(static_cast<size_t>(depth) + 1);
     const size_t start = cursor_[static_cast<size_t>(depth)];
-    cursor_[static_cast<size_t>(depth)] = (start + count) % radiosity_.pool().size();
+    cursor_[static_cast<size_t>(depth)] = (start + count) % radiosity_.poolSize();
     return start;
 }
 

@@ -91,10 +91,16 @@ class Radiosity {
     }
 
     // The pool of directions samples take their rays from, in turn (the
-    // second value of `count`): unit, cosine-weighted around +z, any run
-    // of consecutive directions evenly spread.
-    const std::vector<Vec3>& pool() const { return pool_; }
-
+    // second value of `count`, at least `count`): `count` consecutive
+    // directions make one sample's set, a cosine-weighted spiral over the
+    // hemisphere (evenly spread for any count), each set of the pool
+    // turned by its own angle (the golden ratio's multiples of a turn), so
+    // neighbouring samples err differently and blending them averages the
+    // errors out. With a pool of `count` every sample shoots the same set.
+    size_t poolSize() const { return poolSize_; }
+    // Direction i of the `count` of the set starting at `start` in the
+    // pool, in a frame whose z is the surface normal.
+    static Vec3 direction(int i, int count, size_t start);
     const std::vector<RadiositySample>& samples() const { return samples_; }
     const std::vector<RadiosityCell>& cells() const { return cells_; }
     const RadiosityOctree& octree() const { return octree_; }
@@ -106,7 +112,7 @@ class Radiosity {
     Vec3 eye_;
     bool legacyAmbient_;
     std::vector<RadiosityDepth> depths_;
-    std::vector<Vec3> pool_;
+    size_t poolSize_;
     std::vector<RadiositySample> samples_;
     std::vector<RadiosityCell> cells_;
     RadiosityOctree octree_;
@@ -144,8 +150,8 @@ class RadiosityTask {
     void add(RadiositySample sample);
     // The samples a final-pass block added (moved out).
     std::vector<RadiositySample> takeOwn() { return std::move(own_); }
-    // The next `count` directions of the pool for a sample `depth` deep
-    // (each depth takes its own turn through the pool).
+    // Where in the pool the next sample `depth` deep starts, taking
+    // `count` directions (each depth takes its own turn through the pool).
     size_t takeDirections(int depth, size_t count);
 
     RadiosityCounts counts;

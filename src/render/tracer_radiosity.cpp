@@ -2,10 +2,8 @@
 // up in the cache, and gathering a new sample with radiosity rays.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "render/tracer.h"
-#include "util/sample_random.h"
 
 namespace frameray::render {
 
@@ -52,11 +50,10 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     const scene::RadiositySettings& set = radiosity_->settings();
     const int depth = state.radiosity.depth;
     const RadiosityDepth& at = radiosity_->depth(depth);
-    const std::vector<Vec3>& pool = radiosity_->pool();
     int count = at.rays;
     if (obj.radiosityImportance > 0)
         count = std::max(1, static_cast<int>(std::ceil(count * obj.radiosityImportance)));
-    count = std::min(count, static_cast<int>(pool.size()));
+    count = std::min(count, static_cast<int>(radiosity_->poolSize()));
     const size_t first = state.radiosity.task->takeDirections(depth, static_cast<size_t>(count));
     Vec3 u, v;
     tangentFrame(n, u, v);
@@ -79,7 +76,7 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     double nearest = scene::kInfinity;
     Vec3 toNearest(0, 0, 1);
     for (int i = 0; i < count; ++i) {
-        const Vec3& d = pool[(first + static_cast<size_t>(i)) % pool.size()];
+        const Vec3 d = Radiosity::direction(i, count, first);
         const Vec3 dir = u * d.x + v * d.y + n * d.z;
         ++counts.radiosity;
         RGB c = trace({p, dir}, eps, child, counts);

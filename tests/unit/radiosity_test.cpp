@@ -58,46 +58,48 @@ render::RadiositySample sampleAt(const Vec3& p, const Vec3& n, double irradiance
 }  // namespace
 
 // The pool of directions (the second value of `count`): samples take their
-// rays from it in turn, so any run of consecutive directions must be
-// cosine-weighted and evenly spread on its own.
-TEST(Radiosity, PoolDirectionsAreCosineWeightedInEveryRun) {
+// rays from it in turn, `count` at a time; each sample's set is
+// cosine-weighted and evenly spread on its own, consecutive sets differ,
+// and a pool of `count` gives every sample the same set.
+TEST(Radiosity, EverySampleShootsAnEvenCosineWeightedSet) {
+    for (const size_t start : {size_t{0}, size_t{35}, size_t{70}}) {
+        double meanCos = 0;
+        int within60 = 0;
+        Vec3 sum(0);
+        for (int i = 0; i < 35; ++i) {
+            const Vec3 d = render::Radiosity::direction(i, 35, start);
+            EXPECT_NEAR(length(d), 1.0, 1e-12);
+            EXPECT_GE(d.z, 0.0);
+            meanCos += d.z / 35;
+            within60 += d.z > 0.5;
+            sum = sum + d;
+        }
+        // The mean of cos is 2/3; the share within 60 degrees is 0.75.
+        EXPECT_NEAR(meanCos, 2.0 / 3.0, 0.002) << start;
+        EXPECT_NEAR(within60 / 35.0, 0.75, 0.5 / 35) << start;
+        EXPECT_NEAR(sum.x / 35, 0.0, 0.02) << start;
+        EXPECT_NEAR(sum.y / 35, 0.0, 0.02) << start;
+    }
+    EXPECT_GT(
+        length(render::Radiosity::direction(3, 35, 0) - render::Radiosity::direction(3, 35, 35)),
+        0.01);
+    // Samples take consecutive runs of the pool, each depth its own turn.
     scene::RadiositySettings set;
     set.count = 35;
-    set.directionPool = 1600;
-    const render::Radiosity r(set, Vec3(0), false);
-    const std::vector<Vec3>& pool = r.pool();
-    ASSERT_EQ(pool.size(), 1600u);
-    // The whole pool: the mean of cos is 2/3 and the share within 60
-    // degrees of the normal is sin^2(60) = 0.75.
-    double meanCos = 0;
-    int within60 = 0;
-    for (const Vec3& d : pool) {
-        EXPECT_NEAR(length(d), 1.0, 1e-12);
-        EXPECT_GE(d.z, 0.0);
-        meanCos += d.z / pool.size();
-        within60 += d.z > 0.5;
-    }
-    EXPECT_NEAR(meanCos, 2.0 / 3.0, 0.002);
-    EXPECT_NEAR(within60 / 1600.0, 0.75, 0.005);
-    // Every run of 35 (a sample's rays) on its own.
-    for (size_t start = 0; start + 35 <= pool.size(); start += 35) {
-        double runCos = 0;
-        Vec3 sum(0);
-        for (size_t i = start; i < start + 35; ++i) {
-            runCos += pool[i].z / 35;
-            sum = sum + pool[i];
-        }
-        EXPECT_NEAR(runCos, 2.0 / 3.0, 0.03) << start;
-        EXPECT_NEAR(sum.x / 35, 0.0, 0.06) << start;
-        EXPECT_NEAR(sum.y / 35, 0.0, 0.06) << start;
-    }
-    // Samples take consecutive runs, each depth its own turn.
+    set.directionPool = 100;
     render::Radiosity shared(set, Vec3(0), false);
     render::RadiosityTask task(shared, true, true);
     EXPECT_EQ(task.takeDirections(0, 35), 0u);
     EXPECT_EQ(task.takeDirections(0, 35), 35u);
     EXPECT_EQ(task.takeDirections(1, 17), 0u);
     EXPECT_EQ(task.takeDirections(0, 35), 70u);
+    EXPECT_EQ(task.takeDirections(0, 35), 5u);
+    // A pool as large as count: every sample starts at 0, the same set.
+    set.directionPool = 35;
+    render::Radiosity single(set, Vec3(0), false);
+    render::RadiosityTask one(single, true, true);
+    EXPECT_EQ(one.takeDirections(0, 35), 0u);
+    EXPECT_EQ(one.takeDirections(0, 35), 0u);
 }
 
 // povray 3.7's settings per bounce: rays halve (at least 5), the error
