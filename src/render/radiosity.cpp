@@ -1,7 +1,6 @@
 #include "render/radiosity.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -9,137 +8,199 @@ namespace frameray::render {
 
 namespace {
 
-// A cosine-weighted set of n directions around +z: a spiral lattice over
-// the unit disc (point k at radius sqrt((k + 1/2) / n), turned by the
-// golden angle each step: evenly spread for any n), lifted to the
-// hemisphere (Malley's method: uniform over the disc is cosine-weighted
-// over the hemisphere). The same set serves every sample; samples differ
-// in the frame it is turned into.
-std::vector<Vec3> spiralDirections(int n) {
-    std::vector<Vec3> out;
-    out.reserve(static_cast<size_t>(n));
-    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-    for (int k = 0; k < n; ++k) {
-        const double r2 = (k + 0.5) / n;
-        const double r = std::sqrt(r2);
-        const double phi = golden * k;
-        out.emplace_back(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r2)));
-    }
-    return out;
+// povray's cache coordinates are shifted by this much, so that every cell
+// index is positive.
+constexpr double kCellBias = 10000000.0;
+
+// The largest power of two not above x (as a single-precision float
+// rounds it), 1 for 0.
+double floorPow2(double x) {
+    const float f = static_cast<float>(x);
+    if (!(f > 0)) return 1.0;
+    int e = 0;
+    std::frexp(f, &e);
+    return std::ldexp(1.0, e - 1);
 }
 
 }  // namespace
+
+bool RadiosityCell::sees(const Vec3& p) const {
+    return std::fabs(p.x + kCellBias - cx) < size && std::fabs(p.y + kCellBias - cy) < size &&
+           std::fabs(p.z + kCellBias - cz) < size;
+}
 
 Radiosity::Radiosity(const scene::RadiositySettings& settings, const Vec3& eye, bool legacyAmbient)
     : settings_(settings),
       eye_(eye),
       legacyAmbient_(legacyAmbient),
-      reachFactor_(settings.errorBound * std::max(1.0, settings.lowErrorFactor)) {
-    for (int depth = 0; depth < settings.recursionLimit; ++depth)
-        directions_.push_back(spiralDirections(std::max(1, settings.count >> std::min(depth, 30))));
+      poolSize_(static_cast<size_t>(std::max({1, settings.directionPool, settings.count}))) {
+    for (int d = 0; d < std::max(1, settings.recursionLimit); ++d) {
+        RadiosityDepth depth;
+        const double scale = std::ldexp(1.0, d);
+        depth.rays = std::max(5, static_cast<int>(settings.count / scale));
+        depth.reuseWeight =
+            d == 0 ? settings.nearestCount : (d == 1 ? std::min(2, settings.nearestCount) : 1);
+        depth.boundFactor = scale;
+        depth.minimumReuse = settings.minimumReuse * scale;
+        depth.maximumReuse = settings.maximumReuse * scale;
+        depth.cellFactor = settings.errorBound * scale / (d == 0 ? 1.0 : 8.0);
+        depths_.push_back(depth);
+    }
 }
 
-std::span<const Vec3> Radiosity::directions(int count, std::vector<Vec3>& scratch) const {
-    for (const std::vector<Vec3>& set : directions_)
-        if (static_cast<int>(set.size()) == count) return set;
-    scratch = spiralDirections(count);
-    return scratch;
+Vec3 Radiosity::direction(int i, int count, size_t start) {
+    // Point i of a spiral lattice over the unit disc (radius
+    // sqrt((i + 1/2) / count), turned by the golden angle each step),
+    // lifted to the hemisphere (Malley's method: uniform over the disc is
+    // cosine-weighted over the hemisphere); the whole set turned by the
+    // set's angle.
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    const double set = static_cast<double>(start / static_cast<size_t>(count));
+    const double turn = 2 * std::numbers::pi * std::fmod(set * 0.6180339887498949, 1.0);
+    const double r2 = (i + 0.5) / count;
+    const double r = std::sqrt(r2);
+    const double phi = golden * i + turn;
+    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r2))};
+}
+
+RadiosityCell Radiosity::cellOf(const RadiositySample& sample) const {
+    const double reach = sample.radius * depth(sample.depth).cellFactor;
+    double size = floorPow2(2 * reach);
+    const Vec3& c = sample.point;
+    const double farthest =
+        std::max({std::fabs(c.x - reach), std::fabs(c.y - reach), std::fabs(c.z - reach)}) +
+        kCellBias;
+    while (farthest / size > 1e9) size *= 2;
+    double ix = std::floor((c.x + kCellBias) / size);
+    double iy = std::floor((c.y + kCellBias) / size);
+    double iz = std::floor((c.z + kCellBias) / size);
+    auto holds = [&](const Vec3& p) {
+        return std::fabs(p.x + kCellBias - (ix + 0.5) * size) < size &&
+               std::fabs(p.y + kCellBias - (iy + 0.5) * size) < size &&
+               std::fabs(p.z + kCellBias - (iz + 0.5) * size) < size;
+    };
+    while (!holds(c - Vec3(reach)) || !holds(c + Vec3(reach))) {
+        ix = std::floor(ix * 0.5);
+        iy = std::floor(iy * 0.5);
+        iz = std::floor(iz * 0.5);
+        size *= 2;
+    }
+    return {size, (ix + 0.5) * size, (iy + 0.5) * size, (iz + 0.5) * size};
 }
 
 void Radiosity::add(const RadiositySample& sample) {
-    octree_.insert(static_cast<std::uint32_t>(samples_.size()), sample.point,
-                   sample.radius * reachFactor_);
+    const RadiosityCell cell = cellOf(sample);
+    // The cell widened by half its size holds every point that sees the
+    // sample.
+    octree_.insert(static_cast<std::uint32_t>(samples_.size()), sample.point, 1.5 * cell.size);
     samples_.push_back(sample);
+    cells_.push_back(cell);
 }
 
 namespace {
 
-// The best samples found for one lookup, by increasing error.
-struct Candidates {
-    static constexpr int kMax = 20;  // nearest_count's limit
-    std::array<double, kMax> error{};
-    std::array<const RadiositySample*, kMax> sample{};
-    int size = 0;
-    int limit = 0;
-
-    void offer(double e, const RadiositySample* s) {
-        if (size == limit && e >= error[static_cast<size_t>(size - 1)]) return;
-        int i = size < limit ? size++ : size - 1;
-        while (i > 0 && error[static_cast<size_t>(i - 1)] > e) {
-            error[static_cast<size_t>(i)] = error[static_cast<size_t>(i - 1)];
-            sample[static_cast<size_t>(i)] = sample[static_cast<size_t>(i - 1)];
-            --i;
-        }
-        error[static_cast<size_t>(i)] = e;
-        sample[static_cast<size_t>(i)] = s;
-    }
-};
-
-// The error of reusing sample s at p (normal n), Ward's measure: the
-// distance in units of the sample's radius plus the normals' divergence;
-// negative when s may not be used at all.
-double reuseError(const RadiositySample& s, const Vec3& p, const Vec3& n) {
-    const double cosNormals = dot(n, s.normal);
-    if (cosNormals <= 0) return -1;
+// How much sample s counts at p (normal n) for a lookup with error bound
+// `bound`; 0 when it may not be used. povray 3.7's rules: the error is
+// the distance in units of the sample's reuse radius (shrunk toward the
+// nearest surface its rays met, in that direction) plus twice the root of
+// the normals' divergence; the weight falls from 1 to 0 at the bound,
+// smoothly for the final pass's top-level lookups and linearly otherwise;
+// a sample in front of p (p behind its surface) fades out over a short
+// distance.
+double reuseWeight(const RadiositySample& s, const Vec3& p, const Vec3& n, double bound,
+                   bool smooth) {
     const Vec3 d = p - s.point;
-    // A sample in front of p (p lies behind its surface) sees light p
-    // does not.
-    if (dot(d, n + s.normal) < -0.1 * s.radius) return -1;
-    return length(d) / s.radius + std::sqrt(std::max(0.0, 1.0 - cosNormals));
+    const double dist2 = dot(d, d);
+    const double quick = s.radius * bound;
+    if (dist2 >= quick * quick) return 0;
+    const double dist = std::sqrt(dist2);
+    double ri = s.radius;
+    const bool apart = dist > 1e-6;
+    Vec3 unit;
+    if (apart) {
+        unit = d * (1.0 / dist);
+        const double towardNearest = dot(s.toNearest, unit);
+        if (s.nearest > 0 && towardNearest > 0)
+            ri = towardNearest * s.nearest + (1 - towardNearest) * ri;
+    }
+    if (dist >= ri * bound) return 0;
+    const double error = dist / ri + 2 * std::sqrt(std::fabs(1 - dot(n, s.normal)));
+    if (error >= bound) return 0;
+    double inFront = 1;
+    constexpr double kInFrontLimit = -0.05;
+    if (apart) {
+        const Vec3 half = n + s.normal;
+        inFront = dot(unit, half) / length(half);
+    }
+    if (!(inFront > kInFrontLimit)) return 0;
+    const double t = error / bound;
+    double w;
+    if (smooth)
+        w = t < 0.5 ? 1 - 2 * t * t : 2 * (1 - t) * (1 - t);
+    else
+        w = 1 - t;
+    if (inFront <= 0) w *= 1 - inFront / kInFrontLimit;
+    return w > 0.001 ? w : 0;
 }
 
 }  // namespace
 
-RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, int depth) const {
+RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, int depth,
+                                                 double weight) const {
     const scene::RadiositySettings& set = radiosity_.settings();
-    const double bound = set.errorBound * (pretrace_ ? set.lowErrorFactor : 1.0);
-    Candidates best;
-    best.limit = set.nearestCount;
-    auto consider = [&](const RadiositySample& s) {
-        // Only samples gathered as deep: a shallower one holds more
-        // bounces, a deeper one fewer, than this lookup may see (measured:
-        // a room at recursion_limit 2 and 3 matches povray exactly so,
-        // and is a level too bright when shallower samples are reused).
+    double bound = set.errorBound * (pretrace_ ? set.lowErrorFactor : 1.0);
+    if (weight < 0.25) bound += 0.25 - weight;
+    bound *= radiosity_.depth(depth).boundFactor;
+    const bool smooth = !pretrace_ && depth == 0;
+    Lookup out;
+    RGB sum(0.0);
+    auto consider = [&](const RadiositySample& s, const RadiosityCell& cell) {
         if (s.depth != depth) return;
-        const double e = reuseError(s, p, n);
-        if (e >= 0 && e < bound) best.offer(e, &s);
+        if (s.pass == pass_ && s.tile != tile_) return;
+        if (!cell.sees(p)) return;
+        const double w = reuseWeight(s, p, n, bound, smooth);
+        if (w <= 0) return;
+        sum += s.irradiance * w;
+        out.weight += w;
+        ++out.found;
     };
     const std::vector<RadiositySample>& shared = radiosity_.samples();
-    radiosity_.octree().query(p, [&](std::uint32_t i) { consider(shared[i]); });
-    for (const RadiositySample& s : own_) consider(s);
-    Lookup out;
-    out.found = best.size;
-    if (best.size == 0) return out;
-    RGB sum(0.0);
-    double weights = 0;
-    for (int i = 0; i < best.size; ++i) {
-        // Weights fall smoothly to 0 at the error bound.
-        const double e = best.error[static_cast<size_t>(i)];
-        const double w = (1.0 - e / bound) * (1.0 - e / bound);
-        sum += best.sample[static_cast<size_t>(i)]->irradiance * w;
-        weights += w;
-    }
-    out.irradiance = sum * (1.0 / weights);
+    const std::vector<RadiosityCell>& cells = radiosity_.cells();
+    radiosity_.octree().query(p, [&](std::uint32_t i) { consider(shared[i], cells[i]); });
+    for (size_t i = 0; i < own_.size(); ++i) consider(own_[i], ownCells_[i]);
+    if (out.weight > 0) out.irradiance = sum * (1.0 / out.weight);
     return out;
 }
 
-bool RadiosityTask::wantsSample(int found, int depth) const {
+bool RadiosityTask::wantsSample(const Lookup& found, int depth) const {
     const scene::RadiositySettings& set = radiosity_.settings();
-    if (depth > 0) return found == 0;
-    // Measured (povray's sample counts per pass as nearest_count varies):
-    // pretrace passes gather until nearest_count samples are near enough;
-    // the final pass only where none is, unless always_sample.
-    if (pretrace_ || set.alwaysSample) return found < set.nearestCount;
-    return found == 0;
+    // povray 3.7: a lookup reuses when the weights it found add up to a
+    // quarter of nearest_count (2 one bounce deep, 1 deeper); the final
+    // pass reuses any weight unless always_sample.
+    if (found.weight * 4 >= radiosity_.depth(depth).reuseWeight) return false;
+    if (!pretrace_ && !set.alwaysSample && found.weight > 0) return false;
+    return true;
 }
 
-void RadiosityTask::add(const RadiositySample& sample) {
+size_t RadiosityTask::takeDirections(int depth, size_t count) {
+    if (cursor_.size() <= static_cast<size_t>(depth))
+        cursor_.resize(static_cast<size_t>(depth) + 1);
+    const size_t start = cursor_[static_cast<size_t>(depth)];
+    cursor_[static_cast<size_t>(depth)] = (start + count) % radiosity_.poolSize();
+    return start;
+}
+
+void RadiosityTask::add(RadiositySample sample) {
     ++counts.samples;
     if (sample.depth > 0) ++counts.deeper;
-    if (writeShared_)
+    sample.pass = pretrace_ ? pass_ : 0;
+    sample.tile = tile_;
+    if (writeShared_) {
         radiosity_.add(sample);
-    else
+    } else {
+        ownCells_.push_back(radiosity_.cellOf(sample));
         own_.push_back(sample);
+    }
 }
 
 }  // namespace frameray::render

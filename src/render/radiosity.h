@@ -18,6 +18,7 @@
 // the thread count or on which thread renders which block.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -45,6 +46,34 @@ struct RadiosityCounts {
     }
 };
 
+// What changes with the depth of a lookup or sample (povray 3.7's rules,
+// depth d = how many radiosity rays deep): rays per new sample halve per
+// bounce (at least 5); the error bound and the reuse radius limits double;
+// the weight a lookup must find before it reuses (nearest_count at the top,
+// at most 2 one bounce deep, 1 deeper); and how far the cache lets a
+// sample be found: a top-level sample wherever its whole reach goes,
+// a deeper one only within an eighth of it (povray files deeper samples in
+// octree cells sized for an eighth of their reach, so lookups farther away
+// never see them).
+struct RadiosityDepth {
+    int rays = 0;
+    double reuseWeight = 0;
+    double boundFactor = 1;
+    double minimumReuse = 0;
+    double maximumReuse = 0;
+    double cellFactor = 0;  // a sample's cell is sized for radius * cellFactor
+};
+
+// The cell of the cache a sample is filed in (a power-of-two cube, in
+// coordinates shifted by a large bias so that every index is positive): a
+// lookup sees the sample only from within the cell widened by half its size.
+struct RadiosityCell {
+    double size = 0;
+    double cx = 0, cy = 0, cz = 0;  // the cell's centre, biased coordinates
+
+    bool sees(const Vec3& p) const;
+};
+
 // The frame's radiosity: its settings, the directions samples shoot and
 // the cache shared by every block.
 class Radiosity {
@@ -57,26 +86,35 @@ class Radiosity {
     const scene::RadiositySettings& settings() const { return settings_; }
     const Vec3& eye() const { return eye_; }
     bool legacyAmbient() const { return legacyAmbient_; }
+    const RadiosityDepth& depth(int d) const {
+        return depths_[static_cast<size_t>(std::min<int>(d, static_cast<int>(depths_.size()) - 1))];
+    }
 
-    // `count` unit directions in a frame whose z is the surface normal,
-    // cosine-weighted and evenly spread (a spiral lattice over the disc,
-    // lifted to the hemisphere). Made once for the counts the depths use;
-    // any other count (an object's importance) is made into `scratch`.
-    std::span<const Vec3> directions(int count, std::vector<Vec3>& scratch) const;
-
+    // The pool of directions samples take their rays from, in turn (the
+    // second value of `count`, at least `count`): `count` consecutive
+    // directions make one sample's set, a cosine-weighted spiral over the
+    // hemisphere (evenly spread for any count), each set of the pool
+    // turned by its own angle (the golden ratio's multiples of a turn), so
+    // neighbouring samples err differently and blending them averages the
+    // errors out. With a pool of `count` every sample shoots the same set.
+    size_t poolSize() const { return poolSize_; }
+    // Direction i of the `count` of the set starting at `start` in the
+    // pool, in a frame whose z is the surface normal.
+    static Vec3 direction(int i, int count, size_t start);
     const std::vector<RadiositySample>& samples() const { return samples_; }
+    const std::vector<RadiosityCell>& cells() const { return cells_; }
     const RadiosityOctree& octree() const { return octree_; }
-    // How far a sample's influence reaches, in units of its radius.
-    double reachFactor() const { return reachFactor_; }
     void add(const RadiositySample& sample);
+    RadiosityCell cellOf(const RadiositySample& sample) const;
 
   private:
     scene::RadiositySettings settings_;
     Vec3 eye_;
     bool legacyAmbient_;
-    double reachFactor_;
-    std::vector<std::vector<Vec3>> directions_;  // count >> depth rays, by depth
+    std::vector<RadiosityDepth> depths_;
+    size_t poolSize_;
     std::vector<RadiositySample> samples_;
+    std::vector<RadiosityCell> cells_;
     RadiosityOctree octree_;
 };
 
@@ -91,19 +129,30 @@ class RadiosityTask {
 
     const Radiosity& radiosity() const { return radiosity_; }
     bool pretrace() const { return pretrace_; }
+    // The pretrace pass (1, 2, ...) and tile the task is working on.
+    void setTile(int pass, int tile) {
+        pass_ = pass;
+        tile_ = tile;
+    }
 
     // The interpolated irradiance at p (normal n) for a lookup `depth`
-    // bounces deep, and how many samples it blends.
+    // bounces deep, how many samples it blends and their summed weight.
+    // `weight`: how much the light found here can still matter to the
+    // pixel (below 1/4 the error bound widens by the difference).
     struct Lookup {
         RGB irradiance;
         int found = 0;
+        double weight = 0;
     };
-    Lookup interpolate(const Vec3& p, const Vec3& n, int depth) const;
-    // Whether a lookup that found `found` samples calls for a new one.
-    bool wantsSample(int found, int depth) const;
-    void add(const RadiositySample& sample);
+    Lookup interpolate(const Vec3& p, const Vec3& n, int depth, double weight = 1.0) const;
+    // Whether a lookup calls for a new sample.
+    bool wantsSample(const Lookup& found, int depth) const;
+    void add(RadiositySample sample);
     // The samples a final-pass block added (moved out).
     std::vector<RadiositySample> takeOwn() { return std::move(own_); }
+    // Where in the pool the next sample `depth` deep starts, taking
+    // `count` directions (each depth takes its own turn through the pool).
+    size_t takeDirections(int depth, size_t count);
 
     RadiosityCounts counts;
 
@@ -111,7 +160,11 @@ class RadiosityTask {
     Radiosity& radiosity_;
     bool pretrace_;
     bool writeShared_;
+    int pass_ = 0;
+    int tile_ = 0;
     std::vector<RadiositySample> own_;  // samples of a final-pass block
+    std::vector<RadiosityCell> ownCells_;
+    std::vector<size_t> cursor_;  // per depth: where in the pool the next sample starts
 };
 
 }  // namespace frameray::render

@@ -22,6 +22,16 @@ struct RadiositySample {
     // distance from the eye.
     double radius = 0;
     int depth = 0;  // 0: seen from the camera; n: gathered for a radiosity ray n bounces deep
+    // The nearest surface the rays met: how far, and which way (unit). The
+    // reuse radius shrinks toward it. nearest <= 0: unknown (a sample read
+    // from a file), the radius holds every way.
+    double nearest = 0;
+    Vec3 toNearest;
+    // Which pretrace pass gathered the sample (0: the final pass) and in
+    // which tile of it: a lookup ignores the samples other tiles of its own
+    // pass gathered (povray's rule for reproducible renders).
+    int pass = 0;
+    int tile = 0;
 };
 
 class RadiosityOctree {

@@ -12,7 +12,7 @@ namespace frameray::render {
 
 namespace {
 
-constexpr const char* kHeader = "frameray radiosity cache 1";
+constexpr const char* kHeader = "frameray radiosity cache 2";
 
 }  // namespace
 
@@ -22,9 +22,10 @@ void writeRadiosityFile(const std::filesystem::path& file,
     // Shortest round-trip numbers: a file read back gives the same samples
     // bit for bit, so a render started from it is deterministic.
     for (const RadiositySample& s : samples)
-        text += fmt::format("{} {} {} {} {} {} {} {} {} {} {}\n", s.depth, s.point.x, s.point.y,
-                            s.point.z, s.normal.x, s.normal.y, s.normal.z, s.irradiance.r,
-                            s.irradiance.g, s.irradiance.b, s.radius);
+        text += fmt::format("{} {} {} {} {} {} {} {} {} {} {} {} {} {} {}\n", s.depth, s.point.x,
+                            s.point.y, s.point.z, s.normal.x, s.normal.y, s.normal.z,
+                            s.irradiance.r, s.irradiance.g, s.irradiance.b, s.radius, s.nearest,
+                            s.toNearest.x, s.toNearest.y, s.toNearest.z);
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
@@ -51,11 +52,13 @@ std::vector<RadiositySample> readRadiosityFile(const std::filesystem::path& file
         fields.imbue(std::locale::classic());
         RadiositySample s;
         fields >> s.depth >> s.point.x >> s.point.y >> s.point.z >> s.normal.x >> s.normal.y >>
-            s.normal.z >> s.irradiance.r >> s.irradiance.g >> s.irradiance.b >> s.radius;
+            s.normal.z >> s.irradiance.r >> s.irradiance.g >> s.irradiance.b >> s.radius >>
+            s.nearest >> s.toNearest.x >> s.toNearest.y >> s.toNearest.z;
         std::string rest;
         if (!fields || (fields >> rest) || s.depth < 0 || !(s.radius > 0))
             throw std::runtime_error(fmt::format(
-                "{}:{}: not a radiosity sample (depth, point, normal, irradiance, radius)",
+                "{}:{}: not a radiosity sample (depth, point, normal, irradiance, radius, nearest "
+                "surface)",
                 file.string(), number));
         samples.push_back(s);
     }

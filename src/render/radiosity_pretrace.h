@@ -14,7 +14,8 @@ namespace frameray::render {
 // with blocks half as wide, the last pretrace_end wide (never under a
 // pixel). One camera ray per block, at a spot within it hashed from the
 // pass and the block; its pixel colour is discarded, its radiosity lookups
-// fill the cache. Runs on the calling thread, in a fixed order.
+// fill the cache. Runs on the calling thread, in a fixed order, tile by
+// tile (see radiosity_pretrace.cpp).
 void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity& radiosity,
                        const PixelBlock& window, int width, RayCounts& rays,
                        RadiosityCounts& counts);

@@ -34,7 +34,11 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
         radiosity = std::make_unique<Radiosity>(*scene.globals.radiosity, scene.camera.location,
                                                 scene.languageVersion < 3.7 - 1e-9);
     if (radiosity && settings.radiosityStart)
-        for (const RadiositySample& s : *settings.radiosityStart) radiosity->add(s);
+        for (RadiositySample s : *settings.radiosityStart) {
+            // Loaded samples belong to no pass of this frame: every lookup sees them.
+            s.pass = -1;
+            radiosity->add(s);
+        }
     const Tracer tracer(world, settings.quality, radiosity.get());
     const CameraRays camera(world.scene().camera, settings.width, settings.height);
     if (radiosity)

@@ -518,9 +518,12 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
         const RGB* gathered = nullptr;
         if (radiosity_ && fin.diffuse > 0) {
             if (!radiosityHere)
-                radiosityHere =
-                    radiosityLight(at.p, radiosity_->settings().normal ? n : at.geometric, at.obj,
-                                   at.eps, state, counts);
+                radiosityHere = radiosityLight(
+                    at.p, radiosity_->settings().normal ? n : at.geometric, at.obj, at.eps,
+                    state.weight *
+                        (0.297 * surface.rgb.r + 0.589 * surface.rgb.g + 0.114 * surface.rgb.b) *
+                        fin.diffuse,
+                    state, counts);
             gathered = &*radiosityHere;
         }
         const RGB local = localLight(tex, surface, at.obj, at.p, n, at.viewDir, at.eps, state.fade,

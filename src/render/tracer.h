@@ -196,10 +196,13 @@ class Tracer {
     // --- radiosity (tracer_radiosity.cpp) ---
     // The light that other surfaces send to p (normal n, facing the
     // viewer): interpolated from the cache, or a new sample gathered.
+    // `weight`: how much of it can reach the pixel (the ray's weight times
+    // the surface's diffuse colour, as a grey).
     RGB radiosityLight(const Vec3& p, const Vec3& n, const scene::Object& obj, double eps,
-                       const State& state, RayCounts& counts) const;
+                       double weight, const State& state, RayCounts& counts) const;
+    // A new sample at p; `keep` says whether it may join the cache.
     RadiositySample gatherSample(const Vec3& p, const Vec3& n, const scene::Object& obj, double eps,
-                                 const State& state, RayCounts& counts) const;
+                                 const State& state, RayCounts& counts, bool& keep) const;
 
     // +Q0/+Q1: the colour of texture `top` at p with no lighting at all.
     RGB quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv) const;

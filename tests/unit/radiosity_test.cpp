@@ -42,63 +42,133 @@ TEST(RadiosityOctree, QueryFindsEverySampleWhoseReachCoversThePoint) {
     }
 }
 
-TEST(Radiosity, DirectionsAreCosineWeightedAndSpread) {
-    scene::RadiositySettings set;
-    set.count = 400;
-    set.recursionLimit = 2;
-    const render::Radiosity r(set, Vec3(0), false);
-    std::vector<Vec3> scratch;
-    const auto dirs = r.directions(400, scratch);
-    ASSERT_EQ(dirs.size(), 400u);
-    // Cosine-weighted over the hemisphere: the mean of cos is 2/3 and the
-    // share within 60 degrees of the normal is sin^2(60) = 0.75.
-    double meanCos = 0;
-    int within60 = 0;
-    Vec3 sum(0);
-    for (const Vec3& d : dirs) {
-        EXPECT_NEAR(length(d), 1.0, 1e-12);
-        EXPECT_GE(d.z, 0.0);
-        meanCos += d.z / dirs.size();
-        within60 += d.z > 0.5;
-        sum = sum + d;
-    }
-    EXPECT_NEAR(meanCos, 2.0 / 3.0, 0.005);
-    EXPECT_NEAR(within60 / 400.0, 0.75, 0.005);
-    EXPECT_NEAR(sum.x / 400, 0.0, 0.01);
-    EXPECT_NEAR(sum.y / 400, 0.0, 0.01);
-    // Deeper bounces shoot half as many rays, from sets made once.
-    EXPECT_EQ(r.directions(200, scratch).size(), 200u);
-    EXPECT_EQ(r.directions(37, scratch).size(), 37u);
+namespace {
+
+render::RadiositySample sampleAt(const Vec3& p, const Vec3& n, double irradiance, double radius,
+                                 int depth) {
+    render::RadiositySample s;
+    s.point = p;
+    s.normal = n;
+    s.irradiance = RGB(irradiance);
+    s.radius = radius;
+    s.depth = depth;
+    return s;
 }
 
-TEST(Radiosity, LookupsBlendNearbySamplesAndAskForNewOnes) {
+}  // namespace
+
+// The pool of directions (the second value of `count`): samples take their
+// rays from it in turn, `count` at a time; each sample's set is
+// cosine-weighted and evenly spread on its own, consecutive sets differ,
+// and a pool of `count` gives every sample the same set.
+TEST(Radiosity, EverySampleShootsAnEvenCosineWeightedSet) {
+    for (const size_t start : {size_t{0}, size_t{35}, size_t{70}}) {
+        double meanCos = 0;
+        int within60 = 0;
+        Vec3 sum(0);
+        for (int i = 0; i < 35; ++i) {
+            const Vec3 d = render::Radiosity::direction(i, 35, start);
+            EXPECT_NEAR(length(d), 1.0, 1e-12);
+            EXPECT_GE(d.z, 0.0);
+            meanCos += d.z / 35;
+            within60 += d.z > 0.5;
+            sum = sum + d;
+        }
+        // The mean of cos is 2/3; the share within 60 degrees is 0.75.
+        EXPECT_NEAR(meanCos, 2.0 / 3.0, 0.002) << start;
+        EXPECT_NEAR(within60 / 35.0, 0.75, 0.5 / 35) << start;
+        EXPECT_NEAR(sum.x / 35, 0.0, 0.02) << start;
+        EXPECT_NEAR(sum.y / 35, 0.0, 0.02) << start;
+    }
+    EXPECT_GT(
+        length(render::Radiosity::direction(3, 35, 0) - render::Radiosity::direction(3, 35, 35)),
+        0.01);
+    // Samples take consecutive runs of the pool, each depth its own turn.
+    scene::RadiositySettings set;
+    set.count = 35;
+    set.directionPool = 100;
+    render::Radiosity shared(set, Vec3(0), false);
+    render::RadiosityTask task(shared, true, true);
+    EXPECT_EQ(task.takeDirections(0, 35), 0u);
+    EXPECT_EQ(task.takeDirections(0, 35), 35u);
+    EXPECT_EQ(task.takeDirections(1, 17), 0u);
+    EXPECT_EQ(task.takeDirections(0, 35), 70u);
+    EXPECT_EQ(task.takeDirections(0, 35), 5u);
+    // A pool as large as count: every sample starts at 0, the same set.
+    set.directionPool = 35;
+    render::Radiosity single(set, Vec3(0), false);
+    render::RadiosityTask one(single, true, true);
+    EXPECT_EQ(one.takeDirections(0, 35), 0u);
+    EXPECT_EQ(one.takeDirections(0, 35), 0u);
+}
+
+// povray 3.7's settings per bounce: rays halve (at least 5), the error
+// bound and reuse limits double, the weight wanted before reusing falls.
+TEST(Radiosity, DepthSettingsFollowPovray) {
+    scene::RadiositySettings set;
+    set.count = 35;
+    set.nearestCount = 5;
+    set.recursionLimit = 4;
+    const render::Radiosity r(set, Vec3(0), false);
+    EXPECT_EQ(r.depth(0).rays, 35);
+    EXPECT_EQ(r.depth(1).rays, 17);
+    EXPECT_EQ(r.depth(2).rays, 8);
+    EXPECT_EQ(r.depth(3).rays, 5);
+    EXPECT_EQ(r.depth(0).reuseWeight, 5);
+    EXPECT_EQ(r.depth(1).reuseWeight, 2);
+    EXPECT_EQ(r.depth(2).reuseWeight, 1);
+    EXPECT_DOUBLE_EQ(r.depth(2).boundFactor, 4);
+    EXPECT_DOUBLE_EQ(r.depth(1).maximumReuse, 2 * set.maximumReuse);
+}
+
+TEST(Radiosity, LookupsWeighNearbySamplesAndAskForNewOnes) {
     scene::RadiositySettings set;
     set.errorBound = 1.0;
     set.lowErrorFactor = 0.5;
-    set.nearestCount = 2;
+    set.nearestCount = 5;
+    set.recursionLimit = 3;
     render::Radiosity r(set, Vec3(0, 10, 0), false);
     render::RadiosityTask pretrace(r, true, true);
     const Vec3 up(0, 1, 0);
-    pretrace.add({Vec3(0, 0, 0), up, RGB(1.0), 1.0, 0});
-    // Within error_bound * low_error_factor of one sample: one found, not
-    // enough while pretracing (nearest_count 2), enough in the final pass.
-    EXPECT_EQ(pretrace.interpolate(Vec3(0.3, 0, 0), up, 0).found, 1);
-    EXPECT_TRUE(pretrace.wantsSample(1, 0));
-    render::RadiosityTask final(r, false, false);
-    EXPECT_FALSE(final.wantsSample(1, 0));
-    EXPECT_TRUE(final.wantsSample(0, 0));
-    // Too far, facing away, or gathered deeper: not used.
+    pretrace.add(sampleAt(Vec3(0, 0, 0), up, 1.0, 1.0, 0));
+    // Pretrace: bound error_bound * low_error_factor, weights linear.
+    const auto near = pretrace.interpolate(Vec3(0.3, 0, 0), up, 0);
+    EXPECT_EQ(near.found, 1);
+    EXPECT_NEAR(near.weight, 1 - 0.3 / 0.5, 1e-12);
+    // Weight 0.4 is under a quarter of nearest_count: gather more.
+    EXPECT_TRUE(pretrace.wantsSample(near, 0));
     EXPECT_EQ(pretrace.interpolate(Vec3(0.6, 0, 0), up, 0).found, 0);
+    // Final pass, top level: the smooth weight; any weight is reused.
+    render::RadiosityTask final(r, false, false);
+    const auto far = final.interpolate(Vec3(0.8, 0, 0), up, 0);
+    EXPECT_NEAR(far.weight, 2 * 0.2 * 0.2, 1e-12);
+    EXPECT_FALSE(final.wantsSample(far, 0));
+    EXPECT_TRUE(final.wantsSample({}, 0));
+    EXPECT_NEAR(final.interpolate(Vec3(0.3, 0, 0), up, 0).weight, 1 - 2 * 0.3 * 0.3, 1e-12);
+    // The normals' divergence counts twice its root: cos 0.98 adds 0.2828.
+    const Vec3 tilted = normalize(Vec3(std::sqrt(1 - 0.98 * 0.98), 0.98, 0));
+    const double t = 2 * std::sqrt(0.02);
+    EXPECT_NEAR(final.interpolate(Vec3(0, 0, 0), tilted, 0).weight, 1 - 2 * t * t, 1e-9);
+    // Facing away, or lying behind the sample's surface: not used.
     EXPECT_EQ(final.interpolate(Vec3(0.3, 0, 0), Vec3(0, -1, 0), 0).found, 0);
-    pretrace.add({Vec3(0.2, 0, 0), up, RGB(0.0), 1.0, 1});
-    EXPECT_EQ(final.interpolate(Vec3(0.1, 0, 0), up, 0).found, 1);
-    // A lookup one bounce deep uses only samples gathered as deep (a
-    // shallower sample holds more bounces than the lookup may see).
-    const auto deeper = final.interpolate(Vec3(0.1, 0, 0), up, 1);
-    EXPECT_EQ(deeper.found, 1);
-    EXPECT_EQ(deeper.irradiance.r, 0.0);
+    EXPECT_EQ(final.interpolate(Vec3(0.2, -0.2, 0), up, 0).found, 0);
+    // A lookup light that matters little (weight under 1/4) widens the bound.
+    EXPECT_EQ(final.interpolate(Vec3(1.1, 0, 0), up, 0, 1.0).found, 0);
+    EXPECT_EQ(final.interpolate(Vec3(1.1, 0, 0), up, 0, 0.05).found, 1);
+    // Deeper lookups use only samples as deep, reuse with less weight.
+    EXPECT_EQ(final.interpolate(Vec3(0.1, 0, 0), up, 1).found, 0);
+    EXPECT_TRUE(pretrace.wantsSample({RGB(0.0), 1, 0.4}, 1));
+    EXPECT_FALSE(pretrace.wantsSample({RGB(0.0), 1, 0.5}, 1));
+    EXPECT_FALSE(pretrace.wantsSample({RGB(0.0), 1, 0.25}, 2));
+    // A deeper sample is filed in a cell sized for an eighth of its reach:
+    // lookups outside the (widened) cell never see it, even well within
+    // the error bound. Radius 1, depth 1: reach 1 * 2 / 8 = 0.25, cell
+    // [10, 11) seen from (9.5, 11.5).
+    pretrace.add(sampleAt(Vec3(10, 0, 0), up, 0.5, 1.0, 1));
+    EXPECT_EQ(final.interpolate(Vec3(11.4, 0, 0), up, 1).found, 1);
+    EXPECT_EQ(final.interpolate(Vec3(9.4, 0, 0), up, 1).found, 0);
     // A final-pass block keeps its samples to itself.
-    final.add({Vec3(5, 0, 0), up, RGB(0.5), 1.0, 0});
+    final.add(sampleAt(Vec3(5, 0, 0), up, 0.5, 1.0, 0));
     EXPECT_EQ(final.interpolate(Vec3(5, 0, 0), up, 0).found, 1);
     EXPECT_EQ(render::RadiosityTask(r, false, false).interpolate(Vec3(5, 0, 0), up, 0).found, 0);
 }
@@ -195,9 +265,12 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / "frameray_radiosity_file_test";
     fs::create_directories(dir);
-    const std::vector<render::RadiositySample> samples = {
-        {Vec3(0.1, -2.0 / 3.0, 1e-9), Vec3(0, 1, 0), RGB(0.25, 1.0 / 7.0, 3.0), 0.123456789, 0},
-        {Vec3(-5, 4, 3), normalize(Vec3(1, 1, 1)), RGB(0.0), 1e6, 2}};
+    std::vector<render::RadiositySample> samples = {
+        sampleAt(Vec3(0.1, -2.0 / 3.0, 1e-9), Vec3(0, 1, 0), 0.25, 0.123456789, 0),
+        sampleAt(Vec3(-5, 4, 3), normalize(Vec3(1, 1, 1)), 0.0, 1e6, 2)};
+    samples[0].irradiance.g = 1.0 / 7.0;
+    samples[0].nearest = 0.0123;
+    samples[0].toNearest = normalize(Vec3(1, 2, 3));
     render::writeRadiosityFile(dir / "a.rca", samples);
     const std::vector<render::RadiositySample> back = render::readRadiosityFile(dir / "a.rca");
     ASSERT_EQ(back.size(), samples.size());
@@ -209,6 +282,8 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
         EXPECT_EQ(back[i].irradiance.g, samples[i].irradiance.g);
         EXPECT_EQ(back[i].radius, samples[i].radius);
         EXPECT_EQ(back[i].depth, samples[i].depth);
+        EXPECT_EQ(back[i].nearest, samples[i].nearest);
+        EXPECT_EQ(back[i].toNearest.y, samples[i].toNearest.y);
     }
     // A povray cache file (its sample lines start with C and a depth).
     std::ofstream(dir / "pov.rca") << "C2\t-1.29\t-0.9\t0.76\t7ffe7f\t0.0985\t0.0988\t0.1161\n";
@@ -219,7 +294,7 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
         EXPECT_NE(std::string(e.what()).find("not a frameray radiosity cache file"),
                   std::string::npos);
     }
-    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 1\n0 1 2 3\n";
+    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 2\n0 1 2 3\n";
     EXPECT_THROW(render::readRadiosityFile(dir / "bad.rca"), std::runtime_error);
     EXPECT_THROW(render::readRadiosityFile(dir / "missing.rca"), std::runtime_error);
     fs::remove_all(dir);
