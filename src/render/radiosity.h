@@ -155,6 +155,11 @@ class RadiosityTask {
     size_t takeDirections(int depth, size_t count);
 
     RadiosityCounts counts;
+    // Top-level lookups since the counters were last reset, and the
+    // weights they found (before gathering) times 4: the adaptive
+    // pretrace's coverage (nearest_count's second value) is their ratio.
+    long topQueries = 0;
+    double topCoverage = 0;
 
   private:
     Radiosity& radiosity_;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <utility>
+#include <vector>
 
 #include "util/sample_random.h"
 
@@ -19,32 +22,89 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
     // aligned across the image, each at its cell's centre moved by up to a
     // pixel (hashed from the pass and the spot). At +WT1 povray lets every
     // lookup see every sample gathered so far, whichever tile gathered it.
+    //
+    // A tile (or, with nearest_count's second value, each part of it) goes
+    // on to the next pass unless its lookups found no diffuse surface, or
+    // (adaptive pretrace) their weights already cover the second value on
+    // average; a part of at least 9 spots may be split for the next pass
+    // into parts of at least 4 x 4 of its spots (povray 3.7's rules).
     constexpr int kTile = 32;
     const int tilesX = (window.x1 - window.x0 + kTile - 1) / kTile;
     const int tilesY = (window.y1 - window.y0 + kTile - 1) / kTile;
-    int pass = 0;
-    for (double fraction = set.pretraceStart;; fraction *= 0.5, ++pass) {
+    const int coverage = set.nearestCountPretrace;
+    struct TileState {
+        int partsX = 1, partsY = 1;
+        std::deque<std::pair<int, int>> open{{0, 0}};  // parts still refining
+    };
+    std::vector<TileState> tiles(static_cast<size_t>(tilesX * tilesY));
+    std::vector<double> sizes;
+    for (double fraction = set.pretraceStart;; fraction *= 0.5) {
         const double step = std::max(1.0, std::max(fraction, set.pretraceEnd) * width);
+        sizes.push_back(step);
+        if (fraction <= set.pretraceEnd * (1 + 1e-9) || step <= 1.0) break;
+    }
+    for (size_t pass = 0; pass < sizes.size(); ++pass) {
+        const double step = sizes[pass];
+        const double nextStep = pass + 1 < sizes.size() ? sizes[pass + 1] : step;
         const double jitter = std::min(1.0, step / 2);
         const double offset = (step - 1) / 2;
-        task.setTile(pass + 1, 0);
+        task.setTile(static_cast<int>(pass) + 1, 0);
         for (int tile = 0; tile < tilesX * tilesY; ++tile) {
+            TileState& state = tiles[static_cast<size_t>(tile)];
+            if (state.open.empty()) continue;
             const int tx0 = window.x0 + (tile % tilesX) * kTile;
             const int ty0 = window.y0 + (tile / tilesX) * kTile;
-            const int tx1 = std::min(tx0 + kTile, window.x1);
-            const int ty1 = std::min(ty0 + kTile, window.y1);
-            for (double gy = std::ceil((ty0 - 0.5) / step) * step; gy < ty1; gy += step)
-                for (double gx = std::ceil((tx0 - 0.5) / step) * step; gx < tx1; gx += step) {
-                    SampleRandom r(gx, gy, static_cast<std::uint64_t>(pass) + 0x5ad105ULL);
-                    const double x = std::clamp(gx + offset + jitter * (2 * r.next() - 1) + 0.5,
-                                                double(window.x0), window.x1 - 1e-6);
-                    const double y = std::clamp(gy + offset + jitter * (2 * r.next() - 1) + 0.5,
-                                                double(window.y0), window.y1 - 1e-6);
-                    if (const std::optional<scene::Ray> ray = camera.generate(x, y))
-                        tracer.traceCamera(*ray, rays, nullptr, &task);
+            const int tw = std::min(tx0 + kTile, window.x1) - tx0;
+            const int th = std::min(ty0 + kTile, window.y1) - ty0;
+            const auto spots = [](int extent, double size) {
+                return static_cast<int>(static_cast<unsigned>((extent + size - 1) / size));
+            };
+            const int divideX =
+                coverage ? std::max(1, spots(tw, nextStep) / (state.partsX * 4)) : 1;
+            const int divideY =
+                coverage ? std::max(1, spots(th, nextStep) / (state.partsY * 4)) : 1;
+            const double startX = std::ceil((tx0 - 0.5) / step) * step;
+            const double startY = std::ceil((ty0 - 0.5) / step) * step;
+            const size_t parts = state.open.size();
+            for (size_t part = 0; part < parts; ++part) {
+                const auto [px, py] = state.open.front();
+                state.open.pop_front();
+                const double x0 = tx0 + double(tw) * px / state.partsX;
+                const double x1 = x0 + double(tw) / state.partsX;
+                const double y0 = ty0 + double(th) * py / state.partsY;
+                const double y1 = y0 + double(th) / state.partsY;
+                task.topQueries = 0;
+                task.topCoverage = 0;
+                int traced = 0;
+                for (double gy = startY; gy < y1; gy += step) {
+                    if (gy < y0) continue;
+                    for (double gx = startX; gx < x1; gx += step) {
+                        if (gx < x0) continue;
+                        SampleRandom r(gx, gy, static_cast<std::uint64_t>(pass) + 0x5ad105ULL);
+                        const double x = std::clamp(gx + offset + jitter * (2 * r.next() - 1) + 0.5,
+                                                    double(window.x0), window.x1 - 1e-6);
+                        const double y = std::clamp(gy + offset + jitter * (2 * r.next() - 1) + 0.5,
+                                                    double(window.y0), window.y1 - 1e-6);
+                        ++traced;
+                        if (const std::optional<scene::Ray> ray = camera.generate(x, y))
+                            tracer.traceCamera(*ray, rays, nullptr, &task);
+                    }
                 }
+                bool again = true;
+                if (traced >= 9) {
+                    if (task.topQueries == 0)
+                        again = false;
+                    else if (coverage && task.topCoverage / task.topQueries >= coverage)
+                        again = false;
+                }
+                if (again)
+                    for (int dy = 0; dy < divideY; ++dy)
+                        for (int dx = 0; dx < divideX; ++dx)
+                            state.open.emplace_back(px * divideX + dx, py * divideY + dy);
+            }
+            state.partsX *= divideX;
+            state.partsY *= divideY;
         }
-        if (fraction <= set.pretraceEnd * (1 + 1e-9) || step <= 1.0) break;
     }
     counts += task.counts;
 }

@@ -30,6 +30,10 @@ RGB Tracer::radiosityLight(const Vec3& p, const Vec3& n, const scene::Object& ob
     // 3.7, no ambient either).
     if (depth >= set.recursionLimit) return RGB(0.0);
     const RadiosityTask::Lookup found = task->interpolate(p, n, depth, weight);
+    if (depth == 0) {
+        ++task->topQueries;
+        task->topCoverage += 4 * found.weight;
+    }
     if (!task->wantsSample(found, depth)) {
         ++task->counts.reused;
         return found.irradiance;

@@ -221,6 +221,39 @@ TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
     EXPECT_GT(stats.rays.camera, 0u);
 }
 
+// nearest_count's second value (adaptive pretrace): a part of a tile stops
+// refining once its lookups' weights cover that value on average. povray
+// 3.7 on a room at 160x120, nearest_count 10 against 10, 4: 4234 against
+// 3025 samples (0.71); frameray 4284 against 3115 (0.73). Here, smaller.
+TEST(Radiosity, AdaptivePretraceStopsWhereCovered) {
+    auto scene = [](const std::string& nearest) {
+        return "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { count 40 "
+               "nearest_count " +
+               nearest +
+               " error_bound 0.8 pretrace_start 0.16 pretrace_end 0.01 } }\n"
+               "camera { location <0, 1.5, -2.8> look_at <0, 1, 0> angle 70 }\n"
+               "light_source { <0.5, 2.6, -0.5> rgb 1 }\n"
+               "box { <-2, 0, -3>, <2, 3, 2> inverse pigment { rgb 0.85 } finish { ambient 0 "
+               "diffuse 0.75 } }\n"
+               "sphere { <-0.4, 0.5, 0.3>, 0.5 pigment { rgb <0.9, 0.8, 0.3> } finish { "
+               "ambient 0 diffuse 0.75 } }\n";
+    };
+    render::FrameStats full, adaptive;
+    auto render = [&](const std::string& text, render::FrameStats& stats) {
+        test_support::ParsedScene parsed(text);
+        render::World world(parsed.scene);
+        render::FrameSettings settings;
+        settings.width = 160;
+        settings.height = 120;
+        tbb::task_arena arena(1);
+        arena.execute([&] { render::renderFrame(world, settings, stats); });
+    };
+    render(scene("10"), full);
+    render(scene("10, 4"), adaptive);
+    EXPECT_LT(adaptive.radiosity.samples, full.radiosity.samples * 0.85);
+    EXPECT_GT(adaptive.radiosity.samples, full.radiosity.samples * 0.5);
+}
+
 TEST(RadiosityParser, SettingsRangesAndWarnings) {
     test_support::ParsedScene p(
         "global_settings { radiosity { count 50, 400 nearest_count 6, 2 error_bound 0.4 "
