@@ -160,8 +160,9 @@ Vec3 PolynomialSurface::normal(const Vec3& p) const {
 
 void PolynomialSurface::allHits(const Ray& ray, double tMin, double tMax,
                                 std::vector<double>& ts) const {
-    // Cull only: tMin and tMax stay as they are for the solver, so a ray
-    // that meets the box gets the same roots as without it.
+    // Rays that miss the box miss the surface; for the others the box's
+    // stretch of the ray is where the roots are searched (Sturm's
+    // bisection then starts there instead of at the Cauchy bound).
     double boxMin = tMin, boxMax = tMax;
     if (!bounds_.surface.clip(ray, boxMin, boxMax)) return;
     const detail::RecentredRay rr(ray);
@@ -185,14 +186,19 @@ void PolynomialSurface::allHits(const Ray& ray, double tMin, double tMax,
     Poly c;
     std::fill_n(c.begin(), order_ + 1, 0.0);
     Poly xy;
+    int xyI = -1, xyJ = -1;  // the powers xy holds (terms in povray's order share them in runs)
     for (const Term& t : terms_) {
-        const Poly& px = powers[0][t.i];
-        const Poly& py = powers[1][t.j];
         const Poly& pz = powers[2][t.k];
         // xy = px * py (degree i + j), then times pz.
-        std::fill_n(xy.begin(), t.i + t.j + 1, 0.0);
-        for (int m = 0; m <= t.i; ++m)
-            for (int n = 0; n <= t.j; ++n) xy[m + n] += px[m] * py[n];
+        if (t.i != xyI || t.j != xyJ) {
+            const Poly& px = powers[0][t.i];
+            const Poly& py = powers[1][t.j];
+            std::fill_n(xy.begin(), t.i + t.j + 1, 0.0);
+            for (int m = 0; m <= t.i; ++m)
+                for (int n = 0; n <= t.j; ++n) xy[m + n] += px[m] * py[n];
+            xyI = t.i;
+            xyJ = t.j;
+        }
         for (int m = 0; m <= t.i + t.j; ++m)
             for (int n = 0; n <= t.k; ++n) c[m + n] += t.coefficient * xy[m] * pz[n];
     }
@@ -205,8 +211,8 @@ void PolynomialSurface::allHits(const Ray& ray, double tMin, double tMax,
     if (scale == 0) return;
     while (degree > 0 && std::fabs(c[degree]) <= 1e-12 * scale) --degree;
     if (degree == 0) return;
-    keepRoots(std::span<const double>(c.data(), degree + 1), rr.sOf(tMin), rr.sOf(tMax), sturm_, rr,
-              tMin, tMax, ts);
+    keepRoots(std::span<const double>(c.data(), degree + 1), rr.sOf(boxMin), rr.sOf(boxMax), sturm_,
+              rr, tMin, tMax, ts);
 }
 
 }  // namespace frameray::scene

@@ -64,8 +64,8 @@ class Torus final : public Shape {
 // sum is negative. Unbounded for povray; bounded here when the polynomial
 // is provably positive far away (polynomial_bounds.h), so that closed
 // surfaces (tori written as quartics) join the BVH and rays that miss
-// their box skip the root solving. The box only culls: the roots of a ray
-// that meets it are solved exactly as for an unbounded surface.
+// their box skip the root solving; the others search for roots only along
+// the box's stretch of the ray.
 class PolynomialSurface final : public Shape {
   public:
     // One monomial with its coefficient.
