@@ -223,8 +223,10 @@ Vec3 HeightField::flatNormal(const Vec3& p) const {
     const int k = std::clamp(static_cast<int>(std::floor(fz)), 0, height_ - 2);
     const Vec3 c00 = corner(i, k), c10 = corner(i + 1, k), c01 = corner(i, k + 1),
                c11 = corner(i + 1, k + 1);
+    // Upward (+y), as povray's trace() reports it, whichever side a ray
+    // comes from.
     const Vec3 n =
-        triangleOf(fx - i, fz - k) == 0 ? cross(c10 - c00, c01 - c00) : cross(c11 - c10, c01 - c10);
+        triangleOf(fx - i, fz - k) == 0 ? cross(c01 - c00, c10 - c00) : cross(c01 - c10, c11 - c10);
     return normalize(n);
 }
 

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <vector>
+
+#include "util/lattice_hash.h"
 
 namespace frameray::scene {
 
@@ -33,6 +37,35 @@ double distScale(double dist, double e) {
     return e == 0 ? 1.0 : std::pow(dist, e);
 }
 
+// povray's table of warp random numbers: the first 32768 outputs of the
+// default-seeded 32-bit Mersenne Twister, each divided by 2^32 (measured:
+// black_hole repeat + turbulence places the holes as povray 3.7 does).
+const std::vector<double>& warpRandoms() {
+    static const std::vector<double> table = [] {
+        std::mt19937 engine;
+        std::vector<double> t(32768);
+        for (double& v : t) v = static_cast<double>(engine()) / 4294967296.0;
+        return t;
+    }();
+    return table;
+}
+
+// The centre of the black hole whose repeat cell holds p.
+Vec3 blackHoleCenter(const Warp& w, const Vec3& p) {
+    if (!w.repeats) return w.center;
+    int block[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i)
+        if (w.repeat[i] >= 1e-10) block[i] = latticeFloor(p[i] / w.repeat[i]);
+    Vec3 c = w.center;
+    if (w.jittered) {
+        const std::vector<double>& r = warpRandoms();
+        const auto seed = static_cast<std::size_t>(latticeHash3(block[0], block[1], block[2]));
+        for (int i = 0; i < 3; ++i) c[i] += r[(seed + i) % r.size()] * w.jitter[i];
+    }
+    for (int i = 0; i < 3; ++i) c[i] += w.repeat[i] * block[i];
+    return c;
+}
+
 }  // namespace
 
 Vec3 Warp::apply(const Vec3& p) const {
@@ -55,10 +88,10 @@ Vec3 Warp::apply(const Vec3& p) const {
             return q + offset * block;
         }
         case Kind::BlackHole: {
-            const Vec3 d = p - center;
+            const Vec3 d = p - blackHoleCenter(*this, p);
             const double r = length(d);
             if (r >= radius) return p;
-            const double k = strength * std::pow(1.0 - r / radius, falloff);
+            const double k = std::min(1.0, std::pow((radius - r) / radius, falloff) * strength);
             return inverse ? p - d * k : p + d * k;
         }
         // Measured against povray 3.7's pattern functions: the angle about y

@@ -39,9 +39,15 @@ struct Warp {
     // BlackHole: within `radius` of `center` points move away from it by
     // (p - center) * strength * (1 - r / radius)^falloff, towards it when
     // inverse (measured from povray's pattern functions).
+    // The strength is capped at 1 (a point never moves past the centre).
+    // `repeat` (components below 1e-10 do not repeat) puts a hole in every
+    // cell of that lattice, the cell's hole moved by `jitter` times povray's
+    // random numbers for the cell.
     Vec3 center{0, 0, 0};
     double radius = 1, strength = 1, falloff = 2;
     bool inverse = false;
+    Vec3 repeat{0, 0, 0}, jitter{0, 0, 0};
+    bool repeats = false, jittered = false;
     // Mapping warps: the unit orientation (default z), dist_exp (0: the
     // angles are not scaled by the distance), toroidal's major_radius and
     // planar's distance.

@@ -374,12 +374,19 @@ Value Reader::parseTernary() {
 // without ';' before a loop's #end; running the #end here would start the
 // next iteration inside this expression, one nesting level per iteration,
 // and a `#declare J = I` on the next line would not see I yet.
+// An operand that came out of a macro (`#declare A = MakeArray()`) ends
+// where the macro's #end returns to the declaration: that #end runs, the
+// directive after it does not (povray binds A first).
 const Token& Reader::peekAfterOperand() {
-    const Token& t = rawPeek();
-    if (t.is(Sym::Hash) && declareValue_.grouping == 0 &&
-        declareValue_.cursorDepth == static_cast<int>(cursors_.size()))
-        return t;
-    return peek();
+    for (;;) {
+        const Token& t = rawPeek();
+        if (!t.is(Sym::Hash) || declareValue_.grouping != 0 || cursors_.back().inDirective)
+            return peek();
+        const int depth = static_cast<int>(cursors_.size());
+        if (declareValue_.cursorDepth == depth) return t;
+        if (declareValue_.cursorDepth > depth || declareValue_.cursorDepth <= 0) return peek();
+        runDirective();
+    }
 }
 
 Value Reader::parseLogical() {

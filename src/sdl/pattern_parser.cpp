@@ -972,12 +972,26 @@ static scene::Warp parseWarp(BuildContext& c) {
             } else if (t.is(Keyword::kw_inverse)) {
                 r.next();
                 w.inverse = true;
-            } else if (t.is(Keyword::kw_repeat) || t.is(Keyword::kw_turbulence)) {
-                r.unsupported(t, fmt::format("'{}' in warp {{ black_hole }}", t.text));
+            } else if (t.is(Keyword::kw_repeat)) {
+                r.next();
+                w.repeat = r.parseVec3();
+                w.repeats = true;
+            } else if (t.is(Keyword::kw_turbulence)) {
+                // The jitter of each repeated hole (povray: only with repeat).
+                r.next();
+                w.jitter = r.parseVec3();
+                w.jittered = true;
             } else {
                 break;
             }
         }
+        // Along a repeated axis povray keeps the hole clear of the cell's
+        // lower faces: a centre closer to them than the radius moves up to
+        // it (measured: <0, 0, 0>, 0.5 repeat <2, 1.5, 0> centres the holes
+        // at <0.5, 0.5, 0> of each cell; the upper faces cut the hole).
+        if (w.repeats)
+            for (int i = 0; i < 3; ++i)
+                if (w.repeat[i] >= 1e-10 && w.center[i] < w.radius) w.center[i] = w.radius;
     } else if (kind.is(Keyword::kw_cylindrical) || kind.is(Keyword::kw_spherical) ||
                kind.is(Keyword::kw_toroidal)) {
         // cylindrical | spherical | toroidal [orientation V] [dist_exp E]

@@ -39,6 +39,12 @@ constexpr std::array<std::uint16_t, 8192> makeLatticeHash() {
 
 inline constexpr std::array<std::uint16_t, 8192> kLatticeHash = detail::makeLatticeHash();
 
+// POV-Ray's hash of an integer lattice point (each coordinate's low 12
+// bits, two's complement).
+constexpr int latticeHash3(int a, int b, int c) {
+    return kLatticeHash[kLatticeHash[kLatticeHash[a & 0xFFF] ^ (b & 0xFFF)] ^ (c & 0xFFF)];
+}
+
 // A coordinate truncated to a lattice index as x86 truncation does it: a
 // value beyond int's range, or NaN, gives INT_MIN (what POV-Ray's and our
 // own builds computed; the plain C++ conversion is undefined there, and a
