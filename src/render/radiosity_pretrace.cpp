@@ -86,8 +86,14 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
                         const double y = std::clamp(gy + offset + jitter * (2 * r.next() - 1) + 0.5,
                                                     double(window.y0), window.y1 - 1e-6);
                         ++traced;
-                        if (const std::optional<scene::Ray> ray = camera.generate(x, y))
+                        // A mesh_camera's pixel has its own rays (none, one
+                        // or several); every other projection one.
+                        if (std::vector<scene::Ray> meshRays; camera.meshRays(x, y, meshRays)) {
+                            for (const scene::Ray& ray : meshRays)
+                                tracer.traceCamera(ray, rays, nullptr, &task);
+                        } else if (const std::optional<scene::Ray> ray = camera.generate(x, y)) {
                             tracer.traceCamera(*ray, rays, nullptr, &task);
+                        }
                     }
                 }
                 bool again = true;

@@ -88,8 +88,8 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                     if (meshRays.empty()) return mean;
                     for (const scene::Ray& r : meshRays) {
                         double transmit = 0;
-                        mean.rgb +=
-                            tracer.traceCamera(r, rays, settings.alpha ? &transmit : nullptr);
+                        mean.rgb += tracer.traceCamera(
+                            r, rays, settings.alpha ? &transmit : nullptr, blockRadiosity);
                         mean.transmit += transmit;
                     }
                     const double n = static_cast<double>(meshRays.size());

@@ -218,6 +218,12 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
     // even that of the hollow containers around it (measured: a solid glass
     // sphere inside a sphere of emitting media hides the media behind it).
     if (!media_ || !state.inside.allHollow()) return color;
+    // Radiosity rays (and the rays continuing them) see no media unless the
+    // radiosity block says `media on` (measured: a shell of emitting media
+    // around a radiosity room, as camera/mesh_camera's demos use to give
+    // reflections something to show, leaves povray's indirect light
+    // unchanged).
+    if (state.radiosity.ray && !radiosity_->settings().media) return color;
     MediaSet set;
     // The region the ray entered first comes first: its media's sampling
     // settings are used (measured with povray 3.7: two overlapping boxes
