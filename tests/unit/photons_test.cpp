@@ -95,8 +95,9 @@ TEST(PhotonsSyntax, BlocksParse) {
     EXPECT_DOUBLE_EQ(g.radius, 1);
     EXPECT_DOUBLE_EQ(g.mediaRadiusMultiplier, 4);
     ASSERT_EQ(p.scene.lights.size(), 1u);
-    EXPECT_FALSE(p.scene.lights[0].photons.refraction);
-    EXPECT_TRUE(p.scene.lights[0].photons.reflection);  // untouched: on
+    using scene::PhotonToggle;
+    EXPECT_EQ(p.scene.lights[0].photons.refraction, PhotonToggle::Off);
+    EXPECT_EQ(p.scene.lights[0].photons.reflection, PhotonToggle::Unset);  // untouched
     EXPECT_TRUE(p.scene.lights[0].photons.areaLight);
     ASSERT_EQ(p.scene.objects.size(), 2u);
     const scene::Object& u = *p.scene.objects[0];
@@ -104,9 +105,35 @@ TEST(PhotonsSyntax, BlocksParse) {
     EXPECT_FALSE(u.photons.splitUnion);
     EXPECT_FALSE(u.photons.collect);
     // The children inherit the union's block.
-    EXPECT_TRUE(u.children[0]->photons.refraction);
+    EXPECT_EQ(u.children[0]->photons.refraction, PhotonToggle::On);
     EXPECT_FALSE(u.children[1]->photons.collect);
     EXPECT_TRUE(p.scene.objects[1]->photons.passThrough);
+}
+
+TEST(PhotonsSyntax, MediaPhotons) {
+    test_support::ParsedScene two("global_settings { photons { spacing 0.1 media 100, 2 } }");
+    ASSERT_TRUE(two.scene.globals.photons);
+    EXPECT_EQ(two.scene.globals.photons->mediaMaxSteps, 100);
+    EXPECT_DOUBLE_EQ(two.scene.globals.photons->mediaFactor, 2);
+    test_support::ParsedScene one("global_settings { photons { spacing 0.1 media 50 } }");
+    EXPECT_EQ(one.scene.globals.photons->mediaMaxSteps, 50);
+    EXPECT_DOUBLE_EQ(one.scene.globals.photons->mediaFactor, 1);
+    test_support::ParsedScene none("global_settings { photons { spacing 0.1 } }");
+    EXPECT_EQ(none.scene.globals.photons->mediaMaxSteps, 0);
+}
+
+// povray 3.7's on/off flags: an object refracts (reflects) a light's
+// photons when one of them says on and neither says off.
+TEST(PhotonsSyntax, TogglesCombineAsPovray) {
+    using scene::photonsActive;
+    using scene::PhotonToggle;
+    EXPECT_FALSE(photonsActive(PhotonToggle::Unset, PhotonToggle::Unset));
+    EXPECT_TRUE(photonsActive(PhotonToggle::On, PhotonToggle::Unset));
+    EXPECT_TRUE(photonsActive(PhotonToggle::Unset, PhotonToggle::On));
+    EXPECT_TRUE(photonsActive(PhotonToggle::On, PhotonToggle::On));
+    EXPECT_FALSE(photonsActive(PhotonToggle::On, PhotonToggle::Off));
+    EXPECT_FALSE(photonsActive(PhotonToggle::Off, PhotonToggle::On));
+    EXPECT_FALSE(photonsActive(PhotonToggle::Unset, PhotonToggle::Off));
 }
 
 TEST(PhotonsSyntax, PovrayChecks) {
@@ -115,14 +142,14 @@ TEST(PhotonsSyntax, PovrayChecks) {
               "");
     EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 photons { refraction } }"), "");
     EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 split_union off }"), "");
-    // Media photons and photon map files stop at their keyword.
-    for (const char* item : {"media 100, 2", "save_file \"a.ph\"", "load_file \"a.ph\""}) {
+    // Photon map files stop at their keyword.
+    for (const char* item : {"save_file \"a.ph\"", "load_file \"a.ph\""}) {
         const std::string error = test_support::parseErrorOf(
             std::string("global_settings { photons { spacing 0.1 ") + item + " } }");
         EXPECT_NE(error.find("not supported yet"), std::string::npos) << item << ": " << error;
     }
     test_support::ParsedScene p("sphere { 0, 1 photons { target refraction on pass_through } }");
-    EXPECT_FALSE(p.scene.objects[0]->photons.refraction);
+    EXPECT_EQ(p.scene.objects[0]->photons.refraction, scene::PhotonToggle::Off);
     EXPECT_NE(p.sink.warnings.find("Cannot use pass_through with refraction & target"),
               std::string::npos);
 }
@@ -209,6 +236,8 @@ TEST(Photons, MemoryInSequenceJson) {
     stats.memoryBytes = 721460;
     stats.gatherRadius = 0.25;
     stats.spacing = 0.02;
+    stats.mediaStored = 900;
+    stats.mediaGatherRadius = 0.5;
     anim::FrameRecord with;
     with.number = 1;
     with.photons = stats;
@@ -218,8 +247,9 @@ TEST(Photons, MemoryInSequenceJson) {
     run.framesPlanned = 2;
     run.framesFinished = 2;
     const std::string json = anim::sequenceJson(run, {with, without}, {});
-    EXPECT_NE(json.find("\"photons\": {\"shot\": 8322, \"stored\": 16004, \"memory_bytes\": "
-                        "721460, \"gather_radius\": 0.25, \"spacing\": 0.02}"),
+    EXPECT_NE(json.find("\"photons\": {\"shot\": 8322, \"stored\": 16004, \"media_stored\": 900, "
+                        "\"memory_bytes\": 721460, \"gather_radius\": 0.25, "
+                        "\"media_gather_radius\": 0.5, \"spacing\": 0.02}"),
               std::string::npos)
         << json;
     // Only the frame that shot photons says so.
