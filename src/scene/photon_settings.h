@@ -34,7 +34,10 @@ struct PhotonSettings {
     double jitter = 0.4;     // of the angular spacing, per photon
     int maxTraceLevel = -1;  // -1: the scene's max_trace_level
     double adcBailout = -1;  // negative: the scene's adc_bailout
-    double autostop = 0;     // fraction of the target's cone shot before stopping is allowed
+    // Fraction of the target's cone shot before stopping is allowed (povray 3.7:
+    // 0.5 unless given; measured: advanced/optics.pov shoots 16971 photons at
+    // its media box, 2553 with autostop 0).
+    double autostop = 0.5;
     // expand_thresholds: read, and as in povray 3.7 (measured) no effect.
     double expandIncrease = 0.2;
     int expandMin = 40;
