@@ -277,3 +277,93 @@ TEST(Photons, AreaLightShootsFromItsGrid) {
     EXPECT_EQ(shot("area_light 4*x, 4*z, 3, 3 photons { area_light }"), 3735u);
     EXPECT_EQ(shot("area_light 4*x, 4*z, 4, 2 photons { area_light }"), 3920u);
 }
+
+namespace {
+
+// Cut-downs of advanced/optics.pov (its spotlight, far to the left,
+// through a hollow box of scattering media that is a target), with the
+// counts povray 3.7 prints ("Number of photons shot", "Surface photons
+// stored", "Media photons stored").
+const char* kOpticsBase = R"(
+    global_settings { max_trace_level 5
+      photons { spacing 0.0513 max_trace_level 9 media 100, 2 AUTOSTOP } }
+    light_source { <-150, 0.5, 0>, rgb <1.2, 1, 1.5>
+      spotlight radius 0.3 falloff 0.35 point_at <0, 0.5, 0>
+      photons { refraction on reflection on } }
+    box { <-100, -1, -100>, <100, 0, 100> pigment { rgb 0.5 } }
+)";
+const char* kMediaBox = R"(
+    box { <-7, -0.1, -3>, <6, 1, 4> hollow pigment { rgbf 1 }
+      interior { media { scattering { 1, rgb 1 extinction 0 } method 3 intervals 1 samples 4 } }
+      photons { target } }
+)";
+
+render::PhotonStats opticsStats(const std::string& objects, const char* autostop = "autostop 0") {
+    std::string text = kOpticsBase;
+    text.replace(text.find("AUTOSTOP"), 8, autostop);
+    test_support::ParsedScene p(text + objects);
+    const render::World world(p.scene);
+    return world.photons() ? world.photons()->stats() : render::PhotonStats{};
+}
+
+}  // namespace
+
+TEST(Photons, AutostopIsHalfUnlessGiven) {
+    // povray: 2553 photons shot at the media box with autostop 0, 16971
+    // without autostop (the spotlight lights only the middle of the cone).
+    EXPECT_EQ(opticsStats(kMediaBox).shot, 2553u);
+    EXPECT_EQ(opticsStats(kMediaBox, "").shot, 16971u);
+}
+
+TEST(Photons, MediaPhotonsAlongBouncedPaths) {
+    // povray: 801 surface photons and 66417 media photons (jittered; ours
+    // are hashed, the count alike within 1 %).
+    const render::PhotonStats s = opticsStats(kMediaBox);
+    EXPECT_NEAR(static_cast<double>(s.stored), 801, 801 * 0.02);
+    EXPECT_NEAR(static_cast<double>(s.mediaStored), 66417, 66417 * 0.01);
+    EXPECT_GT(s.mediaGatherRadius, 0);
+}
+
+TEST(Photons, BlackPhotonsGoOnAsPovrays) {
+    // A red mirror with a cyan filter: the cyan photon reflected inside it
+    // is black but goes on and is stored (povray: 6230 stored).
+    const char* mirror = R"(
+        box { <-0.1, -0.1, -1>, <0, 1, 1>
+          pigment { rgb <0, 1, 1> filter 1 } finish { ambient 0 diffuse 0 reflection rgb <1, 0, 0> }
+          rotate y * -202.5 translate <-1, 0, 0> photons { target } })";
+    EXPECT_NEAR(static_cast<double>(opticsStats(mirror).stored), 6230, 6230 * 0.02);
+}
+
+TEST(Photons, ReflectionWeighsTwiceAgainstAdcBailout) {
+    // A lens with reflection 0.06 reflects no photons (0.06^2 < 1/255):
+    // povray stores 1339, as with no reflection; with 0.07 it stores 2945.
+    auto lens = [](const char* reflection) {
+        return std::string(R"(sphere { 0, 1 pigment { rgb 1 filter 0.99 }
+            finish { ambient 0 diffuse 0 reflection )") +
+               reflection + R"( } interior { ior 1.33 }
+            scale <0.475, 1, 1> translate <1, 0.5, 0> photons { target } })";
+    };
+    EXPECT_NEAR(static_cast<double>(opticsStats(lens("0.06")).stored), 1339, 1339 * 0.02);
+    EXPECT_NEAR(static_cast<double>(opticsStats(lens("0.07")).stored), 2945, 2945 * 0.03);
+}
+
+TEST(Photons, CountGivesPovraysSpacing) {
+    // advanced/optics.pov's count 150000 (povray shoots 22441 photons
+    // there, as with spacing 0.0513): the media box (refraction and
+    // reflection, collecting) and two lenses (refraction only, collect
+    // off).
+    const char* lens = R"(
+        sphere { 0, 1 pigment { rgb 1 filter 0.99 } interior { ior 1.33 }
+          photons { target reflection off refraction on collect off }
+          scale <0.475, 1, 1> translate <1, 0.5, 0> }
+        sphere { 0, 1 pigment { rgb 1 filter 0.99 } interior { ior 1.33 }
+          photons { target reflection off refraction on collect off }
+          scale <0.475, 1, 1> translate <0, 0.5, -2> })";
+    std::string text = kOpticsBase;
+    text.replace(text.find("spacing 0.0513"), 14, "count 150000");
+    text.replace(text.find("AUTOSTOP"), 8, "");
+    test_support::ParsedScene p(text + kMediaBox + lens);
+    const render::World world(p.scene);
+    ASSERT_TRUE(world.photons());
+    EXPECT_NEAR(world.photons()->stats().spacing, 0.0513, 0.0005);
+}
