@@ -43,6 +43,16 @@
 // `gather` min photons lie within it the search widens once (see
 // kGatherWidening).
 //
+// Media. With `media max_steps [, factor]` a photon that has bounced
+// leaves photons along its path through scattering media (depositInMedia
+// in photons.cpp), kept in a second map; the media sampling gathers them
+// in a sphere (mediaPhotons) whose radius is estimated as povray 3.7 does
+// it and doubled. Media on a photon's way dim it.
+//
+// Weights. adc_bailout is compared with povray's ray weight, not the
+// photon's colour: a reflection counts twice, a filter by its largest
+// component, so a photon a filter turned black goes on and is stored.
+//
 // Area lights shoot from their centre, or with the light's
 // `photons { area_light }` from every point of their grid, each a light
 // of its own with its share of the colour and a spacing sqrt(size1 *
