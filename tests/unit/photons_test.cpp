@@ -345,6 +345,11 @@ TEST(Photons, ReflectionWeighsTwiceAgainstAdcBailout) {
     };
     EXPECT_NEAR(static_cast<double>(opticsStats(lens("0.06")).stored), 1339, 1339 * 0.02);
     EXPECT_NEAR(static_cast<double>(opticsStats(lens("0.07")).stored), 2945, 2945 * 0.03);
+    // A fresnel reflection counts twice too: povray stores 1634 at ior
+    // 1.5 with reflection { 0, 1 fresnel } (1366 without reflection).
+    std::string fresnel = lens("{ 0, 1 fresnel }");
+    fresnel.replace(fresnel.find("ior 1.33"), 8, "ior 1.5");
+    EXPECT_NEAR(static_cast<double>(opticsStats(fresnel).stored), 1634, 1634 * 0.06);
 }
 
 TEST(Photons, CountGivesPovraysSpacing) {
