@@ -947,6 +947,12 @@ class Run {
                 TextStream::Statistic,
                 fmt::format("frame {}: {:.2f} s, {} camera rays, {} shadow rays\n", frame.number,
                             seconds, job.stats.rays.camera, job.stats.rays.shadow));
+            if (const auto& ph = job.stats.photons)
+                log.message(TextStream::Statistic,
+                            fmt::format("frame {}: photons: {} shot, {} stored on surfaces, {} in "
+                                        "media, gather radius {:.4g} (media {:.4g})\n",
+                                        frame.number, ph->shot, ph->stored, ph->mediaStored,
+                                        ph->gatherRadius, ph->mediaGatherRadius));
             if (job.stats.rays.radiosity)
                 log.message(
                     TextStream::Statistic,

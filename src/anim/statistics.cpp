@@ -28,14 +28,16 @@ std::string jsonTests(const render::ShapeTestCounts& tests) {
     return out + "}";
 }
 
-// The photon map of a frame: photons shot and kept, the bytes the map
-// holds, the gather radius and spacing used.
+// The photon maps of a frame: photons shot, kept on surfaces and left in
+// media, the bytes the maps hold, the gather radii and spacing used.
 std::string jsonPhotons(const std::optional<render::PhotonStats>& p) {
     if (!p) return "";
     return fmt::format(
-        ", \"photons\": {{\"shot\": {}, \"stored\": {}, \"memory_bytes\": {}, "
-        "\"gather_radius\": {:.6g}, \"spacing\": {:.6g}}}",
-        p->shot, p->stored, p->memoryBytes, p->gatherRadius, p->spacing);
+        ", \"photons\": {{\"shot\": {}, \"stored\": {}, \"media_stored\": {}, "
+        "\"memory_bytes\": {}, \"gather_radius\": {:.6g}, \"media_gather_radius\": {:.6g}, "
+        "\"spacing\": {:.6g}}}",
+        p->shot, p->stored, p->mediaStored, p->memoryBytes, p->gatherRadius, p->mediaGatherRadius,
+        p->spacing);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include "render/photons.h"
 #include "util/hash.h"
 
 namespace frameray::render {
@@ -120,6 +121,7 @@ class Sampler {
     }
     Sample at(double t) const;
     RGB inScattered(const Vec3& p, const RGB* scattering) const;
+    RGB photonScattered(const Vec3& p, const RGB* scattering) const;
     // `scale`: the interval's length, which the light differences are
     // multiplied by before they are compared with aa_threshold.
     Sample segment(double a, double b, const Sample& va, const Sample& vb, int level,
@@ -148,6 +150,7 @@ class Sampler {
     uint64_t seed_ = 0;
     uint64_t& samples_;
     uint64_t& shadowRays_;
+    mutable std::vector<PhotonNeighbour> photonScratch_;
 };
 
 RGB Sampler::inScattered(const Vec3& p, const RGB* scattering) const {
@@ -180,6 +183,28 @@ RGB Sampler::inScattered(const Vec3& p, const RGB* scattering) const {
     return sum;
 }
 
+// The light media photons scatter toward the viewer at p (povray 3.7,
+// lit or not by the lights): each photon gathered around p scattered with
+// the phase function of its direction as a light's is, summed over the
+// volume of the sphere they were gathered from.
+RGB Sampler::photonScattered(const Vec3& p, const RGB* scattering) const {
+    const Photons* photons = world_->photons();
+    if (!photons || !photons->hasMediaPhotons()) return RGB(0.0);
+    const double r = photons->mediaPhotons(p, photonScratch_);
+    if (photonScratch_.empty() || !(r > 0)) return RGB(0.0);
+    RGB scattered(0.0);
+    for (size_t i = 0; i < media_.size(); ++i) scattered += scattering[i];
+    RGB sum(0.0);
+    for (const PhotonNeighbour& f : photonScratch_) {
+        // Towards where the photon came from, as a light's direction.
+        const double c = -dot(f.photon->travel(), ray_.direction);
+        double phase = 0;
+        for (const scene::Media* m : media_) phase += m->phase(c);
+        sum += f.photon->light() * (phase / double(media_.size()));
+    }
+    return sum * scattered * (3.0 / (4.0 * std::numbers::pi * r * r * r));
+}
+
 Sample Sampler::at(double t) const {
     ++samples_;
     const Vec3 p = ray_.at(t);
@@ -199,7 +224,10 @@ Sample Sampler::at(double t) const {
             scatters = true;
         }
     }
-    if (lights_ && scatters) s.light += inScattered(p, scattering.data());
+    if (lights_ && scatters) {
+        s.light += inScattered(p, scattering.data());
+        s.light += photonScattered(p, scattering.data());
+    }
     return s;
 }
 

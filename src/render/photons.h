@@ -43,6 +43,16 @@
 // `gather` min photons lie within it the search widens once (see
 // kGatherWidening).
 //
+// Media. With `media max_steps [, factor]` a photon that has bounced
+// leaves photons along its path through scattering media (depositInMedia
+// in photons.cpp), kept in a second map; the media sampling gathers them
+// in a sphere (mediaPhotons) whose radius is estimated as povray 3.7 does
+// it and doubled. Media on a photon's way dim it.
+//
+// Weights. adc_bailout is compared with povray's ray weight, not the
+// photon's colour: a reflection counts twice, a filter by its largest
+// component, so a photon a filter turned black goes on and is stored.
+//
 // Area lights shoot from their centre, or with the light's
 // `photons { area_light }` from every point of their grid, each a light
 // of its own with its share of the colour and a spacing sqrt(size1 *
@@ -66,10 +76,12 @@ namespace frameray::render {
 class World;
 
 struct PhotonStats {
-    std::uint64_t shot = 0;    // photons that left the lights
-    std::uint64_t stored = 0;  // photons kept on surfaces
+    std::uint64_t shot = 0;         // photons that left the lights
+    std::uint64_t stored = 0;       // photons kept on surfaces
+    std::uint64_t mediaStored = 0;  // photons left in media
     std::size_t memoryBytes = 0;
     double gatherRadius = 0;
+    double mediaGatherRadius = 0;
     double spacing = 0;  // the spacing used (from count when the scene gives one)
 };
 
@@ -84,25 +96,42 @@ class Photons {
     // coefficient and the pigment). `scratch` is the caller's buffer.
     RGB irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const;
 
+    // The media photons around p of a medium (into `found`, cleared
+    // first) and the radius of the sphere they were gathered from: the
+    // light they bring is the sum of their powers, each times the phase
+    // function of its direction, times the scattering there, over the
+    // sphere's volume. 0 when there are none.
+    double mediaPhotons(const Vec3& p, std::vector<PhotonNeighbour>& found) const;
+    bool hasMediaPhotons() const { return !media_.empty(); }
+
     const PhotonStats& stats() const { return stats_; }
     const PhotonMap& surfaceMap() const { return surface_; }
+    const PhotonMap& mediaMap() const { return media_; }
 
     // Whether a shadow ray from `light` stops at `primitive` whatever its
-    // filter and transmit: with photons on, a light that shoots refraction
-    // photons lights what lies behind a refracting object through the
-    // photons only (measured: the filtered shadow of a glass sphere
-    // disappears, the caustic takes its place).
+    // filter and transmit (once surface photons exist): with photons on, a
+    // light lights what lies behind a target refracting its photons
+    // through the photons only (measured: the filtered shadow of a glass
+    // sphere disappears, the caustic takes its place; povray 3.7's rule
+    // needs the target and refraction on in the object or the light, off
+    // in neither).
     static bool photonShadow(const scene::Light& light, const scene::Object& primitive) {
-        return light.photons.refraction && primitive.photons.refraction;
+        return primitive.photons.target > 0 &&
+               scene::photonsActive(primitive.photons.refraction, light.photons.refraction);
     }
 
-    Photons(PhotonMap map, const scene::PhotonSettings& settings, PhotonStats stats);
+    Photons(PhotonMap map, PhotonMap media, const scene::PhotonSettings& settings,
+            PhotonStats stats);
 
   private:
     PhotonMap surface_;
+    PhotonMap media_;
     double radius_ = 0;
+    double mediaRadius_ = 0;
     int gatherMin_ = 20;
     int gatherMax_ = 100;
+    double expandIncrease_ = 0.2;
+    int expandMin_ = 40;
     PhotonStats stats_;
 };
 

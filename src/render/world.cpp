@@ -31,9 +31,9 @@ struct TraceContext {
     const scene::Object* blocker = nullptr;
     std::uint16_t blockerKind = 0;
     bool translucent = false;
-    // The light shoots refraction photons: refracting objects stop it
-    // (render/photons.h, Photons::photonShadow).
-    bool refractorsOpaque = false;
+    // With photons on, the light whose shadow rays these are: photon
+    // targets that refract its photons stop it (Photons::photonShadow).
+    const scene::Light* photonLight = nullptr;
     scene::RayKind kind = scene::RayKind::Camera;  // which flags hide surfaces from intersect()
     std::uint64_t* tests = nullptr;                // the calling thread's counters, by kind
     // An exception must not unwind through Embree (it would be lost there
@@ -58,10 +58,10 @@ void guarded(TraceContext* ctx, Body body) {
 
 namespace {
 
-// lightPassing, except that with photons a refracting object lets nothing
-// through to a light that shoots refraction photons.
-RGB passing(const scene::Object& obj, const Vec3& p, bool refractorsOpaque) {
-    if (refractorsOpaque && obj.photons.refraction) return RGB(0.0);
+// lightPassing, except that with photons a target refracting the light's
+// photons lets nothing through to it (`photonLight`: that light, or null).
+RGB passing(const scene::Object& obj, const Vec3& p, const scene::Light* photonLight) {
+    if (photonLight && Photons::photonShadow(*photonLight, obj)) return RGB(0.0);
     return lightPassing(obj, p);
 }
 
@@ -154,7 +154,7 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
         const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
         scene::SurfaceHit h;
         if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
-        if (!passing(*h.primitive, ctx->ray->at(h.t), ctx->refractorsOpaque).isBlack()) {
+        if (!passing(*h.primitive, ctx->ray->at(h.t), ctx->photonLight).isBlack()) {
             // Light may pass here: keep searching for an opaque crossing.
             ctx->translucent = true;
             return;
@@ -341,7 +341,7 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
 }
 
 World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double tMax,
-                                     ThreadState& state, bool refractorsOpaque) const {
+                                     ThreadState& state, const scene::Light* photonLight) const {
     Occlusion found;
     std::uint64_t* tests = state.tests.data();
     for (size_t i = 0; i < unbounded_.size(); ++i) {
@@ -349,7 +349,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
         ++tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
         if (!obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) continue;
-        if (passing(*h.primitive, ray.at(h.t), refractorsOpaque).isBlack()) {
+        if (passing(*h.primitive, ray.at(h.t), photonLight).isBlack()) {
             found.blocker = {obj, unboundedKinds_[i]};
             return found;
         }
@@ -364,7 +364,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
     ctx.hitObject = nullptr;
     ctx.kind = scene::RayKind::Shadow;
     ctx.tests = tests;
-    ctx.refractorsOpaque = refractorsOpaque;
+    ctx.photonLight = photonLight;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     if (ctx.error) std::rethrow_exception(ctx.error);
@@ -374,7 +374,7 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
 }
 
 bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
-    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local(), false);
+    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local(), nullptr);
     return o.blocker.object || o.translucent;
 }
 
@@ -414,7 +414,8 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
 RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
                          const scene::Light* light, SolidSpans* solid) const {
     ThreadState& state = tests_.local();
-    const bool refractorsOpaque = photons_ && light && light->photons.refraction;
+    // povray stops such shadow rays only once surface photons exist.
+    const scene::Light* photonLight = photons_ && !photons_->surfaceMap().empty() ? light : nullptr;
     // povray's shadow cache: the object that last blocked this light is
     // tried first, since neighbouring points are usually shadowed by the
     // same object. A hit that lets no light through settles the ray.
@@ -426,12 +427,12 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
         ++state.tests[cached->kind];
         scene::SurfaceHit h;
         if (cached->object->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h) &&
-            passing(*h.primitive, ray.at(h.t), refractorsOpaque).isBlack())
+            passing(*h.primitive, ray.at(h.t), photonLight).isBlack())
             return RGB(0.0);
     }
     // Most shadow rays are either clear or blocked by something opaque:
     // one any-hit search settles both.
-    const Occlusion o = findOccluder(ray, tMin, tMax, state, refractorsOpaque);
+    const Occlusion o = findOccluder(ray, tMin, tMax, state, photonLight);
     if (o.blocker.object) {
         if (cached) *cached = o.blocker;
         return RGB(0.0);
@@ -522,7 +523,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
         crossFading(*hit.object, p, hit.t);
         crossMedia(*hit.object, p, hit.t);
         crossSolid(*hit.object, p, hit.t);
-        const RGB through = passing(*hit.object, p, refractorsOpaque);
+        const RGB through = passing(*hit.object, p, photonLight);
         if (through.isBlack()) return RGB(0.0);
         passed *= through * fakeCaustics(*hit.object, p, ray.direction);
         if (passed.isBlack()) return passed;

@@ -140,7 +140,7 @@ class World {
     };
     // One any-hit search of (tMin, tMax) for a crossing that stops the light.
     Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax, ThreadState& state,
-                           bool refractorsOpaque) const;
+                           const scene::Light* photonLight) const;
 
     std::vector<std::string> kindNames_;
     mutable tbb::enumerable_thread_specific<ThreadState, tbb::cache_aligned_allocator<ThreadState>,

@@ -5,9 +5,11 @@
 // checked against povray 3.7 (gather and expand_thresholds need both
 // values, radius takes up to four with any left out, count wins over
 // spacing whatever their order, refraction/reflection/collect need a
-// value). Media photons and photon map files (save_file, load_file) stop
-// as not supported yet.
+// value). Photon map files (save_file, load_file) stop as not supported
+// yet.
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "sdl/builders.h"
 
@@ -38,9 +40,11 @@ void parseSettings(Reader& r, std::string_view where, Setting&& setting) {
 }
 
 // refraction and reflection, alike in objects and lights.
-bool parseOpticsSetting(Reader& r, const Token& t, bool& refraction, bool& reflection) {
+bool parseOpticsSetting(Reader& r, const Token& t, scene::PhotonToggle& refraction,
+                        scene::PhotonToggle& reflection) {
     if (t.kw != Keyword::kw_refraction && t.kw != Keyword::kw_reflection) return false;
-    (t.kw == Keyword::kw_refraction ? refraction : reflection) = r.parseFloat() != 0;
+    (t.kw == Keyword::kw_refraction ? refraction : reflection) =
+        r.parseFloat() != 0 ? scene::PhotonToggle::On : scene::PhotonToggle::Off;
     return true;
 }
 
@@ -62,8 +66,10 @@ void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
                 s.gatherMax = static_cast<int>(r.parseFloat());
                 break;
             case Keyword::kw_media:
-                // Photons are neither stored in media nor gathered there yet.
-                r.unsupported(t, "photons in media (global photons 'media')");
+                // media max_steps [, factor]
+                s.mediaMaxSteps = std::max(0, static_cast<int>(r.parseFloat()));
+                if (r.accept(Sym::Comma)) s.mediaFactor = r.parseFloat();
+                break;
             case Keyword::kw_jitter:
                 s.jitter = r.parseFloat();
                 break;
@@ -126,7 +132,7 @@ void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& p, const Token& b
     // warns whether or not refraction was asked for).
     if (p.passThrough && p.target > 0) {
         r.warn(block, "Cannot use pass_through with refraction & target. Turning off refraction.");
-        p.refraction = false;
+        p.refraction = scene::PhotonToggle::Off;
     }
 }
 

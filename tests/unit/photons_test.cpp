@@ -95,8 +95,9 @@ TEST(PhotonsSyntax, BlocksParse) {
     EXPECT_DOUBLE_EQ(g.radius, 1);
     EXPECT_DOUBLE_EQ(g.mediaRadiusMultiplier, 4);
     ASSERT_EQ(p.scene.lights.size(), 1u);
-    EXPECT_FALSE(p.scene.lights[0].photons.refraction);
-    EXPECT_TRUE(p.scene.lights[0].photons.reflection);  // untouched: on
+    using scene::PhotonToggle;
+    EXPECT_EQ(p.scene.lights[0].photons.refraction, PhotonToggle::Off);
+    EXPECT_EQ(p.scene.lights[0].photons.reflection, PhotonToggle::Unset);  // untouched
     EXPECT_TRUE(p.scene.lights[0].photons.areaLight);
     ASSERT_EQ(p.scene.objects.size(), 2u);
     const scene::Object& u = *p.scene.objects[0];
@@ -104,9 +105,35 @@ TEST(PhotonsSyntax, BlocksParse) {
     EXPECT_FALSE(u.photons.splitUnion);
     EXPECT_FALSE(u.photons.collect);
     // The children inherit the union's block.
-    EXPECT_TRUE(u.children[0]->photons.refraction);
+    EXPECT_EQ(u.children[0]->photons.refraction, PhotonToggle::On);
     EXPECT_FALSE(u.children[1]->photons.collect);
     EXPECT_TRUE(p.scene.objects[1]->photons.passThrough);
+}
+
+TEST(PhotonsSyntax, MediaPhotons) {
+    test_support::ParsedScene two("global_settings { photons { spacing 0.1 media 100, 2 } }");
+    ASSERT_TRUE(two.scene.globals.photons);
+    EXPECT_EQ(two.scene.globals.photons->mediaMaxSteps, 100);
+    EXPECT_DOUBLE_EQ(two.scene.globals.photons->mediaFactor, 2);
+    test_support::ParsedScene one("global_settings { photons { spacing 0.1 media 50 } }");
+    EXPECT_EQ(one.scene.globals.photons->mediaMaxSteps, 50);
+    EXPECT_DOUBLE_EQ(one.scene.globals.photons->mediaFactor, 1);
+    test_support::ParsedScene none("global_settings { photons { spacing 0.1 } }");
+    EXPECT_EQ(none.scene.globals.photons->mediaMaxSteps, 0);
+}
+
+// povray 3.7's on/off flags: an object refracts (reflects) a light's
+// photons when one of them says on and neither says off.
+TEST(PhotonsSyntax, TogglesCombineAsPovray) {
+    using scene::photonsActive;
+    using scene::PhotonToggle;
+    EXPECT_FALSE(photonsActive(PhotonToggle::Unset, PhotonToggle::Unset));
+    EXPECT_TRUE(photonsActive(PhotonToggle::On, PhotonToggle::Unset));
+    EXPECT_TRUE(photonsActive(PhotonToggle::Unset, PhotonToggle::On));
+    EXPECT_TRUE(photonsActive(PhotonToggle::On, PhotonToggle::On));
+    EXPECT_FALSE(photonsActive(PhotonToggle::On, PhotonToggle::Off));
+    EXPECT_FALSE(photonsActive(PhotonToggle::Off, PhotonToggle::On));
+    EXPECT_FALSE(photonsActive(PhotonToggle::Unset, PhotonToggle::Off));
 }
 
 TEST(PhotonsSyntax, PovrayChecks) {
@@ -115,14 +142,14 @@ TEST(PhotonsSyntax, PovrayChecks) {
               "");
     EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 photons { refraction } }"), "");
     EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 split_union off }"), "");
-    // Media photons and photon map files stop at their keyword.
-    for (const char* item : {"media 100, 2", "save_file \"a.ph\"", "load_file \"a.ph\""}) {
+    // Photon map files stop at their keyword.
+    for (const char* item : {"save_file \"a.ph\"", "load_file \"a.ph\""}) {
         const std::string error = test_support::parseErrorOf(
             std::string("global_settings { photons { spacing 0.1 ") + item + " } }");
         EXPECT_NE(error.find("not supported yet"), std::string::npos) << item << ": " << error;
     }
     test_support::ParsedScene p("sphere { 0, 1 photons { target refraction on pass_through } }");
-    EXPECT_FALSE(p.scene.objects[0]->photons.refraction);
+    EXPECT_EQ(p.scene.objects[0]->photons.refraction, scene::PhotonToggle::Off);
     EXPECT_NE(p.sink.warnings.find("Cannot use pass_through with refraction & target"),
               std::string::npos);
 }
@@ -209,6 +236,8 @@ TEST(Photons, MemoryInSequenceJson) {
     stats.memoryBytes = 721460;
     stats.gatherRadius = 0.25;
     stats.spacing = 0.02;
+    stats.mediaStored = 900;
+    stats.mediaGatherRadius = 0.5;
     anim::FrameRecord with;
     with.number = 1;
     with.photons = stats;
@@ -218,8 +247,9 @@ TEST(Photons, MemoryInSequenceJson) {
     run.framesPlanned = 2;
     run.framesFinished = 2;
     const std::string json = anim::sequenceJson(run, {with, without}, {});
-    EXPECT_NE(json.find("\"photons\": {\"shot\": 8322, \"stored\": 16004, \"memory_bytes\": "
-                        "721460, \"gather_radius\": 0.25, \"spacing\": 0.02}"),
+    EXPECT_NE(json.find("\"photons\": {\"shot\": 8322, \"stored\": 16004, \"media_stored\": 900, "
+                        "\"memory_bytes\": 721460, \"gather_radius\": 0.25, "
+                        "\"media_gather_radius\": 0.5, \"spacing\": 0.02}"),
               std::string::npos)
         << json;
     // Only the frame that shot photons says so.
@@ -246,4 +276,99 @@ TEST(Photons, AreaLightShootsFromItsGrid) {
     EXPECT_EQ(shot("area_light 4*x, 4*z, 3, 3"), 3728u);
     EXPECT_EQ(shot("area_light 4*x, 4*z, 3, 3 photons { area_light }"), 3735u);
     EXPECT_EQ(shot("area_light 4*x, 4*z, 4, 2 photons { area_light }"), 3920u);
+}
+
+namespace {
+
+// Cut-downs of advanced/optics.pov (its spotlight, far to the left,
+// through a hollow box of scattering media that is a target), with the
+// counts povray 3.7 prints ("Number of photons shot", "Surface photons
+// stored", "Media photons stored").
+const char* kOpticsBase = R"(
+    global_settings { max_trace_level 5
+      photons { spacing 0.0513 max_trace_level 9 media 100, 2 AUTOSTOP } }
+    light_source { <-150, 0.5, 0>, rgb <1.2, 1, 1.5>
+      spotlight radius 0.3 falloff 0.35 point_at <0, 0.5, 0>
+      photons { refraction on reflection on } }
+    box { <-100, -1, -100>, <100, 0, 100> pigment { rgb 0.5 } }
+)";
+const char* kMediaBox = R"(
+    box { <-7, -0.1, -3>, <6, 1, 4> hollow pigment { rgbf 1 }
+      interior { media { scattering { 1, rgb 1 extinction 0 } method 3 intervals 1 samples 4 } }
+      photons { target } }
+)";
+
+render::PhotonStats opticsStats(const std::string& objects, const char* autostop = "autostop 0") {
+    std::string text = kOpticsBase;
+    text.replace(text.find("AUTOSTOP"), 8, autostop);
+    test_support::ParsedScene p(text + objects);
+    const render::World world(p.scene);
+    return world.photons() ? world.photons()->stats() : render::PhotonStats{};
+}
+
+}  // namespace
+
+TEST(Photons, AutostopIsHalfUnlessGiven) {
+    // povray: 2553 photons shot at the media box with autostop 0, 16971
+    // without autostop (the spotlight lights only the middle of the cone).
+    EXPECT_EQ(opticsStats(kMediaBox).shot, 2553u);
+    EXPECT_EQ(opticsStats(kMediaBox, "").shot, 16971u);
+}
+
+TEST(Photons, MediaPhotonsAlongBouncedPaths) {
+    // povray: 801 surface photons and 66417 media photons (jittered; ours
+    // are hashed, the count alike within 1 %).
+    const render::PhotonStats s = opticsStats(kMediaBox);
+    EXPECT_NEAR(static_cast<double>(s.stored), 801, 801 * 0.02);
+    EXPECT_NEAR(static_cast<double>(s.mediaStored), 66417, 66417 * 0.01);
+    EXPECT_GT(s.mediaGatherRadius, 0);
+}
+
+TEST(Photons, BlackPhotonsGoOnAsPovrays) {
+    // A red mirror with a cyan filter: the cyan photon reflected inside it
+    // is black but goes on and is stored (povray: 6230 stored).
+    const char* mirror = R"(
+        box { <-0.1, -0.1, -1>, <0, 1, 1>
+          pigment { rgb <0, 1, 1> filter 1 } finish { ambient 0 diffuse 0 reflection rgb <1, 0, 0> }
+          rotate y * -202.5 translate <-1, 0, 0> photons { target } })";
+    EXPECT_NEAR(static_cast<double>(opticsStats(mirror).stored), 6230, 6230 * 0.02);
+}
+
+TEST(Photons, ReflectionWeighsTwiceAgainstAdcBailout) {
+    // A lens with reflection 0.06 reflects no photons (0.06^2 < 1/255):
+    // povray stores 1339, as with no reflection; with 0.07 it stores 2945.
+    auto lens = [](const char* reflection) {
+        return std::string(R"(sphere { 0, 1 pigment { rgb 1 filter 0.99 }
+            finish { ambient 0 diffuse 0 reflection )") +
+               reflection + R"( } interior { ior 1.33 }
+            scale <0.475, 1, 1> translate <1, 0.5, 0> photons { target } })";
+    };
+    EXPECT_NEAR(static_cast<double>(opticsStats(lens("0.06")).stored), 1339, 1339 * 0.02);
+    EXPECT_NEAR(static_cast<double>(opticsStats(lens("0.07")).stored), 2945, 2945 * 0.03);
+    // A fresnel reflection counts twice too: povray stores 1634 at ior
+    // 1.5 with reflection { 0, 1 fresnel } (1366 without reflection).
+    std::string fresnel = lens("{ 0, 1 fresnel }");
+    fresnel.replace(fresnel.find("ior 1.33"), 8, "ior 1.5");
+    EXPECT_NEAR(static_cast<double>(opticsStats(fresnel).stored), 1634, 1634 * 0.06);
+}
+
+TEST(Photons, CountGivesPovraysSpacing) {
+    // advanced/optics.pov's count 150000 (povray shoots 22441 photons
+    // there, as with spacing 0.0513): the media box (refraction and
+    // reflection, collecting) and two lenses (refraction only, collect
+    // off).
+    const char* lens = R"(
+        sphere { 0, 1 pigment { rgb 1 filter 0.99 } interior { ior 1.33 }
+          photons { target reflection off refraction on collect off }
+          scale <0.475, 1, 1> translate <1, 0.5, 0> }
+        sphere { 0, 1 pigment { rgb 1 filter 0.99 } interior { ior 1.33 }
+          photons { target reflection off refraction on collect off }
+          scale <0.475, 1, 1> translate <0, 0.5, -2> })";
+    std::string text = kOpticsBase;
+    text.replace(text.find("spacing 0.0513"), 14, "count 150000");
+    text.replace(text.find("AUTOSTOP"), 8, "");
+    test_support::ParsedScene p(text + kMediaBox + lens);
+    const render::World world(p.scene);
+    ASSERT_TRUE(world.photons());
+    EXPECT_NEAR(world.photons()->stats().spacing, 0.0513, 0.0005);
 }
