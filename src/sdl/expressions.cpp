@@ -300,6 +300,10 @@ std::string Reader::parseString() {
     fail(at, fmt::format("expected a string, found a {}", valueKindName(v)));
 }
 
+bool Reader::colorFollows() {
+    return isColorKeyword(peek().kw) || floatFollows();
+}
+
 bool Reader::floatFollows() {
     const Token& t = peek();
     switch (t.kind) {

@@ -24,6 +24,19 @@ Keyword lookupKeyword(std::string_view word) {
     return static_cast<Keyword>(it - kNames.begin());
 }
 
-std::string_view keywordName(Keyword kw) { return kNames[static_cast<size_t>(kw)]; }
+std::string_view keywordName(Keyword kw) {
+    return kNames[static_cast<size_t>(kw)];
+}
+
+bool isColorKeyword(Keyword kw) {
+    constexpr Keyword kColorKeywords[] = {
+        Keyword::kw_color, Keyword::kw_colour, Keyword::kw_rgb,      Keyword::kw_rgbf,
+        Keyword::kw_rgbt,  Keyword::kw_rgbft,  Keyword::kw_srgb,     Keyword::kw_srgbf,
+        Keyword::kw_srgbt, Keyword::kw_srgbft, Keyword::kw_red,      Keyword::kw_green,
+        Keyword::kw_blue,  Keyword::kw_filter, Keyword::kw_transmit,
+    };
+    return std::find(std::begin(kColorKeywords), std::end(kColorKeywords), kw) !=
+           std::end(kColorKeywords);
+}
 
 }  // namespace frameray::sdl

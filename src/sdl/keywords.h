@@ -19,4 +19,7 @@ enum class Keyword : uint16_t {
 Keyword lookupKeyword(std::string_view word);
 std::string_view keywordName(Keyword kw);
 
+// The keywords that start a colour (`rgb`, `color`, `red`, `filter`, ...).
+bool isColorKeyword(Keyword kw);
+
 }  // namespace frameray::sdl

@@ -15,20 +15,6 @@ namespace {
 
 constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in its vector checks
 
-// Keywords that start a colour where a fog expects one.
-constexpr Keyword kColorKeywords[] = {
-    Keyword::kw_color, Keyword::kw_colour, Keyword::kw_rgb,      Keyword::kw_rgbf,
-    Keyword::kw_rgbt,  Keyword::kw_rgbft,  Keyword::kw_srgb,     Keyword::kw_srgbf,
-    Keyword::kw_srgbt, Keyword::kw_srgbft, Keyword::kw_red,      Keyword::kw_green,
-    Keyword::kw_blue,  Keyword::kw_filter, Keyword::kw_transmit,
-};
-
-bool isColorKeyword(Keyword k) {
-    for (const Keyword c : kColorKeywords)
-        if (c == k) return true;
-    return false;
-}
-
 // Fog items that set its turbulence (the fog density's noise).
 constexpr Keyword kFogTurbulenceKeywords[] = {
     Keyword::kw_turbulence,

@@ -12,7 +12,10 @@ static void parseReflectionBlock(BuildContext& c, scene::Finish& f) {
     scene::Reflection& refl = f.reflection;
     const Color first = r.parseColor();
     bool twoValues = false;
-    if (r.accept(Sym::Comma)) {
+    // povray reads a second value with or without a comma before it
+    // (measured: `reflection { 0.2 0.8 }` renders as `{ 0.2, 0.8 }`;
+    // examples/gamma/gamma_showcase.pov writes `{ 0.0 1.0 fresnel on }`).
+    if (r.accept(Sym::Comma) || r.colorFollows()) {
         refl.min = first.rgb;
         refl.max = r.parseColor().rgb;
         twoValues = true;

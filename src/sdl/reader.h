@@ -82,6 +82,7 @@ class Reader {
     // [SIZE]`, `hollow [B]`...): a number, a sign, '(', '<', a numeric
     // built-in, or an identifier of a float, vector, function, spline, array.
     bool floatFollows();
+    bool colorFollows();  // a float, vector or colour expression starts here
     double parseOptionalFloat(double absent);
     bool parseOptionalBool();  // after a flag keyword; true when absent
     double toFloat(const Value& v, const Token& at);
