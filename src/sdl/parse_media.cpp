@@ -143,7 +143,6 @@ MediaPtr parseMedia(BuildContext& c) {
             case Keyword::kw_method: {
                 const int method = static_cast<int>(r.parseFloat());
                 if (method < 1 || method > 3) r.fail(t, "Unknown media sampling method.");
-                if (method != 3) r.unsupported(t, fmt::format("media method {}", method));
                 m.method = method;
                 break;
             }
@@ -212,6 +211,7 @@ MediaPtr parseMedia(BuildContext& c) {
                 r.fail(t, fmt::format("expected a media item or '}}', found {}", describeToken(t)));
         }
     }
+    m.prepareSampling();
     return std::make_shared<const scene::Media>(std::move(m));
 }
 
