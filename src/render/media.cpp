@@ -105,7 +105,7 @@ class Sampler {
                                      std::bit_cast<uint64_t>(ray.direction.z))));
     }
 
-    MediaResult run(double depth) const;
+    MediaResult run(double depth);
 
   private:
     // povray 3.7 samples several media together with the settings of the
@@ -159,7 +159,17 @@ class Sampler {
     MediaResult runAdaptive(std::span<const Piece> list) const;
     MediaResult runRegular(std::span<const Piece> list) const;
     Sample at(double t) const;
-    RGB inScattered(const Vec3& p, const RGB* scattering) const;
+    RGB inScattered(const Vec3& p, double t, const RGB* scattering) const;
+    // The stretch of the ray each scene light can light (indexed like the
+    // scene's lights): everywhere for point lights, the crossing of a spot
+    // or cylinder light's volume (a little wider) otherwise, as povray 3.7
+    // only scatters a light at the points of its lit interval. Only for
+    // rays that scatter light; empty otherwise.
+    void litRanges(double depth);
+    struct Range {
+        double from, to;
+    };
+    std::vector<Range> ranges_;
     // `scale`: the interval's length, which the light differences are
     // multiplied by before they are compared with aa_threshold.
     Sample segment(double a, double b, const Sample& va, const Sample& vb, int level,
@@ -193,14 +203,17 @@ class Sampler {
     uint64_t& shadowRays_;
 };
 
-RGB Sampler::inScattered(const Vec3& p, const RGB* scattering) const {
+RGB Sampler::inScattered(const Vec3& p, double t, const RGB* scattering) const {
     RGB sum(0.0);
     const scene::Scene& scene = world_->scene();
+    size_t index = 0;
     // A point in open space: shadow rays start right at it.
     const double selfHit =
         std::max(1e-9 * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}), 1e-300);
     for (const scene::Light& light : scene.lights) {
+        const size_t i = index++;
         if (!light.mediaInteraction) continue;
+        if (i < ranges_.size() && !(t >= ranges_[i].from && t <= ranges_[i].to)) continue;
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const RGB arriving = lightArriving(*world_, light, p, path, selfHit, quality_, shadowRays_);
@@ -242,7 +255,7 @@ Sample Sampler::at(double t) const {
             scatters = true;
         }
     }
-    if (lights_ && scatters) s.light += inScattered(p, scattering.data());
+    if (lights_ && scatters) s.light += inScattered(p, t, scattering.data());
     return s;
 }
 
@@ -423,8 +436,42 @@ MediaResult Sampler::runRegular(std::span<const Piece> list) const {
     return result;
 }
 
-MediaResult Sampler::run(double depth) const {
+void Sampler::litRanges(double depth) {
+    const std::vector<scene::Light>& lights = world_->scene().lights;
+    ranges_.assign(lights.size(), Range{-scene::kInfinity, scene::kInfinity});
+    // Points within this of an end of the crossing are still lit (light's
+    // own attenuation decides there): the skipped ones are surely dark.
+    const double margin = 1e-6 * std::max(depth, 1.0);
+    std::vector<double> cuts;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const scene::Light& light = lights[i];
+        if (!light.mediaInteraction || light.parallel) continue;
+        if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
+            continue;
+        // A cone wider than a half-space is not convex: no range.
+        if (light.kind == scene::LightKind::Spot && std::max(light.falloff, light.radius) >= 90.0)
+            continue;
+        cuts.clear();
+        cuts.push_back(0.0);
+        lightVolumeCrossings(light, ray_, depth, cuts);
+        std::sort(cuts.begin(), cuts.end());
+        cuts.push_back(depth);
+        // The volume is convex: the lit pieces between the cuts make one
+        // stretch.
+        double from = scene::kInfinity, to = -scene::kInfinity;
+        for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+            if (!(cuts[k + 1] > cuts[k])) continue;
+            if (!insideLightVolume(light, ray_.at(0.5 * (cuts[k] + cuts[k + 1])))) continue;
+            from = std::min(from, cuts[k]);
+            to = std::max(to, cuts[k + 1]);
+        }
+        ranges_[i] = from <= to ? Range{from - margin, to + margin} : Range{1.0, -1.0};
+    }
+}
+
+MediaResult Sampler::run(double depth) {
     if (!(depth > 0)) return {};
+    if (lights_ && hasVolumeLights()) litRanges(depth);
     // A light that interacts with media everywhere (a point light) makes
     // the whole stretch one lit piece, spot and cylinder volumes included;
     // otherwise spot and cylinder volumes cut it. Without either the
@@ -449,7 +496,7 @@ MediaResult integrateMedia(const World& world, const LightingQuality& quality,
                            const scene::Ray& ray, double depth, const MediaSet& set, bool lights,
                            uint64_t& samples, uint64_t& shadowRays) {
     if (set.empty()) return {};
-    const Sampler sampler(&world, quality, ray, set, lights, samples, shadowRays);
+    Sampler sampler(&world, quality, ray, set, lights, samples, shadowRays);
     return sampler.run(depth);
 }
 
@@ -457,7 +504,7 @@ RGB mediaTransmittance(const scene::Ray& ray, double depth, const MediaSet& set)
     if (set.empty()) return RGB(1.0);
     uint64_t samples = 0, shadowRays = 0;
     const LightingQuality quality;
-    const Sampler sampler(nullptr, quality, ray, set, false, samples, shadowRays);
+    Sampler sampler(nullptr, quality, ray, set, false, samples, shadowRays);
     return sampler.run(depth).transmittance;
 }
 
