@@ -156,6 +156,10 @@ MediaPtr parseMedia(BuildContext& c) {
                 if (r.accept(Sym::Comma)) m.samplesMax = static_cast<int>(r.parseFloat());
                 if (m.samplesMin < 1)
                     r.fail(t, "At least one sample per interval is needed in media.");
+                if (m.samplesMax < m.samplesMin)
+                    r.fail(t,
+                           "Maximum number of samples per interval smaller than minimum "
+                           "number.");
                 break;
             case Keyword::kw_confidence:
                 m.confidence = r.parseFloat();

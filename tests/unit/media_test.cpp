@@ -87,6 +87,10 @@ TEST(MediaParse, Errors) {
     EXPECT_NE(test_support::parseErrorOf("media { method 4 }").find("Unknown media sampling"),
               std::string::npos);
     EXPECT_EQ(test_support::parseErrorOf("media { method 1 }"), "");
+    // povray 3.7's message for samples max below min.
+    EXPECT_NE(test_support::parseErrorOf("media { samples 5, 2 }")
+                  .find("Maximum number of samples per interval smaller than minimum number."),
+              std::string::npos);
 }
 
 TEST(MediaPhase, MeasuredShapes) {
