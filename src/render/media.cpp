@@ -170,6 +170,8 @@ class Sampler {
         double from, to;
     };
     std::vector<Range> ranges_;
+    double margin_ = 0.0;
+    bool convexVolumes_ = true;  // every volume light's range is exact
     // `scale`: the interval's length, which the light differences are
     // multiplied by before they are compared with aa_threshold.
     Sample segment(double a, double b, const Sample& va, const Sample& vb, int level,
@@ -213,7 +215,8 @@ RGB Sampler::inScattered(const Vec3& p, double t, const RGB* scattering) const {
     for (const scene::Light& light : scene.lights) {
         const size_t i = index++;
         if (!light.mediaInteraction) continue;
-        if (i < ranges_.size() && !(t >= ranges_[i].from && t <= ranges_[i].to)) continue;
+        if (i < ranges_.size() && !(t >= ranges_[i].from - margin_ && t <= ranges_[i].to + margin_))
+            continue;
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const RGB arriving = lightArriving(*world_, light, p, path, selfHit, quality_, shadowRays_);
@@ -306,22 +309,44 @@ double Sampler::jittered(double t, double spacing, uint64_t index) const {
 void Sampler::pieces(double depth, std::vector<Piece>& out) const {
     std::vector<double> cuts;
     std::vector<const scene::Light*> volumes;
-    for (const scene::Light& light : world_->scene().lights) {
+    std::vector<Range> volumeRanges;
+    // With every volume's crossing known (litRanges), the pieces come from
+    // the crossings' ends; otherwise from each volume's surface crossings.
+    const bool fromRanges = convexVolumes_ && !ranges_.empty();
+    const std::vector<scene::Light>& lights = world_->scene().lights;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const scene::Light& light = lights[i];
         if (!light.mediaInteraction || light.parallel) continue;
         if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
             continue;
-        volumes.push_back(&light);
-        lightVolumeCrossings(light, ray_, depth, cuts);
+        if (!fromRanges) {
+            volumes.push_back(&light);
+            lightVolumeCrossings(light, ray_, depth, cuts);
+            continue;
+        }
+        const Range& r = ranges_[i];
+        volumeRanges.push_back(r);
+        if (r.from > 0 && r.from < depth) cuts.push_back(r.from);
+        if (r.to > 0 && r.to < depth) cuts.push_back(r.to);
     }
+    auto litAt = [&](double t) {
+        if (!fromRanges) {
+            const Vec3 mid = ray_.at(t);
+            for (const scene::Light* light : volumes)
+                if (insideLightVolume(*light, mid)) return true;
+            return false;
+        }
+        for (const Range& r : volumeRanges)
+            if (t >= r.from && t <= r.to) return true;
+        return false;
+    };
     std::sort(cuts.begin(), cuts.end());
     cuts.push_back(depth);
     std::vector<bool> lit;
     double from = 0.0;
     for (const double to : cuts) {
         if (!(to > from)) continue;
-        bool isLit = false;
-        const Vec3 mid = ray_.at(0.5 * (from + to));
-        for (const scene::Light* light : volumes) isLit = isLit || insideLightVolume(*light, mid);
+        const bool isLit = litAt(0.5 * (from + to));
         if (isLit && !lit.empty() && lit.back()) {
             // Lit pieces that touch (overlapping cones) are one piece.
             out.back().to = to;
@@ -441,7 +466,7 @@ void Sampler::litRanges(double depth) {
     ranges_.assign(lights.size(), Range{-scene::kInfinity, scene::kInfinity});
     // Points within this of an end of the crossing are still lit (light's
     // own attenuation decides there): the skipped ones are surely dark.
-    const double margin = 1e-6 * std::max(depth, 1.0);
+    margin_ = 1e-6 * std::max(depth, 1.0);
     std::vector<double> cuts;
     for (size_t i = 0; i < lights.size(); ++i) {
         const scene::Light& light = lights[i];
@@ -449,8 +474,10 @@ void Sampler::litRanges(double depth) {
         if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
             continue;
         // A cone wider than a half-space is not convex: no range.
-        if (light.kind == scene::LightKind::Spot && std::max(light.falloff, light.radius) >= 90.0)
+        if (light.kind == scene::LightKind::Spot && std::max(light.falloff, light.radius) >= 90.0) {
+            convexVolumes_ = false;
             continue;
+        }
         cuts.clear();
         cuts.push_back(0.0);
         lightVolumeCrossings(light, ray_, depth, cuts);
@@ -465,18 +492,18 @@ void Sampler::litRanges(double depth) {
             from = std::min(from, cuts[k]);
             to = std::max(to, cuts[k + 1]);
         }
-        ranges_[i] = from <= to ? Range{from - margin, to + margin} : Range{1.0, -1.0};
+        ranges_[i] = from <= to ? Range{from, to} : Range{scene::kInfinity, -scene::kInfinity};
     }
 }
 
 MediaResult Sampler::run(double depth) {
     if (!(depth > 0)) return {};
-    if (lights_ && hasVolumeLights()) litRanges(depth);
     // A light that interacts with media everywhere (a point light) makes
     // the whole stretch one lit piece, spot and cylinder volumes included;
     // otherwise spot and cylinder volumes cut it. Without either the
     // stretch is one piece (no allocation on this common path).
     const bool lit = wholeLit();
+    if ((lights_ || !lit) && hasVolumeLights()) litRanges(depth);
     std::vector<Piece> parts;
     if (!lit && hasVolumeLights()) pieces(depth, parts);
     const Piece whole{0.0, depth, wholeIntervals(lit)};
