@@ -28,6 +28,10 @@ struct Sample {
     Sample operator+(const Sample& o) const { return {light + o.light, extinction + o.extinction}; }
 };
 
+RGB expNegative(const RGB& od) {
+    return RGB(std::exp(-od.r), std::exp(-od.g), std::exp(-od.b));
+}
+
 // Where the ray [0, depth] crosses the volume a spot or cylinder light
 // lights (its falloff cone or cylinder): adds the crossings to `cuts`.
 void lightVolumeCrossings(const scene::Light& light, const scene::Ray& ray, double depth,
@@ -90,8 +94,10 @@ class Sampler {
           quality_(quality),
           ray_(ray),
           media_(set.media()),
-          settings_(*media_.front()),
-          lights_(lights && world && anyScatters()),
+          settings_(sampling(media_)),
+          aaThreshold_(smallestAaThreshold(media_)),
+          primary_(lights && world),
+          lights_(primary_ && anyScatters()),
           samples_(samples),
           shadowRays_(shadowRays) {
         seed_ = fmix64(std::bit_cast<uint64_t>(ray.origin.x) ^
@@ -100,40 +106,87 @@ class Sampler {
                                      std::bit_cast<uint64_t>(ray.direction.z))));
     }
 
-    MediaResult run(double depth) const;
+    MediaResult run(double depth);
 
   private:
+    // povray 3.7 samples several media together with the settings of the
+    // first one with the most intervals, and the smallest aa_threshold.
+    static const scene::Media& sampling(std::span<const scene::Media* const> media) {
+        const scene::Media* best = media.front();
+        for (const scene::Media* m : media)
+            if (m->intervals > best->intervals) best = m;
+        return *best;
+    }
+    static double smallestAaThreshold(std::span<const scene::Media* const> media) {
+        double t = media.front()->aaThreshold;
+        for (const scene::Media* m : media) t = std::min(t, m->aaThreshold);
+        return t;
+    }
     bool anyScatters() const {
         for (const scene::Media* m : media_)
             if (m->scatters()) return true;
         return false;
     }
-    // Whether the light and extinction are the same all along the stretch:
-    // no density and no light scattered (measured with povray 3.7: constant
-    // emitting and absorbing media are sampled over one interval whatever
-    // `intervals` says, but scattering media over the intervals asked for:
-    // advanced/abyss.pov's constant `intervals 3` Henyey-Greenstein media).
+    // Whether every media along the stretch is constant (no density).
     bool constant() const {
-        if (lights_) return false;
         for (const scene::Media* m : media_)
             if (!m->constant()) return false;
         return true;
     }
+    // Whether a light that interacts with media other than a spot or
+    // cylinder light's volume lights the whole stretch (camera and
+    // secondary rays only: shadow rays see no light).
+    bool wholeLit() const {
+        if (!primary_) return false;
+        for (const scene::Light& light : world_->scene().lights)
+            if (light.mediaInteraction &&
+                (light.parallel || (light.kind != scene::LightKind::Spot &&
+                                    light.kind != scene::LightKind::Cylinder)))
+                return true;
+        return false;
+    }
+    // The intervals of a stretch that no light volume cuts: measured with
+    // povray 3.7, constant media are sampled over one interval whatever
+    // `intervals` says unless a light interacting with media lights the
+    // stretch (even media that only emit and absorb: a point light in the
+    // scene makes `intervals 4` sample four).
+    int wholeIntervals(bool lit) const {
+        return constant() && !lit ? 1 : std::max(1, settings_.intervals);
+    }
+    struct Piece {
+        double from, to;
+        int intervals;  // -1 while a lit piece waits for its share
+    };
+    MediaResult runAdaptive(std::span<const Piece> list) const;
+    MediaResult runRegular(std::span<const Piece> list) const;
     Sample at(double t) const;
-    RGB inScattered(const Vec3& p, const RGB* scattering) const;
+    RGB inScattered(const Vec3& p, double t, const RGB* scattering) const;
     RGB photonScattered(const Vec3& p, const RGB* scattering) const;
+    // The stretch of the ray each scene light can light (indexed like the
+    // scene's lights): everywhere for point lights, the crossing of a spot
+    // or cylinder light's volume (a little wider) otherwise, as povray 3.7
+    // only scatters a light at the points of its lit interval. Only for
+    // rays that scatter light; empty otherwise.
+    void litRanges(double depth);
+    struct Range {
+        double from, to;
+    };
+    std::vector<Range> ranges_;
+    double margin_ = 0.0;
+    bool convexVolumes_ = true;  // every volume light's range is exact
     // `scale`: the interval's length, which the light differences are
     // multiplied by before they are compared with aa_threshold.
     Sample segment(double a, double b, const Sample& va, const Sample& vb, int level,
                    double scale) const;
     double jittered(double t, double spacing, uint64_t index) const;
-    struct Piece {
-        double from, to;
-        int intervals;  // -1 while a lit piece waits for its share
-    };
+    // A number in [0, 1) for the index-th draw along this ray (povray's
+    // are random).
+    double draw(uint64_t index) const {
+        return unitFromHash(fmix64(seed_ ^ fmix64(index * 0x9E3779B97F4A7C15ULL + 1)));
+    }
     void pieces(double depth, std::vector<Piece>& out) const;
     bool hasVolumeLights() const {
-        if (!lights_) return false;
+        if (!primary_) return false;
         for (const scene::Light& light : world_->scene().lights)
             if (light.mediaInteraction && !light.parallel &&
                 (light.kind == scene::LightKind::Spot || light.kind == scene::LightKind::Cylinder))
@@ -146,21 +199,27 @@ class Sampler {
     const scene::Ray& ray_;
     std::span<const scene::Media* const> media_;
     const scene::Media& settings_;
-    bool lights_;
+    double aaThreshold_;
+    bool primary_;  // a camera or secondary ray, not a shadow ray
+    bool lights_;   // primary_ and some media scatters light
     uint64_t seed_ = 0;
     uint64_t& samples_;
     uint64_t& shadowRays_;
     mutable std::vector<PhotonNeighbour> photonScratch_;
 };
 
-RGB Sampler::inScattered(const Vec3& p, const RGB* scattering) const {
+RGB Sampler::inScattered(const Vec3& p, double t, const RGB* scattering) const {
     RGB sum(0.0);
     const scene::Scene& scene = world_->scene();
+    size_t index = 0;
     // A point in open space: shadow rays start right at it.
     const double selfHit =
         std::max(1e-9 * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}), 1e-300);
     for (const scene::Light& light : scene.lights) {
+        const size_t i = index++;
         if (!light.mediaInteraction) continue;
+        if (i < ranges_.size() && !(t >= ranges_[i].from - margin_ && t <= ranges_[i].to + margin_))
+            continue;
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const RGB arriving = lightArriving(*world_, light, p, path, selfHit, quality_, shadowRays_);
@@ -225,7 +284,7 @@ Sample Sampler::at(double t) const {
         }
     }
     if (lights_ && scatters) {
-        s.light += inScattered(p, scattering.data());
+        s.light += inScattered(p, t, scattering.data());
         s.light += photonScattered(p, scattering.data());
     }
     return s;
@@ -242,10 +301,10 @@ Sample Sampler::segment(double a, double b, const Sample& va, const Sample& vb, 
                         double scale) const {
     const double m = 0.5 * (a + b);
     const Sample vm = at(m);
-    const bool left = level < settings_.aaLevel &&
-                      summedDifference(va.light, vm.light) * scale >= settings_.aaThreshold;
-    const bool right = level < settings_.aaLevel &&
-                       summedDifference(vm.light, vb.light) * scale >= settings_.aaThreshold;
+    const bool left =
+        level < settings_.aaLevel && summedDifference(va.light, vm.light) * scale >= aaThreshold_;
+    const bool right =
+        level < settings_.aaLevel && summedDifference(vm.light, vb.light) * scale >= aaThreshold_;
     if (left || right) {
         Sample sum = left ? segment(a, m, va, vm, level + 1, scale) : (va * 2.0 + vm) * (1.0 / 3.0);
         sum += right ? segment(m, b, vm, vb, level + 1, scale) : (vm + vb * 2.0) * (1.0 / 3.0);
@@ -259,75 +318,95 @@ Sample Sampler::segment(double a, double b, const Sample& va, const Sample& vb, 
 
 double Sampler::jittered(double t, double spacing, uint64_t index) const {
     if (settings_.jitter <= 0) return t;
-    const uint64_t h = fmix64(seed_ ^ fmix64(index * 0x9E3779B97F4A7C15ULL + 1));
-    const double u = unitFromHash(h);
-    return t + (u - 0.5) * settings_.jitter * spacing;
+    return t + (draw(index) - 0.5) * settings_.jitter * spacing;
 }
 
 // The pieces of [0, depth] that povray samples as separate intervals: the
 // ray is cut where it enters and leaves the volume of a spot or cylinder
-// light that scatters in the media (measured: a cylinder light across the
-// ray makes three intervals, cut at its falloff radius). Each piece gets
-// one interval, the lit ones share what `intervals` leaves beyond that
-// (measured with ratio 0.9: intervals 4 and 10 give the lit piece 2 and 8).
-// The volumes of several lights that overlap along the ray make one lit
-// piece (measured: interior/media/media1.pov's three crossing spotlights).
+// light that interacts with media (measured: a cylinder light across the
+// ray makes three intervals, cut at its falloff radius). The volumes of
+// several lights that overlap along the ray make one lit piece (measured:
+// interior/media/media1.pov's three crossing spotlights).
+//
+// The intervals are shared as povray 3.7 shares them: with `ratio` the
+// weight of a lit piece and 1 - ratio that of an unlit one, piece i gets
+// floor(weight / (sum of weights) * intervals) + 1, but no more than
+// leaves one for each piece after it (measured with ratio 0.9: intervals 4
+// and 10 give the lit middle of three pieces 2 and 8; `intervals` below
+// the number of pieces counts as that number).
 void Sampler::pieces(double depth, std::vector<Piece>& out) const {
-    const int total = constant() ? 1 : std::max(1, settings_.intervals);
     std::vector<double> cuts;
     std::vector<const scene::Light*> volumes;
-    if (lights_) {
-        for (const scene::Light& light : world_->scene().lights) {
-            if (!light.mediaInteraction || light.parallel) continue;
-            if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
-                continue;
+    std::vector<Range> volumeRanges;
+    // With every volume's crossing known (litRanges), the pieces come from
+    // the crossings' ends; otherwise from each volume's surface crossings.
+    const bool fromRanges = convexVolumes_ && !ranges_.empty();
+    const std::vector<scene::Light>& lights = world_->scene().lights;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const scene::Light& light = lights[i];
+        if (!light.mediaInteraction || light.parallel) continue;
+        if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
+            continue;
+        if (!fromRanges) {
             volumes.push_back(&light);
             lightVolumeCrossings(light, ray_, depth, cuts);
+            continue;
         }
+        const Range& r = ranges_[i];
+        volumeRanges.push_back(r);
+        if (r.from > 0 && r.from < depth) cuts.push_back(r.from);
+        if (r.to > 0 && r.to < depth) cuts.push_back(r.to);
     }
-    if (cuts.empty()) {
-        out.push_back({0.0, depth, total});
-        return;
-    }
+    auto litAt = [&](double t) {
+        if (!fromRanges) {
+            const Vec3 mid = ray_.at(t);
+            for (const scene::Light* light : volumes)
+                if (insideLightVolume(*light, mid)) return true;
+            return false;
+        }
+        for (const Range& r : volumeRanges)
+            if (t >= r.from && t <= r.to) return true;
+        return false;
+    };
     std::sort(cuts.begin(), cuts.end());
     cuts.push_back(depth);
-    double from = 0.0, litLength = 0.0;
-    int unlit = 0, lit = 0;
+    std::vector<bool> lit;
+    double from = 0.0;
     for (const double to : cuts) {
         if (!(to > from)) continue;
-        bool isLit = false;
-        const Vec3 mid = ray_.at(0.5 * (from + to));
-        for (const scene::Light* light : volumes) isLit = isLit || insideLightVolume(*light, mid);
-        if (isLit && !out.empty() && out.back().intervals < 0) {
+        const bool isLit = litAt(0.5 * (from + to));
+        if (isLit && !lit.empty() && lit.back()) {
             // Lit pieces that touch (overlapping cones) are one piece.
             out.back().to = to;
         } else {
-            out.push_back({from, to, isLit ? -1 : 1});
-            ++(isLit ? lit : unlit);
+            out.push_back({from, to, 0});
+            lit.push_back(isLit);
         }
-        if (isLit) litLength += to - from;
         from = to;
     }
-    // One interval per lit piece, and what is left shared by length.
-    const int extra = std::max(0, total - unlit - lit);
-    for (Piece& p : out) {
-        if (p.intervals > 0) continue;
-        p.intervals = 1 + static_cast<int>(
-                              std::lround(extra * (p.to - p.from) / std::max(litLength, 1e-300)));
+    if (out.size() == 1) {
+        out.front().intervals = wholeIntervals(lit.front());
+        return;
+    }
+    const int count = static_cast<int>(out.size());
+    const int total = std::max(settings_.intervals, count);
+    const double ratio = settings_.ratio;
+    double sum = 0.0;
+    for (const bool l : lit) sum += l ? ratio : 1.0 - ratio;
+    int remaining = total;
+    for (int i = 0; i < count; ++i) {
+        const double weight = lit[size_t(i)] ? ratio : 1.0 - ratio;
+        int n = static_cast<int>(weight / sum * total) + 1;
+        n = std::min(n, remaining - count + i + 1);
+        out[size_t(i)].intervals = std::max(n, 1);
+        remaining -= n;
     }
 }
 
-MediaResult Sampler::run(double depth) const {
+// Method 3 (see render/media.h).
+MediaResult Sampler::runAdaptive(std::span<const Piece> list) const {
     MediaResult result;
-    if (!(depth > 0)) return result;
     const int n = std::max(settings_.samplesMin, 3) / 2 + 1;
-    // Without spot or cylinder lights the whole stretch is one piece (no
-    // allocation on this common path).
-    std::vector<Piece> parts;
-    const Piece whole{0.0, depth, constant() ? 1 : std::max(1, settings_.intervals)};
-    if (hasVolumeLights()) pieces(depth, parts);
-    const std::span<const Piece> list =
-        parts.empty() ? std::span<const Piece>(&whole, 1) : std::span<const Piece>(parts);
     uint64_t index = 0;
     for (const Piece& piece : list) {
         const double intervalLength = (piece.to - piece.from) / piece.intervals;
@@ -343,13 +422,122 @@ MediaResult Sampler::run(double depth) const {
                 const Sample mean = segment(a, b, va, vb, 1, intervalLength);
                 result.light += result.transmittance * mean.light * weight;
                 const RGB od = mean.extinction * weight;
-                result.transmittance *= RGB(std::exp(-od.r), std::exp(-od.g), std::exp(-od.b));
+                result.transmittance *= expNegative(od);
                 a = b;
                 va = vb;
             }
         }
     }
     return result;
+}
+
+// Methods 1 and 2 (see render/media.h).
+MediaResult Sampler::runRegular(std::span<const Piece> list) const {
+    const int minSamples = std::max(1, settings_.samplesMin);
+    const int maxSamples = std::max(minSamples, settings_.samplesMax);
+    // A shadow ray through constant media needs one sample per interval.
+    const int first = !primary_ && constant() ? 1 : minSamples;
+    const bool more = primary_ && maxSamples > minSamples &&
+                      settings_.sampleThreshold.size() >= size_t(maxSamples);
+    RGB depthSoFar(0.0);  // optical depth of the intervals before
+    MediaResult result;
+    uint64_t index = 0;
+    for (const Piece& piece : list) {
+        const double length = (piece.to - piece.from) / piece.intervals;
+        for (int i = 0; i < piece.intervals; ++i) {
+            const double start = piece.from + i * length;
+            RGB light(0.0), light2(0.0), od(0.0);
+            int count = 0;
+            // A sample at `u` (0 at the interval's start, 1 at its end)
+            // stands for the whole interval, its light dimmed by its own
+            // extinction over the distance from the interval's start.
+            auto take = [&](double u) {
+                const double d = u * length;
+                const Sample s = at(start + d);
+                od += s.extinction * length;
+                const RGB e = s.light * length * expNegative(s.extinction * d);
+                light += e;
+                light2 += e * e;
+                ++count;
+            };
+            for (int j = 0; j < first; ++j) {
+                const double u = settings_.method == 2
+                                     ? (j + 0.5 + draw(index++) * settings_.jitter) / minSamples
+                                     : draw(index++);
+                take(u);
+            }
+            // The confidence test: more random samples while the variance
+            // of the mean light exceeds the threshold for the count so far.
+            if (more && count < maxSamples) {
+                for (;;) {
+                    const RGB mean = light * (1.0 / count);
+                    const RGB variance = (light2 * (1.0 / count) - mean * mean) * (1.0 / count);
+                    const double limit = settings_.sampleThreshold[size_t(count - 1)];
+                    if (std::fabs(variance.r) < limit && std::fabs(variance.g) < limit &&
+                        std::fabs(variance.b) < limit)
+                        break;
+                    take(draw(index++));
+                    if (count > maxSamples) break;
+                }
+            }
+            const double share = 1.0 / count;
+            result.light += light * share * expNegative(depthSoFar);
+            depthSoFar += od * share;
+        }
+    }
+    result.transmittance = expNegative(depthSoFar);
+    return result;
+}
+
+void Sampler::litRanges(double depth) {
+    const std::vector<scene::Light>& lights = world_->scene().lights;
+    ranges_.assign(lights.size(), Range{-scene::kInfinity, scene::kInfinity});
+    // Points within this of an end of the crossing are still lit (light's
+    // own attenuation decides there): the skipped ones are surely dark.
+    margin_ = 1e-6 * std::max(depth, 1.0);
+    std::vector<double> cuts;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const scene::Light& light = lights[i];
+        if (!light.mediaInteraction || light.parallel) continue;
+        if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
+            continue;
+        // A cone wider than a half-space is not convex: no range.
+        if (light.kind == scene::LightKind::Spot && std::max(light.falloff, light.radius) >= 90.0) {
+            convexVolumes_ = false;
+            continue;
+        }
+        cuts.clear();
+        cuts.push_back(0.0);
+        lightVolumeCrossings(light, ray_, depth, cuts);
+        std::sort(cuts.begin(), cuts.end());
+        cuts.push_back(depth);
+        // The volume is convex: the lit pieces between the cuts make one
+        // stretch.
+        double from = scene::kInfinity, to = -scene::kInfinity;
+        for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+            if (!(cuts[k + 1] > cuts[k])) continue;
+            if (!insideLightVolume(light, ray_.at(0.5 * (cuts[k] + cuts[k + 1])))) continue;
+            from = std::min(from, cuts[k]);
+            to = std::max(to, cuts[k + 1]);
+        }
+        ranges_[i] = from <= to ? Range{from, to} : Range{scene::kInfinity, -scene::kInfinity};
+    }
+}
+
+MediaResult Sampler::run(double depth) {
+    if (!(depth > 0)) return {};
+    // A light that interacts with media everywhere (a point light) makes
+    // the whole stretch one lit piece, spot and cylinder volumes included;
+    // otherwise spot and cylinder volumes cut it. Without either the
+    // stretch is one piece (no allocation on this common path).
+    const bool lit = wholeLit();
+    if ((lights_ || !lit) && hasVolumeLights()) litRanges(depth);
+    std::vector<Piece> parts;
+    if (!lit && hasVolumeLights()) pieces(depth, parts);
+    const Piece whole{0.0, depth, wholeIntervals(lit)};
+    const std::span<const Piece> list =
+        parts.empty() ? std::span<const Piece>(&whole, 1) : std::span<const Piece>(parts);
+    return settings_.method == 3 ? runAdaptive(list) : runRegular(list);
 }
 
 }  // namespace
@@ -363,7 +551,7 @@ MediaResult integrateMedia(const World& world, const LightingQuality& quality,
                            const scene::Ray& ray, double depth, const MediaSet& set, bool lights,
                            uint64_t& samples, uint64_t& shadowRays) {
     if (set.empty()) return {};
-    const Sampler sampler(&world, quality, ray, set, lights, samples, shadowRays);
+    Sampler sampler(&world, quality, ray, set, lights, samples, shadowRays);
     return sampler.run(depth);
 }
 
@@ -371,7 +559,7 @@ RGB mediaTransmittance(const scene::Ray& ray, double depth, const MediaSet& set)
     if (set.empty()) return RGB(1.0);
     uint64_t samples = 0, shadowRays = 0;
     const LightingQuality quality;
-    const Sampler sampler(nullptr, quality, ray, set, false, samples, shadowRays);
+    Sampler sampler(nullptr, quality, ray, set, false, samples, shadowRays);
     return sampler.run(depth).transmittance;
 }
 

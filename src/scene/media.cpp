@@ -1,6 +1,9 @@
 #include "scene/media.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "util/chi_square.h"
 
 namespace frameray::scene {
 
@@ -47,6 +50,15 @@ void Media::transformBy(const Transform& t) {
         moved->transform(t);
         density = std::move(moved);
     }
+}
+
+void Media::prepareSampling() {
+    sampleThreshold.assign(static_cast<size_t>(std::max(samplesMax, 1)), 0.0);
+    if (samplesMax <= 1) return;
+    double t = chiSquareUpperTailInverse(samplesMax - 1, confidence);
+    t = t > 0.0 ? variance / t : variance * 1e-10;
+    for (int i = 0; i < samplesMax; ++i)
+        sampleThreshold[size_t(i)] = t * chiSquareUpperTailInverse(i + 1, confidence);
 }
 
 Pigment defaultDensity() {

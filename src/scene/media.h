@@ -41,6 +41,11 @@ struct Media {
     int aaLevel = 3;
     double aaThreshold = 0.1;
     double jitter = 0.0;
+    // Methods 1 and 2: after k samples an interval whose sample variance
+    // (per channel, of the mean) reaches sampleThreshold[k - 1] gets another
+    // one, up to samplesMax + 1 (povray 3.7's confidence test; see
+    // prepareSampling). Empty until prepareSampling runs.
+    std::vector<double> sampleThreshold;
 
     RGB absorption{0.0};
     RGB emission{0.0};
@@ -66,6 +71,13 @@ struct Media {
     double phase(double cosAngle) const;
 
     void transformBy(const Transform& t);
+    // Fills sampleThreshold from samplesMax, confidence and variance: with
+    // q(n) the chi-square value that n degrees of freedom exceed with
+    // probability `confidence`, threshold[k - 1] = variance * q(k) /
+    // q(samplesMax - 1) (variance * 1e-10 when q(samplesMax - 1) is 0);
+    // a single threshold of 0 when samplesMax is 1. Called once the media's
+    // block is read.
+    void prepareSampling();
 };
 
 using MediaList = std::vector<std::shared_ptr<const Media>>;

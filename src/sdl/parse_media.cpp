@@ -143,7 +143,6 @@ MediaPtr parseMedia(BuildContext& c) {
             case Keyword::kw_method: {
                 const int method = static_cast<int>(r.parseFloat());
                 if (method < 1 || method > 3) r.fail(t, "Unknown media sampling method.");
-                if (method != 3) r.unsupported(t, fmt::format("media method {}", method));
                 m.method = method;
                 break;
             }
@@ -157,6 +156,10 @@ MediaPtr parseMedia(BuildContext& c) {
                 if (r.accept(Sym::Comma)) m.samplesMax = static_cast<int>(r.parseFloat());
                 if (m.samplesMin < 1)
                     r.fail(t, "At least one sample per interval is needed in media.");
+                if (m.samplesMax < m.samplesMin)
+                    r.fail(t,
+                           "Maximum number of samples per interval smaller than minimum "
+                           "number.");
                 break;
             case Keyword::kw_confidence:
                 m.confidence = r.parseFloat();
@@ -212,6 +215,7 @@ MediaPtr parseMedia(BuildContext& c) {
                 r.fail(t, fmt::format("expected a media item or '}}', found {}", describeToken(t)));
         }
     }
+    m.prepareSampling();
     return std::make_shared<const scene::Media>(std::move(m));
 }
 

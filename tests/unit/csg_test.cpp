@@ -315,10 +315,12 @@ TEST(CsgSdl, PovrayErrorsAndWarnings) {
         parseError("union { sphere { 0, 1 } translate x sphere { 0, 1 } }").find("No matching }"),
         std::string::npos);
     EXPECT_NE(parseError("ovus { 1, 0.5 }").find("not supported yet: ovus"), std::string::npos);
-    // media is supported now (issue 25); method 1 still stops.
+    // media is supported, every sampling method included (issue 25).
     EXPECT_EQ(parseError("sphere { 0, 1 interior { media { } } }"), "");
-    EXPECT_NE(parseError("sphere { 0, 1 interior { media { method 1 } } }")
-                  .find("not supported yet: media method 1"),
+    EXPECT_EQ(parseError("sphere { 0, 1 interior { media { method 1 } } }"), "");
+    EXPECT_EQ(parseError("sphere { 0, 1 interior { media { method 2 } } }"), "");
+    EXPECT_NE(parseError("sphere { 0, 1 interior { media { method 4 } } }")
+                  .find("Unknown media sampling method"),
               std::string::npos);
     Parsed one(
         "union { sphere { 0, 1 } }  triangle { 0, x, 2*x }  difference { sphere { 0, 1 } triangle "

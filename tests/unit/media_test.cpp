@@ -10,6 +10,7 @@
 #include "parse_support.h"
 #include "render/world.h"
 #include "sdl/interpreter.h"
+#include "util/chi_square.h"
 
 using namespace frameray;
 
@@ -83,7 +84,12 @@ TEST(MediaParse, Errors) {
               std::string::npos);
     EXPECT_NE(test_support::parseErrorOf("media { scattering { 7, 1 } }").find("scattering"),
               std::string::npos);
-    EXPECT_NE(test_support::parseErrorOf("media { method 1 }").find("not supported yet"),
+    EXPECT_NE(test_support::parseErrorOf("media { method 4 }").find("Unknown media sampling"),
+              std::string::npos);
+    EXPECT_EQ(test_support::parseErrorOf("media { method 1 }"), "");
+    // povray 3.7's message for samples max below min.
+    EXPECT_NE(test_support::parseErrorOf("media { samples 5, 2 }")
+                  .find("Maximum number of samples per interval smaller than minimum number."),
               std::string::npos);
 }
 
@@ -171,4 +177,60 @@ TEST(MediaSampling, AdaptiveSplitAsPovray) {
     // ... and once both halves differ both are split (povray 0.0095064 at
     // B = 0.20125).
     EXPECT_NEAR(lastSubInterval(0.20125), 17.0 / 96.0, 1e-7);
+}
+
+TEST(MediaSampling, ChiSquareInverse) {
+    // Tables of the chi-square distribution: the value exceeded with
+    // probability 0.9, 0.5 and 0.1.
+    EXPECT_NEAR(chiSquareUpperTailInverse(1, 0.9), 0.015791, 1e-6);
+    EXPECT_NEAR(chiSquareUpperTailInverse(2, 0.9), 0.210721, 1e-6);
+    EXPECT_NEAR(chiSquareUpperTailInverse(1, 0.5), 0.454936, 1e-6);
+    EXPECT_NEAR(chiSquareUpperTailInverse(10, 0.1), 15.987179, 1e-5);
+    EXPECT_NEAR(chiSquareUpperTailInverse(99, 0.9), 81.449, 1e-3);
+    EXPECT_NEAR(chiSquareUpperTail(2, 0.210721), 0.9, 1e-6);
+    EXPECT_EQ(chiSquareUpperTailInverse(3, 0.0), 0.0);
+}
+
+TEST(MediaSampling, ConfidenceThresholds) {
+    // variance * q(k) / q(max - 1), q the chi-square value exceeded with
+    // probability `confidence`; 0 for one sample.
+    Parsed p(
+        "box { 0, 1 hollow interior { media { method 2 samples 2, 400 confidence 0.5 "
+        "variance 4 } } }");
+    const scene::Media& m = firstInteriorMedia(p);
+    ASSERT_EQ(m.sampleThreshold.size(), 400u);
+    EXPECT_NEAR(m.sampleThreshold[1], 0.0139209, 1e-6);
+    EXPECT_NEAR(m.sampleThreshold[398], 4.0, 1e-9);
+    Parsed one("box { 0, 1 hollow interior { media { method 1 samples 1 } } }");
+    EXPECT_EQ(firstInteriorMedia(one).sampleThreshold, std::vector<double>{0.0});
+}
+
+TEST(MediaSampling, Method2AsPovray) {
+    // emission 0.3 absorption 0.3 over 3 units, samples 2 at 1/4 and 3/4:
+    // each sample's light 0.3 * 3 dimmed by its distance from the start.
+    Parsed p(
+        "box { 0, 1 hollow interior { media { method 2 samples 2 emission 0.3 absorption "
+        "0.3 } } }");
+    const render::MediaResult r = slab(p.scene, 3.0);
+    EXPECT_NEAR(r.light.r, 0.9 * (std::exp(-0.225) + std::exp(-0.675)) / 2.0, 1e-12);
+    EXPECT_NEAR(r.transmittance.g, std::exp(-0.9), 1e-12);
+    // Two intervals (a density makes `intervals` count): the second's light
+    // dimmed by the first's optical depth.
+    Parsed q(
+        "box { 0, 1 hollow interior { media { method 2 samples 1 intervals 2 emission 0.3 "
+        "absorption 0.3 density { rgb 1 } } } }");
+    const render::MediaResult s = slab(q.scene, 3.0);
+    const double half = 0.3 * 1.5 * std::exp(-0.3 * 0.75);
+    EXPECT_NEAR(s.light.r, half + half * std::exp(-0.45), 1e-12);
+}
+
+TEST(MediaSampling, Method1MeanAsIntegral) {
+    // Random points: the mean over many samples is the interval's integral
+    // of 0.3 * 3 * exp(-0.3 d) over d in [0, 3], divided by 3.
+    Parsed p(
+        "box { 0, 1 hollow interior { media { method 1 samples 4000 emission 0.3 absorption "
+        "0.3 } } }");
+    const render::MediaResult r = slab(p.scene, 3.0);
+    EXPECT_NEAR(r.light.r, 0.9 * (1.0 - std::exp(-0.9)) / 0.9, 5e-3);
+    EXPECT_NEAR(r.transmittance.g, std::exp(-0.9), 1e-12);
 }
