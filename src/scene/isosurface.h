@@ -48,6 +48,9 @@ class Isosurface final : public Shape {
 
   private:
     bool containerInterval(const Ray& ray, double& t0, double& t1) const;
+    // Whether a ray from p along `direction` leaves the function's inside
+    // (the function grows along it).
+    bool leaves(const Vec3& p, const Vec3& direction) const;
     bool insideContainer(const Vec3& p) const;
     // How far p lies from the container's surface (for telling apart hits
     // on the container from hits on the function's surface).

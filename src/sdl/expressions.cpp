@@ -1099,10 +1099,14 @@ std::optional<Value> Reader::parseQueryBuiltin(const Token& fn) {
             expect(Sym::RParen, "')'");
             scene::SurfaceHit hit;
             Vec3 point, normal;
-            if (length(direction) > 0 &&
-                (*obj)->object->firstHit({start, direction}, 0.0, scene::kInfinity,
-                                         scene::RayKind::Any, hit)) {
-                point = start + direction * hit.t;
+            // povray traces along the unit direction (made unit by its
+            // reciprocal length): a search in steps of the ray's parameter
+            // (an isosurface's accuracy) then works in scene units.
+            const double dirLength = length(direction);
+            const scene::Ray ray{start, direction * (1.0 / dirLength)};
+            if (dirLength > 0 &&
+                (*obj)->object->firstHit(ray, 0.0, scene::kInfinity, scene::RayKind::Any, hit)) {
+                point = ray.at(hit.t);
                 normal = hit.primitive->normalAt(point);
             }
             if (!normalName.empty())

@@ -83,8 +83,12 @@ TEST(Isosurface, FindsTheSphereOfItsFunction) {
     const Ray r{{0, 0, -5}, {0, 0, 1}};
     const auto ts = hitsOf(iso, r);
     ASSERT_EQ(ts.size(), 2u);
-    EXPECT_NEAR(ts[0], 4, 1e-9);
-    EXPECT_NEAR(ts[1], 6, 1e-9);
+    // povray's hit is the far end of the last interval shorter than
+    // `accuracy` (0.001): past the root, by less than the accuracy.
+    EXPECT_GE(ts[0], 4);
+    EXPECT_LT(ts[0], 4 + s.accuracy);
+    EXPECT_GE(ts[1], 6);
+    EXPECT_LT(ts[1], 6 + s.accuracy);
     const Vec3 n = iso.normal(r.at(ts[0]));
     EXPECT_NEAR(n.z, -1, 1e-6);
     EXPECT_TRUE(iso.inside({0.5, 0, 0}));
@@ -105,16 +109,32 @@ TEST(Isosurface, ClosedContainerCapsTheInside) {
     s.boxLo = Vec3(-1);
     s.boxHi = Vec3(1);
     const Isosurface closed(s);
+    // As in povray 3.7: a ray from outside the container meets the face
+    // where it enters (where the function is inside there) and the
+    // function's crossings, not the face where it leaves.
     const Ray down{{0.2, 5, 0.1}, {0, -1, 0}};
     auto ts = hitsOf(closed, down);
+    ASSERT_EQ(ts.size(), 1u);
+    EXPECT_GE(ts[0], 5);
+    EXPECT_LT(ts[0], 5 + s.accuracy);
+    const Ray up{{0.2, -5, 0.1}, {0, 1, 0}};
+    ts = hitsOf(closed, up);
     ASSERT_EQ(ts.size(), 2u);
-    EXPECT_NEAR(ts[0], 5, 1e-9);
-    EXPECT_NEAR(ts[1], 6, 1e-12);
-    EXPECT_NEAR(closed.normal(down.at(ts[1])).y, -1, 1e-12);
+    EXPECT_NEAR(ts[0], 4, 1e-12);
+    EXPECT_NEAR(closed.normal(up.at(ts[0])).y, -1, 1e-12);
+    EXPECT_GE(ts[1], 5);
+    EXPECT_LT(ts[1], 5 + s.accuracy);
+    // A ray from inside meets the face where it leaves.
+    const Ray fromInside{{0.2, -0.5, 0.1}, {0, -1, 0}};
+    ts = hitsOf(closed, fromInside);
+    ASSERT_EQ(ts.size(), 1u);
+    EXPECT_NEAR(ts[0], 0.5, 1e-12);
+    EXPECT_NEAR(closed.normal(fromInside.at(ts[0])).y, -1, 1e-12);
     s.open = true;
     const Isosurface open(s);
     ts = hitsOf(open, down);
     ASSERT_EQ(ts.size(), 1u);
+    EXPECT_TRUE(hitsOf(open, fromInside).empty());
 }
 
 TEST(Isosurface, RayFromTheSurfaceDoesNotHitItself) {
