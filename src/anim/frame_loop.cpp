@@ -949,10 +949,13 @@ class Run {
                             seconds, job.stats.rays.camera, job.stats.rays.shadow));
             if (const auto& ph = job.stats.photons)
                 log.message(TextStream::Statistic,
-                            fmt::format("frame {}: photons: {} shot, {} stored on surfaces, {} in "
+                            fmt::format("frame {}: photons: {}, {} stored on surfaces, {} in "
                                         "media, gather radius {:.4g} (media {:.4g})\n",
-                                        frame.number, ph->shot, ph->stored, ph->mediaStored,
-                                        ph->gatherRadius, ph->mediaGatherRadius));
+                                        frame.number,
+                                        ph->loaded ? std::string("loaded from file")
+                                                   : fmt::format("{} shot", ph->shot),
+                                        ph->stored, ph->mediaStored, ph->gatherRadius,
+                                        ph->mediaGatherRadius));
             if (job.stats.rays.radiosity)
                 log.message(
                     TextStream::Statistic,

@@ -29,15 +29,16 @@ std::string jsonTests(const render::ShapeTestCounts& tests) {
 }
 
 // The photon maps of a frame: photons shot, kept on surfaces and left in
-// media, the bytes the maps hold, the gather radii and spacing used.
+// media, the bytes the maps hold, the gather radii and spacing used, and
+// whether the maps were loaded from a file (load_file) instead of shot.
 std::string jsonPhotons(const std::optional<render::PhotonStats>& p) {
     if (!p) return "";
     return fmt::format(
         ", \"photons\": {{\"shot\": {}, \"stored\": {}, \"media_stored\": {}, "
         "\"memory_bytes\": {}, \"gather_radius\": {:.6g}, \"media_gather_radius\": {:.6g}, "
-        "\"spacing\": {:.6g}}}",
+        "\"spacing\": {:.6g}, \"loaded\": {}}}",
         p->shot, p->stored, p->mediaStored, p->memoryBytes, p->gatherRadius, p->mediaGatherRadius,
-        p->spacing);
+        p->spacing, p->loaded);
 }
 
 }  // namespace

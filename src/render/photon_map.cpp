@@ -1,12 +1,24 @@
 #include "render/photon_map.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace frameray::render {
 
 PhotonMap::PhotonMap(std::vector<Photon> photons) : photons_(std::move(photons)) {
     axis_.assign(photons_.size(), 0);
     build(0, photons_.size());
+}
+
+PhotonMap PhotonMap::fromTree(std::vector<Photon> photons, std::vector<std::uint8_t> axes) {
+    if (photons.size() != axes.size())
+        throw std::invalid_argument("a photon tree needs one split axis per photon");
+    if (std::any_of(axes.begin(), axes.end(), [](std::uint8_t a) { return a > 2; }))
+        throw std::invalid_argument("a photon tree's split axis is 0, 1 or 2");
+    PhotonMap map;
+    map.photons_ = std::move(photons);
+    map.axis_ = std::move(axes);
+    return map;
 }
 
 size_t PhotonMap::memoryBytes() const {

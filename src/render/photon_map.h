@@ -38,12 +38,19 @@ class PhotonMap {
     // Takes the photons in any order; the order they are given in only
     // decides ties, so the same input gives the same tree.
     explicit PhotonMap(std::vector<Photon> photons);
+    // A tree another map built (photons() and axes() of it, as a photon
+    // file keeps them): the same order, so the same searches and the same
+    // estimated gather radius. Throws std::invalid_argument when the sizes
+    // differ or an axis is not 0, 1 or 2.
+    static PhotonMap fromTree(std::vector<Photon> photons, std::vector<std::uint8_t> axes);
 
     bool empty() const { return photons_.empty(); }
     size_t size() const { return photons_.size(); }
     // Bytes held by the map (photons and split axes).
     size_t memoryBytes() const;
     const std::vector<Photon>& photons() const { return photons_; }
+    // The split axis of the node at each index of photons().
+    const std::vector<std::uint8_t>& axes() const { return axis_; }
 
     // The `k` photons nearest to p within `maxRadius`, nearest first, into
     // `out` (cleared first). Fewer when fewer lie that close.

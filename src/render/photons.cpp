@@ -11,6 +11,7 @@
 #include "render/dispersion.h"
 #include "render/media.h"
 #include "render/optics.h"
+#include "render/photon_file.h"
 #include "render/tracer.h"
 #include "render/world.h"
 #include "util/hash.h"
@@ -775,6 +776,13 @@ std::unique_ptr<const Photons> Photons::build(const World& world) {
     const scene::Scene& scene = world.scene();
     if (!scene.globals.photons) return nullptr;
     const scene::PhotonSettings& settings = *scene.globals.photons;
+    if (settings.loaded) {
+        PhotonMaps maps = decodePhotonFile(*settings.loaded, settings.loadFile);
+        PhotonStats stats;
+        stats.loaded = true;
+        return std::make_unique<const Photons>(std::move(maps.surface), std::move(maps.media),
+                                               settings, stats);
+    }
     std::vector<Target> targets;
     for (const scene::ObjectRef& obj : scene.objects) findTargets(*obj, targets);
     PhotonStats stats;
@@ -794,8 +802,11 @@ std::unique_ptr<const Photons> Photons::build(const World& world) {
             if (const auto beam = aim(e.light, targets[ti], spacing * e.spacingScale, seed))
                 shooter.shoot(*beam, photons, media, stats.shot);
         }
-    return std::make_unique<const Photons>(PhotonMap(std::move(photons)),
-                                           PhotonMap(std::move(media)), settings, stats);
+    auto built = std::make_unique<const Photons>(PhotonMap(std::move(photons)),
+                                                 PhotonMap(std::move(media)), settings, stats);
+    if (!settings.saveFile.empty())
+        writePhotonFile(settings.saveFile, built->surfaceMap(), built->mediaMap());
+    return built;
 }
 
 RGB Photons::irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const {

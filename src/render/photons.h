@@ -53,6 +53,9 @@
 // photon's colour: a reflection counts twice, a filter by its largest
 // component, so a photon a filter turned black goes on and is stored.
 //
+// Files. save_file keeps the shot maps, load_file reuses them instead of
+// shooting (an animation shoots once); see render/photon_file.h.
+//
 // Area lights shoot from their centre, or with the light's
 // `photons { area_light }` from every point of their grid, each a light
 // of its own with its share of the colour and a spacing sqrt(size1 *
@@ -82,13 +85,18 @@ struct PhotonStats {
     std::size_t memoryBytes = 0;
     double gatherRadius = 0;
     double mediaGatherRadius = 0;
-    double spacing = 0;  // the spacing used (from count when the scene gives one)
+    double spacing = 0;   // the spacing used (from count when the scene gives one)
+    bool loaded = false;  // read from load_file, not shot
 };
 
 class Photons {
   public:
-    // Shoots the photons of world's scene, or reads them from its
-    // load_file; null when the scene does not turn photons on.
+    // Shoots the photons of world's scene (then writes them to its
+    // save_file, if any), or takes them from its load_file (render/
+    // photon_file.h; nothing is shot then, as in povray, and gathering
+    // follows the scene's settings); null when the scene does not turn
+    // photons on. Throws std::runtime_error when a file cannot be written
+    // or read.
     static std::unique_ptr<const Photons> build(const World& world);
 
     // The light photons bring to point p of a surface whose unit normal n

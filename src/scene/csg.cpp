@@ -155,12 +155,21 @@ Bounds surfaceBounds(const Object& node) {
     Bounds out;
     const size_t n = node.children.size();
     for (size_t i = 0; i < n; ++i) {
-        Bounds part = node.children[i]->surfaceBounds();
-        // A crossing survives intersection and difference only inside all
-        // the other operands.
-        if (node.op == CsgOp::Intersection || node.op == CsgOp::Difference)
+        const Object& child = *node.children[i];
+        Bounds part = child.surfaceBounds();
+        if (node.op == CsgOp::Intersection || node.op == CsgOp::Difference) {
+            // A crossing survives intersection and difference only inside all
+            // the other operands.
             for (size_t j = 0; j < n; ++j)
                 if (j != i) part = part.intersected(operandInsideBounds(node, j));
+            // An unbounded closed primitive (a plane) crosses only where its
+            // own inside region ends: a plane { -y, 0 } operand bounds the
+            // intersection from below, as povray's box of it is (measured
+            // with min_extent on lights/glassthing's target).
+            if (!part.isEmpty() && child.shape && !child.isPatch() &&
+                !child.shape->bounds().isFinite())
+                part = part.intersected(operandInsideBounds(node, i));
+        }
         if (!part.isEmpty()) out.extend(part);
     }
     // Every surviving crossing is also inside its own operand (closed),

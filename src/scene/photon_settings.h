@@ -6,6 +6,9 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
 
 namespace frameray::scene {
 
@@ -50,7 +53,18 @@ struct PhotonSettings {
     // times the surface spacing apart. 0: no media photons.
     int mediaMaxSteps = 0;
     double mediaFactor = 1.0;
+    // save_file: where the photon maps go once shot (absolute; empty: not
+    // saved). load_file: the bytes of a map saved so, read when parsed
+    // (null: shoot); loadFile names it in messages. Given both, povray
+    // loads and does not save.
+    std::string saveFile;
+    std::string loadFile;
+    std::shared_ptr<const std::string> loaded;
 };
+
+// The first bytes of frameray's photon map files (render/photon_file.h):
+// the parser refuses other files (povray's own) where load_file names them.
+inline constexpr std::string_view kPhotonFileMagic = "frameray photon map 1\n";
 
 // An object's photons { ... } block. povray's defaults: no target,
 // reflection and refraction unset (photonsActive), collect on.

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -201,6 +202,35 @@ void Reader::checkReadable(const fs::path& path, const std::string& name, const 
 void Reader::checkWritable(const fs::path& path, const std::string& name, const Token& at) {
     if (const std::string refusal = frame_.fileAccess.checkWrite(path, name); !refusal.empty())
         fail(at, refusal);
+}
+
+fs::path Reader::fileToWrite(const std::string& name, const Token& at) {
+    if (!frame_.refuseFileWrites.empty())
+        fail(at, fmt::format("'{}' is written: {}", name, frame_.refuseFileWrites));
+    checkWritable(name, name, at);
+    std::error_code ec;
+    const fs::path path = fs::absolute(name, ec);
+    if (ec) fail(at, fmt::format("cannot write '{}': {}", name, ec.message()));
+    filesWritten_.push_back(name);
+    return path;
+}
+
+std::string Reader::readWholeFile(const std::string& name, const Token& at, std::string_view what) {
+    const fs::path path = findIncludeFile(name);
+    if (path.empty())
+        fail(at, frame_.refuseFileWrites.empty()
+                     ? fmt::format("cannot read the {} '{}': {}", what, name, whyNotFound(name))
+                     : fmt::format("cannot read the {} '{}' ({}); if an earlier frame writes it, "
+                                   "{}",
+                                   what, name, whyNotFound(name), frame_.refuseFileWrites));
+    checkReadable(path, name, at);
+    const OpenedFile file = frame_.fileAccess.openForReading(path, name);
+    if (!file.ok()) fail(at, file.error());
+    std::string bytes;
+    int error = 0;
+    if (!readDescriptor(file.fd(), std::numeric_limits<size_t>::max(), bytes, error))
+        fail(at, fmt::format("cannot read the {} '{}': {}", what, name, std::strerror(error)));
+    return bytes;
 }
 
 std::string Reader::whyNotFound(const std::string& name) const {

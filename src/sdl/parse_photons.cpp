@@ -5,11 +5,15 @@
 // checked against povray 3.7 (gather and expand_thresholds need both
 // values, radius takes up to four with any left out, count wins over
 // spacing whatever their order, refraction/reflection/collect need a
-// value). Photon map files (save_file, load_file) stop as not supported
-// yet.
+// value). Photon map files: save_file names where the shot maps go,
+// load_file reads a map frameray saved (render/photon_file.h); povray's
+// own files are refused.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
+#include <optional>
+#include <string>
 
 #include "sdl/builders.h"
 
@@ -52,6 +56,8 @@ bool parseOpticsSetting(Reader& r, const Token& t, scene::PhotonToggle& refracti
 
 void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
     Reader& r = c.reader;
+    std::optional<Token> saveAt, loadAt;
+    std::string saveName;
     parseSettings(r, "global photons", [&](const Token& t) {
         switch (t.kw) {
             case Keyword::kw_spacing:
@@ -99,13 +105,34 @@ void parseGlobalPhotons(BuildContext& c, scene::PhotonSettings& s) {
                 break;
             }
             case Keyword::kw_save_file:
+                saveAt = t;
+                saveName = r.parsePathname();
+                break;
             case Keyword::kw_load_file:
-                r.unsupported(t, fmt::format("photon map files ('{}')", t.text));
+                loadAt = t;
+                s.loadFile = r.parsePathname();
+                break;
             default:
                 return false;
         }
         return true;
     });
+    // povray 3.7 (measured): given both, it warns and loads.
+    if (saveAt && loadAt) {
+        r.warn(*saveAt, "Cannot both load and save photon map. Now switching to load mode.");
+        saveAt.reset();
+    }
+    if (saveAt) s.saveFile = r.fileToWrite(saveName, *saveAt).string();
+    if (loadAt) {
+        auto bytes =
+            std::make_shared<const std::string>(r.readWholeFile(s.loadFile, *loadAt, "photon map"));
+        if (!bytes->starts_with(scene::kPhotonFileMagic))
+            r.fail(*loadAt,
+                   fmt::format("'{}' is not a frameray photon map: frameray loads only the maps it "
+                               "saves itself with save_file, not povray's",
+                               s.loadFile));
+        s.loaded = std::move(bytes);
+    }
 }
 
 void parseObjectPhotons(BuildContext& c, scene::ObjectPhotons& p, const Token& block) {

@@ -127,6 +127,14 @@ class Reader {
     // The files this parse read (the scene, includes, images, fonts, #read
     // data: checkReadable records them) and wrote (#fopen write/append).
     void noteFileRead(const std::filesystem::path& path) { filesRead_.push_back(path); }
+    // A file the renderer writes after the parse (photons save_file):
+    // refused at `at` as #fopen write would be (a folder the policy
+    // closes, a sharded run), else recorded with the files written. Its
+    // absolute path.
+    std::filesystem::path fileToWrite(const std::string& name, const Token& at);
+    // A whole file a setting reads (photons load_file, `what` in
+    // messages), found and opened as #fopen read does; fails at `at`.
+    std::string readWholeFile(const std::string& name, const Token& at, std::string_view what);
     const std::vector<std::filesystem::path>& filesRead() const { return filesRead_; }
     const std::vector<std::filesystem::path>& filesWritten() const { return filesWritten_; }
 

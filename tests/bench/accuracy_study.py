@@ -128,6 +128,13 @@ KNOBS = {
     "media_aa_level": Knob("media aa_level", _declares("MediaAaLevel", (1, 2, 3, 4, 5))),
     "media_aa_threshold": Knob("media aa_threshold", _declares(
         "MediaAaThreshold", ("0.5", "0.2", "0.1", "0.05", "0.01"))),
+    # Photon mapping (issue 27): the global photons block's spacing, gather
+    # max and jitter, declared by the scene.
+    "photons_spacing": Knob("photons spacing", _declares(
+        "PhotonSpacing", ("0.2", "0.1", "0.05", "0.03", "0.02", "0.01", "0.005"))),
+    "photons_gather": Knob("photons gather max", _declares(
+        "PhotonGatherMax", (25, 50, 100, 200, 400))),
+    "photons_jitter": Knob("photons jitter", _declares("PhotonJitter", ("0", "0.4", "1"))),
 }
 
 

@@ -211,6 +211,20 @@ TEST(Csg, QuadricBetweenPlanesHasFiniteBounds) {
     EXPECT_FALSE(open->surfaceBounds().isFinite());
 }
 
+// intersection { box plane { -y, 0.001 } } (lights/glassthing's target):
+// the plane cuts the box's bound at y = -0.001, as povray's min_extent
+// says. The plane's own crossings lie only where its inside ends.
+TEST(Csg, PlaneOperandClipsIntersectionBounds) {
+    auto cut = csgOf(
+        CsgOp::Intersection,
+        {box({-1, -2, -1}, {1, 2, 1}), primitive(std::make_shared<Plane>(Vec3{0, -1, 0}, 0.001))});
+    const Bounds b = cut->surfaceBounds();
+    EXPECT_NEAR(b.lo.y, -0.001, 1e-9);
+    EXPECT_DOUBLE_EQ(b.hi.y, 2);
+    EXPECT_DOUBLE_EQ(b.lo.x, -1);
+    EXPECT_DOUBLE_EQ(b.hi.x, 1);
+}
+
 TEST(Csg, BoundedBySkipsRaysThatMissTheBound) {
     auto s = sphere({0, 0, 0}, 2);
     s->boundedBy = {box({-1, -1, -1}, {1, 1, 1})};  // smaller than the sphere

@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 #include "anim/statistics.h"
 #include "parse_support.h"
+#include "render/photon_file.h"
 #include "render/photon_map.h"
 #include "render/world.h"
 
@@ -142,12 +145,6 @@ TEST(PhotonsSyntax, PovrayChecks) {
               "");
     EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 photons { refraction } }"), "");
     EXPECT_NE(test_support::parseErrorOf("sphere { 0, 1 split_union off }"), "");
-    // Photon map files stop at their keyword.
-    for (const char* item : {"save_file \"a.ph\"", "load_file \"a.ph\""}) {
-        const std::string error = test_support::parseErrorOf(
-            std::string("global_settings { photons { spacing 0.1 ") + item + " } }");
-        EXPECT_NE(error.find("not supported yet"), std::string::npos) << item << ": " << error;
-    }
     test_support::ParsedScene p("sphere { 0, 1 photons { target refraction on pass_through } }");
     EXPECT_EQ(p.scene.objects[0]->photons.refraction, scene::PhotonToggle::Off);
     EXPECT_NE(p.sink.warnings.find("Cannot use pass_through with refraction & target"),
@@ -249,7 +246,7 @@ TEST(Photons, MemoryInSequenceJson) {
     const std::string json = anim::sequenceJson(run, {with, without}, {});
     EXPECT_NE(json.find("\"photons\": {\"shot\": 8322, \"stored\": 16004, \"media_stored\": 900, "
                         "\"memory_bytes\": 721460, \"gather_radius\": 0.25, "
-                        "\"media_gather_radius\": 0.5, \"spacing\": 0.02}"),
+                        "\"media_gather_radius\": 0.5, \"spacing\": 0.02, \"loaded\": false}"),
               std::string::npos)
         << json;
     // Only the frame that shot photons says so.
@@ -371,4 +368,115 @@ TEST(Photons, CountGivesPovraysSpacing) {
     const render::World world(p.scene);
     ASSERT_TRUE(world.photons());
     EXPECT_NEAR(world.photons()->stats().spacing, 0.0513, 0.0005);
+}
+
+namespace {
+
+// A file name in a fresh folder of the test's own.
+std::filesystem::path photonFilePath(const std::string& name) {
+    const std::filesystem::path dir =
+        std::filesystem::path(::testing::TempDir()) / "frameray_photon_files";
+    std::filesystem::create_directories(dir);
+    std::filesystem::remove(dir / name);
+    return dir / name;
+}
+
+std::string photonFileScene(const std::string& fileSetting) {
+    return R"(
+        global_settings { photons { spacing 0.03 )" +
+           fileSetting + R"( } }
+        light_source { <2, 10, 1>, 1 }
+        plane { y, 0 }
+        sphere { <0, 1.5, 0>, 1 pigment { rgbf <1, 1, 1, 0.9> } finish { reflection 0.2 }
+                 interior { ior 1.5 } photons { target refraction on reflection on } }
+    )";
+}
+
+}  // namespace
+
+// save_file keeps the shot maps; load_file takes them instead of shooting:
+// the same photons in the same tree, so the same gather radius and light.
+TEST(Photons, SaveFileThenLoadFileGiveTheSameMaps) {
+    const std::filesystem::path file = photonFilePath("round_trip.ph");
+    test_support::ParsedScene saving(photonFileScene("save_file \"" + file.string() + "\""));
+    const render::World shot(saving.scene);
+    ASSERT_TRUE(std::filesystem::exists(file));
+    test_support::ParsedScene loading(photonFileScene("load_file \"" + file.string() + "\""));
+    const render::World loaded(loading.scene);
+    const render::Photons& a = *shot.photons();
+    const render::Photons& b = *loaded.photons();
+    EXPECT_FALSE(a.stats().loaded);
+    EXPECT_TRUE(b.stats().loaded);
+    EXPECT_GT(a.stats().shot, 1000u);
+    EXPECT_EQ(b.stats().shot, 0u);  // nothing shot (povray reports none either)
+    const auto& pa = a.surfaceMap().photons();
+    const auto& pb = b.surfaceMap().photons();
+    ASSERT_GT(pa.size(), 1000u);
+    ASSERT_EQ(pa.size(), pb.size());
+    EXPECT_EQ(std::memcmp(pa.data(), pb.data(), pa.size() * sizeof(render::Photon)), 0);
+    EXPECT_EQ(a.surfaceMap().axes(), b.surfaceMap().axes());
+    EXPECT_EQ(a.stats().gatherRadius, b.stats().gatherRadius);
+    std::vector<render::PhotonNeighbour> scratch;
+    const Vec3 p = pa[pa.size() / 2].at(), n(0, 1, 0);  // on the floor, in the caustic
+    const RGB ea = a.irradiance(p, n, scratch), eb = b.irradiance(p, n, scratch);
+    EXPECT_GT(ea.r, 0);
+    EXPECT_EQ(ea.r, eb.r);
+    EXPECT_EQ(ea.b, eb.b);
+}
+
+TEST(Photons, PhotonFileKeepsMediaMapsAndRefusesDamage) {
+    const render::PhotonMap surface(scatteredPhotons(500)), media(scatteredPhotons(77));
+    const std::string bytes = render::encodePhotonFile(surface, media);
+    const render::PhotonMaps back = render::decodePhotonFile(bytes, "x.ph");
+    ASSERT_EQ(back.media.size(), 77u);
+    EXPECT_EQ(std::memcmp(back.media.photons().data(), media.photons().data(),
+                          77 * sizeof(render::Photon)),
+              0);
+    EXPECT_EQ(back.surface.axes(), surface.axes());
+    // Cut short, or a split axis that is no axis: refused, never read past.
+    auto errorOf = [](const std::string& b) -> std::string {
+        try {
+            render::decodePhotonFile(b, "x.ph");
+        } catch (const std::runtime_error& e) {
+            return e.what();
+        }
+        return "";
+    };
+    EXPECT_NE(errorOf(bytes.substr(0, bytes.size() - 1)).find("damaged"), std::string::npos);
+    EXPECT_NE(errorOf(bytes.substr(0, 30)).find("cut short"), std::string::npos);
+    std::string badAxis = bytes;
+    badAxis[badAxis.size() - 1] = 7;
+    EXPECT_NE(errorOf(badAxis).find("damaged"), std::string::npos);
+}
+
+TEST(PhotonsSyntax, PhotonFiles) {
+    // povray's own file (its first bytes: the photon count, little endian)
+    // is refused where load_file names it.
+    const std::filesystem::path povrays = photonFilePath("povray.ph");
+    {
+        std::ofstream out(povrays, std::ios::binary);
+        const char bytes[] = {0x4e, 0x0a, 0, 0, 0x06, 0x44, 0x02, static_cast<char>(0xc0)};
+        out.write(bytes, sizeof bytes);
+    }
+    std::string error =
+        test_support::parseErrorOf(photonFileScene("load_file \"" + povrays.string() + "\""));
+    EXPECT_NE(error.find("is not a frameray photon map"), std::string::npos) << error;
+    EXPECT_NE(error.find("t.pov:2:"), std::string::npos) << error;
+    // A file that is not there stops the parse (povray stops the render).
+    error = test_support::parseErrorOf(
+        photonFileScene("load_file \"" + photonFilePath("none.ph").string() + "\""));
+    EXPECT_NE(error.find("cannot read the photon map"), std::string::npos) << error;
+    // Both: povray warns and loads, saving nothing.
+    const std::filesystem::path saved = photonFilePath("saved.ph");
+    {
+        test_support::ParsedScene p(photonFileScene("save_file \"" + saved.string() + "\""));
+        const render::World world(p.scene);
+    }
+    const std::filesystem::path other = photonFilePath("other.ph");
+    test_support::ParsedScene both(photonFileScene("save_file \"" + other.string() +
+                                                   "\" load_file \"" + saved.string() + "\""));
+    EXPECT_NE(both.sink.warnings.find("Cannot both load and save photon map"), std::string::npos);
+    const render::World world(both.scene);
+    EXPECT_TRUE(world.photons()->stats().loaded);
+    EXPECT_FALSE(std::filesystem::exists(other));
 }

@@ -1,4 +1,4 @@
-// Error test: reading a photon map from a file (load_file) is not done yet;
-// frameray stops rather than shoot photons of its own instead.
+// Error test: load_file names a photon map that is not there (povray stops
+// the render with "Could not load photon map"); frameray stops at the name.
 #version 3.7;
-global_settings { photons { spacing 0.05 load_file "map.ph" } }
+global_settings { photons { spacing 0.05 load_file "no_such_map.ph" } }
