@@ -80,11 +80,12 @@ RGB iridTint(double amount, double thickness, const RGB& wavelength, double cosV
 
 double fakeCaustics(const scene::Object& obj, const Vec3& p, const Vec3& dir) {
     if (!obj.interior || obj.interior->caustics == 0) return 1.0;
-    Vec3 n = obj.normalAt(p);
+    const bool usesUv = obj.texture && obj.texture->usesUv();
+    Vec3 uv(p.x, p.y, 0);
+    Vec3 n = usesUv ? obj.normalAndUvAt(p, uv) : obj.normalAt(p);
     if (dot(n, dir) > 0) n = -n;
     if (obj.texture) {
         const scene::Texture& tex = *obj.texture;
-        const Vec3 uv = tex.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
         n = tex.perturbNormal(tex.uvMapping ? uv : p, n, uv);
     }
     const double c = std::fabs(dot(n, normalize(dir)));

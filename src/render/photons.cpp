@@ -335,7 +335,10 @@ void Tracing::interact(const Path& path, const Hit& hit, const Vec3& p) const {
     const bool refracts = scene::photonsActive(obj.photons.refraction, light.photons.refraction);
     if ((!reflects && !refracts) || path.level >= maxLevel) return;
     const Vec3& dir = path.ray.direction;
-    Vec3 geometric = obj.normalAt(p);
+    static const scene::Texture kOpaque;
+    const scene::Texture& tex = obj.texture ? *obj.texture : kOpaque;
+    Vec3 uv(p.x, p.y, 0);
+    Vec3 geometric = tex.usesUv() ? obj.normalAndUvAt(p, uv) : obj.normalAt(p);
     if (dot(geometric, dir) > 0) geometric = -geometric;
     const InteriorStack::Region region = regionOf(obj);
     const bool leaving = path.inside.contains(region.key);
@@ -349,9 +352,6 @@ void Tracing::interact(const Path& path, const Hit& hit, const Vec3& p) const {
     const double iorBeyond = leaving ? beyond.ior(path.band) : own;
     const double fresnelRatio =
         leaving && path.inside.size() > 1 ? iorHere / own : iorBeyond / iorHere;
-    static const scene::Texture kOpaque;
-    const scene::Texture& tex = obj.texture ? *obj.texture : kOpaque;
-    const Vec3 uv = tex.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
     const Response r = respond(tex, p, uv, dir, geometric, fresnelRatio);
     const double eps = photonEpsilon(p);
     if (reflects && !r.reflect.isBlack()) {

@@ -384,17 +384,19 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
     const Vec3 viewDir = normalize(ray.direction);
     // The hit primitive (for CSG, the child whose surface was crossed)
     // carries its complete transform and inherited texture.
-    Vec3 geometric = obj.normalAt(p);
+    // uv_mapping's point, found only when a texture may ask for it, with
+    // the normal (a mesh then searches the point's triangle once).
+    const scene::Texture& outer = obj.texture ? *obj.texture : defaultTexture();
+    const bool mayUseUv = !obj.componentTextures.empty() || outer.usesUv() ||
+                          (obj.interiorTexture && obj.interiorTexture->usesUv());
+    Vec3 surfaceUv;
+    Vec3 geometric = mayUseUv ? obj.normalAndUvAt(p, surfaceUv) : obj.normalAt(p);
     // Shade the side facing the viewer; the inner side takes the
     // interior_texture when there is one.
     const bool innerSide = dot(geometric, viewDir) > 0;
     if (innerSide) geometric = -geometric;
-    const scene::Texture& own = innerSide && obj.interiorTexture ? *obj.interiorTexture
-                                : obj.texture                    ? *obj.texture
-                                                                 : defaultTexture();
-    // uv_mapping's point, found only when a texture asks for it.
-    const Vec3 uv =
-        !obj.componentTextures.empty() || own.usesUv() ? obj.surfaceUv(p) : Vec3(p.x, p.y, 0);
+    const scene::Texture& own = innerSide && obj.interiorTexture ? *obj.interiorTexture : outer;
+    const Vec3 uv = !obj.componentTextures.empty() || own.usesUv() ? surfaceUv : Vec3(p.x, p.y, 0);
     if (obj.componentTextures.empty())
         return shadeTexture(own, ray, obj, p, p, uv, viewDir, geometric, state, counts);
     // A blob's component textures: each is shaded and the colours blended

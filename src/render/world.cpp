@@ -30,7 +30,11 @@ struct TraceContext {
     // whether a surface was crossed that lets some light through.
     const scene::Object* blocker = nullptr;
     std::uint16_t blockerKind = 0;
+    const scene::Bounds* blockerBounds = nullptr;
     bool translucent = false;
+    // The object the caller already tested with this ray (World::Tested).
+    const scene::Object* tested = nullptr;
+    bool testedTranslucent = false;
     // With photons on, the light whose shadow rays these are: photon
     // targets that refract its photons stop it (Photons::photonShadow).
     const scene::Light* photonLight = nullptr;
@@ -150,8 +154,12 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     auto* ctx = reinterpret_cast<TraceContext*>(args->context);
     guarded(ctx, [&] {
         const std::uint16_t kind = primitivesOf(args->geometryUserPtr).kinds[args->primID];
-        ++ctx->tests[kind];
         const scene::Object* obj = &objectOf(args->geometryUserPtr, args->primID);
+        if (obj == ctx->tested) {
+            ctx->translucent = ctx->translucent || ctx->testedTranslucent;
+            return;
+        }
+        ++ctx->tests[kind];
         scene::SurfaceHit h;
         if (!obj->firstHit(*ctx->ray, ctx->tMin, ctx->tMax, scene::RayKind::Shadow, h)) return;
         if (!passing(*h.primitive, ctx->ray->at(h.t), ctx->photonLight).isBlack()) {
@@ -161,6 +169,7 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
         }
         ctx->blocker = obj;
         ctx->blockerKind = kind;
+        ctx->blockerBounds = &primitivesOf(args->geometryUserPtr).bounds[args->primID];
         // Embree's convention for "occluded".
         RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
     });
@@ -173,6 +182,29 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
 // no bounded object. It could meet one only beyond kMaxRayDistance from a
 // finite origin, or at 1e17 from the origin of the scene, where float
 // bounds no longer separate anything.
+// Whether the ray's stretch (tMin, tMax) may meet the box: a slab test
+// on the box widened a little (a box from Bounds is conservative; the
+// margin keeps rounding in this test from ever culling a real hit).
+bool rayMayMeet(const scene::Ray& ray, double tMin, double tMax, const scene::Bounds& box) {
+    double tNear = tMin, tFar = tMax;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lo = box.lo[axis], hi = box.hi[axis];
+        const double pad = 1e-6 * std::max({1.0, std::fabs(lo), std::fabs(hi)});
+        const double o = ray.origin[axis], d = ray.direction[axis];
+        if (d == 0) {
+            if (o < lo - pad || o > hi + pad) return false;
+            continue;
+        }
+        double t0 = (lo - pad - o) / d, t1 = (hi + pad - o) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        // NaN (an infinite box side) leaves the interval as it is.
+        if (t0 > tNear) tNear = t0;
+        if (t1 < tFar) tFar = t1;
+        if (tNear > tFar) return false;
+    }
+    return true;
+}
+
 bool embreeCanTrace(const scene::Ray& ray, double tMax) {
     constexpr double kLimit = 1e17;
     const auto small = [](const Vec3& v) {
@@ -341,11 +373,16 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
 }
 
 World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double tMax,
-                                     ThreadState& state, const scene::Light* photonLight) const {
+                                     ThreadState& state, const scene::Light* photonLight,
+                                     Tested tested) const {
     Occlusion found;
     std::uint64_t* tests = state.tests.data();
     for (size_t i = 0; i < unbounded_.size(); ++i) {
         const scene::Object* obj = unbounded_[i];
+        if (obj == tested.object) {
+            found.translucent = found.translucent || tested.translucent;
+            continue;
+        }
         ++tests[unboundedKinds_[i]];
         scene::SurfaceHit h;
         if (!obj->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) continue;
@@ -365,16 +402,18 @@ World::Occlusion World::findOccluder(const scene::Ray& ray, double tMin, double 
     ctx.kind = scene::RayKind::Shadow;
     ctx.tests = tests;
     ctx.photonLight = photonLight;
+    ctx.tested = tested.object;
+    ctx.testedTranslucent = tested.translucent;
     RTCRay r = toEmbreeRay(ray, tMax);
     rtcOccluded1(bvh_, &ctx.embree, &r);
     if (ctx.error) std::rethrow_exception(ctx.error);
-    if (ctx.blocker) found.blocker = {ctx.blocker, ctx.blockerKind};
+    if (ctx.blocker) found.blocker = {ctx.blocker, ctx.blockerKind, ctx.blockerBounds};
     found.translucent = found.translucent || ctx.translucent;
     return found;
 }
 
 bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
-    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local(), nullptr);
+    const Occlusion o = findOccluder(ray, tMin, tMax, tests_.local(), nullptr, Tested{});
     return o.blocker.object || o.translucent;
 }
 
@@ -423,16 +462,23 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     if (light && !scene_.lights.empty() && light >= scene_.lights.data() &&
         light < scene_.lights.data() + scene_.lights.size())
         cached = &state.lastBlocker[static_cast<size_t>(light - scene_.lights.data())];
+    // Its box is tried first (a ray that misses it cannot hit it); the
+    // search below does not test it again.
+    Tested tested;
     if (cached && cached->object) {
-        ++state.tests[cached->kind];
-        scene::SurfaceHit h;
-        if (cached->object->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h) &&
-            passing(*h.primitive, ray.at(h.t), photonLight).isBlack())
-            return RGB(0.0);
+        tested.object = cached->object;
+        if (!cached->bounds || rayMayMeet(ray, tMin, tMax, *cached->bounds)) {
+            ++state.tests[cached->kind];
+            scene::SurfaceHit h;
+            if (cached->object->firstHit(ray, tMin, tMax, scene::RayKind::Shadow, h)) {
+                if (passing(*h.primitive, ray.at(h.t), photonLight).isBlack()) return RGB(0.0);
+                tested.translucent = true;
+            }
+        }
     }
     // Most shadow rays are either clear or blocked by something opaque:
     // one any-hit search settles both.
-    const Occlusion o = findOccluder(ray, tMin, tMax, state, photonLight);
+    const Occlusion o = findOccluder(ray, tMin, tMax, state, photonLight, tested);
     if (o.blocker.object) {
         if (cached) *cached = o.blocker;
         return RGB(0.0);

@@ -123,13 +123,21 @@ class World {
     std::unordered_set<const scene::Object*> inverted_;  // see noteInverted
     std::unique_ptr<const Photons> photons_;
     // A top-level object that blocked a shadow ray, with its statistics kind.
+    // `bounds`: its box in the BVH (null for an unbounded object).
     struct Blocker {
         const scene::Object* object = nullptr;
         std::uint16_t kind = 0;
+        const scene::Bounds* bounds = nullptr;
     };
     struct Occlusion {
         Blocker blocker;           // set when an opaque crossing was found
         bool translucent = false;  // a crossing that lets light through was seen
+    };
+    // An object the caller already tested with the same shadow ray (the
+    // cached blocker) and what it found: it is not tested again.
+    struct Tested {
+        const scene::Object* object = nullptr;
+        bool translucent = false;  // it was crossed where light passes
     };
     // Per-frame, per-thread state: the test counters (one per kind, so the
     // hot path takes no lock and shares no cache line) and the last blocker
@@ -140,7 +148,7 @@ class World {
     };
     // One any-hit search of (tMin, tMax) for a crossing that stops the light.
     Occlusion findOccluder(const scene::Ray& ray, double tMin, double tMax, ThreadState& state,
-                           const scene::Light* photonLight) const;
+                           const scene::Light* photonLight, Tested tested) const;
 
     std::vector<std::string> kindNames_;
     mutable tbb::enumerable_thread_specific<ThreadState, tbb::cache_aligned_allocator<ThreadState>,

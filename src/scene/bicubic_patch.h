@@ -47,6 +47,11 @@ class BicubicPatch final : public Shape {
     Vec3 worldNormal(const Vec3& p, const Transform& toWorld) const override {
         return mesh_->normal(p, TriangleMesh::kAllGroups, &toWorld);
     }
+    Vec3 worldNormalUv(const Vec3& p, const Transform& toWorld, bool& hasUv, double& u,
+                       double& v) const override {
+        hasUv = true;
+        return mesh_->normalAndUv(p, TriangleMesh::kAllGroups, &toWorld, u, v);
+    }
     bool inside(const Vec3&) const override { return false; }
     bool isPatch() const override { return true; }
     Bounds bounds() const override { return mesh_->bounds(TriangleMesh::kAllGroups); }

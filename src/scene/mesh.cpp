@@ -147,13 +147,21 @@ void TriangleMesh::traverse(const Group& g, const Ray& ray, double tMin, Limit t
         flat[a] = ray.direction[a] == 0;
         inv[a] = flat[a] ? 0 : 1 / ray.direction[a];
     }
-    uint32_t stack[128];
+    // Each node waits with where the ray enters its box: a closest-hit
+    // search that has since found a nearer hit skips it when popped.
+    struct Pending {
+        uint32_t node;
+        double enter;
+    };
+    Pending stack[128];
     int top = 0;
     double enter;
     if (!hitBox(g.nodes[0].box, ray.origin, inv, flat, tMin, tMax(), enter)) return;
-    stack[top++] = 0;
+    stack[top++] = {0, enter};
     while (top > 0) {
-        const Node& node = g.nodes[stack[--top]];
+        const Pending pending = stack[--top];
+        if (pending.enter > tMax()) continue;
+        const Node& node = g.nodes[pending.node];
         if (node.count > 0) {
             for (uint32_t i = node.first; i < node.first + node.count; ++i) visit(i);
             continue;
@@ -165,16 +173,16 @@ void TriangleMesh::traverse(const Group& g, const Ray& ray, double tMin, Limit t
         // Nearer child on top of the stack.
         if (hl && hr) {
             if (tl <= tr) {
-                stack[top++] = right;
-                stack[top++] = left;
+                stack[top++] = {right, tr};
+                stack[top++] = {left, tl};
             } else {
-                stack[top++] = left;
-                stack[top++] = right;
+                stack[top++] = {left, tl};
+                stack[top++] = {right, tr};
             }
         } else if (hl) {
-            stack[top++] = left;
+            stack[top++] = {left, tl};
         } else if (hr) {
-            stack[top++] = right;
+            stack[top++] = {right, tr};
         }
     }
 }
@@ -325,8 +333,19 @@ Vec3 TriangleMesh::normal(const Vec3& p, int group, const Transform* toWorld) co
 }
 
 void TriangleMesh::uvAt(const Vec3& p, int group, double& u, double& v) const {
-    u = v = 0;
+    triangleUv(nearestTriangle(p, group), p, u, v);
+}
+
+Vec3 TriangleMesh::normalAndUv(const Vec3& p, int group, const Transform* toWorld, double& u,
+                               double& v) const {
     const int64_t tri = nearestTriangle(p, group);
+    triangleUv(tri, p, u, v);
+    if (tri < 0) return toWorld ? normalize(toWorld->normal(Vec3(0, 1, 0))) : Vec3(0, 1, 0);
+    return triangleNormal(static_cast<uint32_t>(tri), p, toWorld);
+}
+
+void TriangleMesh::triangleUv(int64_t tri, const Vec3& p, double& u, double& v) const {
+    u = v = 0;
     if (tri < 0) return;
     const MeshTriangle& m = triangles_[static_cast<size_t>(tri)];
     for (const int32_t i : m.uv)

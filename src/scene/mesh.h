@@ -83,6 +83,10 @@ class TriangleMesh {
     // transforms a bicubic patch's points, so blends in world space); the
     // result is then a unit world-space normal.
     Vec3 normal(const Vec3& p, int group, const Transform* toWorld) const;
+    // normal() and uvAt() at once: the triangle p lies on is searched once
+    // (a shading point wanting both pays one search; same results).
+    Vec3 normalAndUv(const Vec3& p, int group, const Transform* toWorld, double& u,
+                     double& v) const;
     Bounds bounds(int group) const;
     // Number of surface crossings along the ray beyond t = 0 (for the
     // inside test along inside_vector).
@@ -110,6 +114,8 @@ class TriangleMesh {
     void traverse(const Group& g, const Ray& ray, double tMin, Limit tMax, Visit visit) const;
     bool hitTriangle(uint32_t tri, const Ray& ray, double tMin, double tMax, double& t) const;
     Vec3 triangleNormal(uint32_t tri, const Vec3& p, const Transform* toWorld) const;
+    // uvAt's interpolation over triangle `tri` (-1: none; u, v stay 0).
+    void triangleUv(int64_t tri, const Vec3& p, double& u, double& v) const;
     // The triangle p lies on (the nearest one); -1 when there is none.
     int64_t nearestTriangle(const Vec3& p, int group) const;
 
@@ -142,6 +148,11 @@ class MeshShape final : public Shape {
         return mesh_->firstHit(ray, tMin, tMax, t, group_);
     }
     Vec3 normal(const Vec3& p) const override { return mesh_->normal(p, group_); }
+    Vec3 worldNormalUv(const Vec3& p, const Transform& toWorld, bool& hasUv, double& u,
+                       double& v) const override {
+        hasUv = true;
+        return normalize(toWorld.normal(mesh_->normalAndUv(p, group_, nullptr, u, v)));
+    }
     bool inside(const Vec3& p) const override;
     bool isPatch() const override { return !solid_; }
     Bounds bounds() const override { return mesh_->bounds(group_); }

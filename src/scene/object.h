@@ -136,6 +136,16 @@ struct Object {
         if (shape && shape->uv(transform.inversePoint(p), u, v)) return Vec3(u, v, 0);
         return Vec3(p.x, p.y, 0);
     }
+    // normalAt(p) and surfaceUv(p) at once (equal results; meshes search
+    // the point's triangle once).
+    Vec3 normalAndUvAt(const Vec3& p, Vec3& uv) const {
+        const Vec3 q = transform.inversePoint(p);
+        bool hasUv = false;
+        double u = 0, v = 0;
+        const Vec3 n = shape->worldNormalUv(q, transform, hasUv, u, v);
+        uv = hasUv ? Vec3(u, v, 0) : Vec3(p.x, p.y, 0);
+        return n;
+    }
     // The textures colouring world point p and their weights (summing to
     // 1): `own` (the object's resolved texture) alone, except for a blob
     // with componentTextures.

@@ -67,6 +67,14 @@ class Shape {
     // object-space point p on the surface. False for shapes without their
     // own, which povray maps by the world x and y of the point instead.
     virtual bool uv(const Vec3& /*p*/, double& /*u*/, double& /*v*/) const { return false; }
+    // worldNormal() and uv() of one point at once (`hasUv`: uv()'s result),
+    // for shapes that share work between the two (meshes find the point's
+    // triangle once). Results equal the separate calls'.
+    virtual Vec3 worldNormalUv(const Vec3& p, const Transform& toWorld, bool& hasUv, double& u,
+                               double& v) const {
+        hasUv = uv(p, u, v);
+        return worldNormal(p, toWorld);
+    }
     // A shape whose geometry depends on where it is placed (a bicubic
     // patch with flatness subdivides by world-space distances) returns
     // its rebuilt self for the object-to-world transform `toWorld`; the

@@ -184,6 +184,11 @@ RGB Texture::throughAt(const Vec3& p, const Vec3* uv) const {
     }
     RGB passed(1.0);
     const std::size_t layerCount = 1 + layersBelow.size();
+    // One opaque layer makes the product black: settle that before any
+    // pattern is evaluated (the loop below would return black at that
+    // layer at the latest).
+    for (std::size_t i = 0; i < layerCount; ++i)
+        if ((i == 0 ? *this : *layersBelow[i - 1]).pigment->alwaysOpaque()) return RGB(0.0);
     for (std::size_t i = 0; i < layerCount; ++i) {
         const Texture& layer = i == 0 ? *this : *layersBelow[i - 1];
         const Vec3 at = layer.uvMapping && uv ? *uv : p;
@@ -209,6 +214,32 @@ void TextureMap::transformBy(const Transform& t) {
         tex->transformBy(t);
         e.texture = std::move(tex);
     }
+}
+
+bool Pigment::alwaysOpaque() const {
+    const auto opaque = [](const Color& c) { return c.filter == 0 && c.transmit == 0; };
+    switch (kind_) {
+        case Kind::Solid:
+            return opaque(color_);
+        case Kind::List:
+            // A missing entry reads as black.
+            return std::all_of(more_.get().list.begin(), more_.get().list.end(),
+                               [](const auto& p) { return !p || p->alwaysOpaque(); });
+        case Kind::ColorMapped: {
+            const auto& entries = more_.get().colorMap.entries();
+            return std::all_of(entries.begin(), entries.end(),
+                               [&](const ColorMap::Entry& e) { return opaque(e.color); });
+        }
+        case Kind::PigmentMapped: {
+            const auto& map = more_.get().pigmentMap;
+            return std::all_of(map.begin(), map.end(), [](const MapEntry& e) {
+                return e.pigment && e.pigment->alwaysOpaque();
+            });
+        }
+        case Kind::ImageMapped:
+            return false;
+    }
+    return false;
 }
 
 bool Pigment::usesUv() const {

@@ -79,6 +79,11 @@ class Pigment {
     bool uvMapping() const { return uvMapping_; }
     // Whether this pigment or one it holds is uv-mapped.
     bool usesUv() const;
+    // Whether every colour at() can return has filter and transmit 0
+    // (every colour, map entry and sub-pigment has): a shadow ray needs
+    // not evaluate it to know it lets nothing through. False when unsure
+    // (image maps).
+    bool alwaysOpaque() const;
     // quick_color: what +Q0/+Q1 show instead of the pigment.
     void setQuickColor(const Color& c) { more_.edit().quickColor = c; }
     const std::optional<Color>& quickColor() const { return more_.get().quickColor; }

@@ -211,3 +211,85 @@ TEST(BicubicPatch, FlatnessMeasuresWhereThePatchIsPlaced) {
     EXPECT_GT(placed->triangleCount(), patch.triangleCount());
     EXPECT_EQ(BicubicPatch(p, 3, 3, 0).placedBy(Transform::scale(Vec3(10))), nullptr);
 }
+
+TEST(Mesh, NormalAndUvAtOnceEqualTheSeparateQueries) {
+    // A smooth, uv-mapped random terrain: the combined query (one triangle
+    // search) must give bit for bit what normal() and uv() give.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> h(-0.3, 0.3);
+    const uint32_t n = 12;
+    std::vector<Vec3> v, normals;
+    std::vector<std::array<double, 2>> uvs;
+    for (uint32_t z = 0; z <= n; ++z)
+        for (uint32_t x = 0; x <= n; ++x) {
+            v.emplace_back(x, h(rng), z);
+            normals.push_back(normalize(Vec3(h(rng), 1, h(rng))));
+            uvs.push_back({x / double(n), z / double(n)});
+        }
+    std::vector<MeshTriangle> tris;
+    for (uint32_t z = 0; z < n; ++z)
+        for (uint32_t x = 0; x < n; ++x) {
+            const uint32_t a = z * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            for (const auto& f :
+                 {std::array<uint32_t, 3>{a, b, d}, std::array<uint32_t, 3>{a, d, c}}) {
+                MeshTriangle t;
+                t.vertex = f;
+                t.normal = {int32_t(f[0]), int32_t(f[1]), int32_t(f[2])};
+                t.uv = {int32_t(f[0]), int32_t(f[1]), int32_t(f[2])};
+                tris.push_back(t);
+            }
+        }
+    auto built = std::make_shared<TriangleMesh>(v, normals, tris);
+    built->setUvs(uvs);
+    const MeshShape shape(built, TriangleMesh::kAllGroups, false, {});
+    const Transform toWorld = Transform::scale({2, 0.5, 1}).then(Transform::rotate({10, 30, 0}));
+    std::uniform_real_distribution<double> at(0.01, n - 0.01);
+    int hits = 0;
+    for (int r = 0; r < 500; ++r) {
+        double t;
+        const Ray ray{{at(rng), 5, at(rng)}, normalize(Vec3(h(rng), -1, h(rng)))};
+        if (!shape.firstHit(ray, 0, kInfinity, t)) continue;
+        ++hits;
+        const Vec3 p = ray.at(t);
+        double u1 = -1, v1 = -1, u2 = -2, v2 = -2;
+        bool hasUv = false;
+        const Vec3 both = shape.worldNormalUv(p, toWorld, hasUv, u2, v2);
+        ASSERT_TRUE(shape.uv(p, u1, v1));
+        const Vec3 alone = shape.worldNormal(p, toWorld);
+        EXPECT_TRUE(hasUv);
+        EXPECT_EQ(both.x, alone.x);
+        EXPECT_EQ(both.y, alone.y);
+        EXPECT_EQ(both.z, alone.z);
+        EXPECT_EQ(u1, u2);
+        EXPECT_EQ(v1, v2);
+    }
+    EXPECT_GT(hits, 400);
+}
+
+TEST(BicubicPatch, NormalAndUvAtOnceEqualTheSeparateQueries) {
+    std::array<Vec3, 16> p;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) p[static_cast<size_t>(4 * r + c)] = Vec3(c / 3.0, 0, r / 3.0);
+    p[5].y = 0.7;
+    p[15].y = 1;
+    const BicubicPatch patch(p, 3, 3, 0);
+    const Transform toWorld = Transform::rotate({20, 0, 40});
+    for (double x = 0.05; x < 1; x += 0.1)
+        for (double z = 0.05; z < 1; z += 0.1) {
+            double t;
+            const Ray ray{{x, 5, z}, {0, -1, 0}};
+            ASSERT_TRUE(patch.firstHit(ray, 0, kInfinity, t));
+            const Vec3 q = ray.at(t);
+            double u1, v1, u2, v2;
+            bool hasUv = false;
+            const Vec3 both = patch.worldNormalUv(q, toWorld, hasUv, u2, v2);
+            ASSERT_TRUE(patch.uv(q, u1, v1));
+            const Vec3 alone = patch.worldNormal(q, toWorld);
+            EXPECT_TRUE(hasUv);
+            EXPECT_EQ(both.x, alone.x);
+            EXPECT_EQ(both.y, alone.y);
+            EXPECT_EQ(both.z, alone.z);
+            EXPECT_EQ(u1, u2);
+            EXPECT_EQ(v1, v2);
+        }
+}
