@@ -158,7 +158,7 @@ RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, i
         if (s.depth != depth) return;
         if (s.pass == pass_ && s.tile != tile_) return;
         if (!cell.sees(p)) return;
-        const double w = reuseWeight(s, p, n, bound, smooth);
+        const double w = reuseWeight(s, p, n, bound, smooth) * s.quality;
         if (w <= 0) return;
         sum += s.irradiance * w;
         out.weight += w;

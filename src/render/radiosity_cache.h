@@ -32,6 +32,10 @@ struct RadiositySample {
     // pass gathered (povray's rule for reproducible renders).
     int pass = 0;
     int tile = 0;
+    // The mean quality of the sample's rays (povray 3.7): a ray whose own
+    // lookup, one bounce deeper, found little weight to reuse counts less,
+    // and so does a sample made of such rays when it is looked up.
+    double quality = 1;
 };
 
 class RadiosityOctree {

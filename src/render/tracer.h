@@ -119,6 +119,10 @@ class Tracer {
             bool ray = false;
             Vec3 origin;
             double length = 0;
+            // The quality of the radiosity ray this path continues (null
+            // for camera rays): its lookups lower it to the weight they
+            // found over the weight they needed.
+            double* quality = nullptr;
         } radiosity;
         double* hitDistance = nullptr;  // set by trace(): how far the ray went (infinity: missed)
     };

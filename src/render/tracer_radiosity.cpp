@@ -34,17 +34,32 @@ RGB Tracer::radiosityLight(const Vec3& p, const Vec3& n, const scene::Object& ob
         ++task->topQueries;
         task->topCoverage += 4 * found.weight;
     }
+    // povray 3.7: a radiosity ray's quality is the least, over the lookups
+    // it met, of the weight found over the weight a reuse needs (times 4);
+    // the gathering sample weighs its rays by it.
+    const double needed = radiosity_->depth(depth).reuseWeight;
+    const auto rate = [&](double reuse) {
+        if (state.radiosity.quality)
+            *state.radiosity.quality = std::min(*state.radiosity.quality, 4 * reuse / needed);
+    };
     if (!task->wantsSample(found, depth)) {
         ++task->counts.reused;
+        rate(found.weight);
         return found.irradiance;
     }
     bool keep = false;
     const RadiositySample sample = gatherSample(p, n, obj, eps, state, counts, keep);
     if (keep) task->add(sample);
+    // A new sample's rays leave the quality of the ray that asked for it
+    // at least theirs (povray restores it so).
+    if (state.radiosity.quality)
+        *state.radiosity.quality = std::max(*state.radiosity.quality, sample.quality);
     // povray 3.7: the samples already found nearby are not thrown away; the
-    // new one joins them with weight 1.
+    // new one joins them, weighted by its quality.
+    rate(found.weight + sample.quality);
     if (found.weight > 0)
-        return (found.irradiance * found.weight + sample.irradiance) * (1.0 / (found.weight + 1));
+        return (found.irradiance * found.weight + sample.irradiance * sample.quality) *
+               (1.0 / (found.weight + sample.quality));
     return sample.irradiance;
 }
 
@@ -71,25 +86,29 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     child.kind = scene::RayKind::Radiosity;
     child.inside = state.inside;
     child.band = state.band;
-    child.radiosity = {state.radiosity.task, depth + 1, true, p, pathLength};
+    double quality = 1;
+    child.radiosity = {state.radiosity.task, depth + 1, true, p, pathLength, &quality};
     double distance = 0;
     child.hitDistance = &distance;
 
     RGB sum(0.0);
     double inverseDistances = 0;
+    double qualitySum = 0;
     double nearest = scene::kInfinity;
     Vec3 toNearest(0, 0, 1);
     for (int i = 0; i < count; ++i) {
         const Vec3 d = Radiosity::direction(i, count, first);
         const Vec3 dir = u * d.x + v * d.y + n * d.z;
         ++counts.radiosity;
+        quality = 1;
         RGB c = trace({p, dir}, eps, child, counts);
         // max_sample: no ray brings more than this (by its brightest channel).
         if (set.maxSample > 0) {
             const double m = c.maxComponent();
             if (m > set.maxSample) c = c * (set.maxSample / m);
         }
-        sum += c;
+        sum += c * quality;
+        qualitySum += quality;
         if (distance < scene::kInfinity) {
             inverseDistances += 1.0 / std::max(distance, 1e-12);
             if (distance < nearest) {
@@ -98,7 +117,8 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
             }
         }
     }
-    RGB e = sum * (1.0 / count);
+    // Each ray counts by its quality.
+    RGB e = qualitySum > 0 ? sum * (1.0 / qualitySum) : sum;
     if (set.grayThreshold > 0) {
         const double grey = (e.r + e.g + e.b) / 3.0;
         e = e * (1.0 - set.grayThreshold) + RGB(grey * set.grayThreshold);
@@ -110,6 +130,7 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     s.normal = n;
     s.irradiance = e;
     s.depth = depth;
+    s.quality = qualitySum / count;
     // The harmonic mean distance of the surfaces the rays met, within
     // minimum_reuse and maximum_reuse (doubled per bounce) of the distance
     // from the eye.

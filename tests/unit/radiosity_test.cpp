@@ -173,6 +173,31 @@ TEST(Radiosity, LookupsWeighNearbySamplesAndAskForNewOnes) {
     EXPECT_EQ(render::RadiosityTask(r, false, false).interpolate(Vec3(5, 0, 0), up, 0).found, 0);
 }
 
+// povray 3.7: a sample counts by the quality of its rays (a ray whose own
+// lookup, a bounce deeper, found under a quarter of the weight it needed
+// counts that much less), so a lookup near a half-quality sample finds
+// half the weight, and may have to gather where it would have reused.
+TEST(Radiosity, LookupsWeighSamplesByTheirQuality) {
+    scene::RadiositySettings set;
+    set.errorBound = 1.0;
+    set.lowErrorFactor = 1.0;
+    set.nearestCount = 2;
+    render::Radiosity r(set, Vec3(0, 10, 0), false);
+    render::RadiosityTask pretrace(r, true, true);
+    const Vec3 up(0, 1, 0);
+    render::RadiositySample full = sampleAt(Vec3(0, 0, 0), up, 1.0, 1.0, 0);
+    render::RadiositySample half = sampleAt(Vec3(10, 0, 0), up, 1.0, 1.0, 0);
+    half.quality = 0.5;
+    pretrace.add(full);
+    pretrace.add(half);
+    const auto a = pretrace.interpolate(Vec3(0.4, 0, 0), up, 0);
+    const auto b = pretrace.interpolate(Vec3(10.4, 0, 0), up, 0);
+    EXPECT_NEAR(a.weight, 0.6, 1e-12);
+    EXPECT_NEAR(b.weight, 0.3, 1e-12);
+    EXPECT_FALSE(pretrace.wantsSample(a, 0));
+    EXPECT_TRUE(pretrace.wantsSample(b, 0));
+}
+
 namespace {
 
 render::FrameImage renderText(const std::string& text, int threads, render::FrameStats& stats,
