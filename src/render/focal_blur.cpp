@@ -4,42 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "util/chi_square.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
 
 namespace {
-
-// Regularised lower incomplete gamma P(a, x) (series for small x, Lentz's
-// continued fraction for the upper part otherwise).
-double lowerGammaP(double a, double x) {
-    if (x <= 0) return 0;
-    const double logPrefix = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1) {
-        double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 500; ++n) {
-            term *= x / (a + n);
-            sum += term;
-            if (std::abs(term) < std::abs(sum) * 1e-15) break;
-        }
-        return sum * std::exp(logPrefix);
-    }
-    const double tiny = 1e-300;
-    double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-    for (int i = 1; i < 500; ++i) {
-        const double an = -i * (i - a);
-        b += 2;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1) < 1e-15) break;
-    }
-    return 1 - std::exp(logPrefix) * h;
-}
 
 // Hexagonal-lattice points within `rings` rings of the centre, centre
 // first then ring by ring, scaled into the unit disc.
@@ -59,21 +29,6 @@ std::vector<std::pair<double, double>> hexGrid(int rings, double& spacing) {
 }
 
 }  // namespace
-
-double chiSquareQuantile(double degreesOfFreedom, double confidence) {
-    // x with P(chi-square > x) = confidence, by bisection on the CDF.
-    const double a = 0.5 * degreesOfFreedom;
-    double lo = 0, hi = std::max(1.0, 10 * degreesOfFreedom);
-    while (1 - lowerGammaP(a, 0.5 * hi) > confidence) hi *= 2;
-    for (int i = 0; i < 100; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        if (1 - lowerGammaP(a, 0.5 * mid) > confidence)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return 0.5 * (lo + hi);
-}
 
 FocalBlurSampler::FocalBlurSampler(const CameraRays& camera) : camera_(camera) {
     const scene::Camera& c = camera.camera();
@@ -112,10 +67,11 @@ FocalBlurSampler::FocalBlurSampler(const CameraRays& camera) : camera_(camera) {
     // quantiles, so fewer samples need a smaller variance).
     thresholds_.assign(static_cast<size_t>(maxSamples_), 0.0);
     if (maxSamples_ > 1) {
-        const double base = c.blur.variance / chiSquareQuantile(maxSamples_ - 1, c.blur.confidence);
+        const double base =
+            c.blur.variance / chiSquareUpperTailInverse(maxSamples_ - 1, c.blur.confidence);
         for (int i = 0; i < maxSamples_; ++i)
             thresholds_[static_cast<size_t>(i)] =
-                base * chiSquareQuantile(i + 1, c.blur.confidence);
+                base * chiSquareUpperTailInverse(i + 1, c.blur.confidence);
     }
 }
 

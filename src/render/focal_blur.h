@@ -50,8 +50,4 @@ class FocalBlurSampler {
     int minSamples_ = 0, maxSamples_ = 0;
 };
 
-// The chi-square quantile: x with P(X > x) = 1 - p... here p is the
-// confidence; exposed for tests.
-double chiSquareQuantile(double degreesOfFreedom, double confidence);
-
 }  // namespace frameray::render

@@ -8,6 +8,7 @@
 #include "render/camera_rays.h"
 #include "render/focal_blur.h"
 #include "sdl/interpreter.h"
+#include "util/chi_square.h"
 
 using namespace frameray;
 using frameray::render::CameraRays;
@@ -155,8 +156,8 @@ TEST(CameraParse, IdentifierAcceptsTransformations) {
 
 TEST(FocalBlur, ChiSquareQuantile) {
     // P(chi2_1 > 0.01579) = 0.9, P(chi2_10 > 4.865) = 0.9 (standard tables).
-    EXPECT_NEAR(render::chiSquareQuantile(1, 0.9), 0.01579, 1e-4);
-    EXPECT_NEAR(render::chiSquareQuantile(10, 0.9), 4.8652, 1e-3);
+    EXPECT_NEAR(chiSquareUpperTailInverse(1, 0.9), 0.01579, 1e-4);
+    EXPECT_NEAR(chiSquareUpperTailInverse(10, 0.9), 4.8652, 1e-3);
 }
 
 TEST(FocalBlur, GridInsideDiscAndDeterministicSamples) {
