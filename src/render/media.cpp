@@ -13,6 +13,13 @@ namespace frameray::render {
 
 namespace {
 
+// Whether a light's light scatters in media: it interacts with media and
+// is not shadowless (measured with povray 3.7: a shadowless light adds
+// nothing to scattering media, thin or dense, camera inside or outside).
+bool scattersInMedia(const scene::Light& light) {
+    return light.mediaInteraction && !light.shadowless;
+}
+
 // What one sample point holds: the light it sends toward the viewer per
 // unit length (emission plus in-scattered light) and its extinction.
 struct Sample {
@@ -139,7 +146,7 @@ class Sampler {
     bool wholeLit() const {
         if (!primary_) return false;
         for (const scene::Light& light : world_->scene().lights)
-            if (light.mediaInteraction &&
+            if (scattersInMedia(light) &&
                 (light.parallel || (light.kind != scene::LightKind::Spot &&
                                     light.kind != scene::LightKind::Cylinder)))
                 return true;
@@ -188,7 +195,7 @@ class Sampler {
     bool hasVolumeLights() const {
         if (!primary_) return false;
         for (const scene::Light& light : world_->scene().lights)
-            if (light.mediaInteraction && !light.parallel &&
+            if (scattersInMedia(light) && !light.parallel &&
                 (light.kind == scene::LightKind::Spot || light.kind == scene::LightKind::Cylinder))
                 return true;
         return false;
@@ -217,7 +224,7 @@ RGB Sampler::inScattered(const Vec3& p, double t, const RGB* scattering) const {
         std::max(1e-9 * std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}), 1e-300);
     for (const scene::Light& light : scene.lights) {
         const size_t i = index++;
-        if (!light.mediaInteraction) continue;
+        if (!scattersInMedia(light)) continue;
         if (i < ranges_.size() && !(t >= ranges_[i].from - margin_ && t <= ranges_[i].to + margin_))
             continue;
         LightPath path;
@@ -344,7 +351,7 @@ void Sampler::pieces(double depth, std::vector<Piece>& out) const {
     const std::vector<scene::Light>& lights = world_->scene().lights;
     for (size_t i = 0; i < lights.size(); ++i) {
         const scene::Light& light = lights[i];
-        if (!light.mediaInteraction || light.parallel) continue;
+        if (!scattersInMedia(light) || light.parallel) continue;
         if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
             continue;
         if (!fromRanges) {
@@ -498,7 +505,7 @@ void Sampler::litRanges(double depth) {
     std::vector<double> cuts;
     for (size_t i = 0; i < lights.size(); ++i) {
         const scene::Light& light = lights[i];
-        if (!light.mediaInteraction || light.parallel) continue;
+        if (!scattersInMedia(light) || light.parallel) continue;
         if (light.kind != scene::LightKind::Spot && light.kind != scene::LightKind::Cylinder)
             continue;
         // A cone wider than a half-space is not convex: no range.
