@@ -82,6 +82,7 @@ sdl::FrameContext contextFor(const options::RenderOptions& o, const Sequence& se
     ctx.declares = o.declares;
     ctx.includeHeader = o.includeHeader;
     ctx.version = o.version;
+    ctx.versionGiven = o.versionGiven;
     if (o.fileRestrictions) {
         sdl::FileAccessFolders folders;
         std::error_code ec;
@@ -774,7 +775,7 @@ class Run {
             start = Clock::now();
             const auto gamma = image::GammaEncoding::forScene(
                 job.scene->globals.assumedGammaSet, job.scene->globals.assumedGamma,
-                job.scene->languageVersion, o_.fileGamma);
+                job.scene->renderVersion(), o_.fileGamma);
             render::FrameSettings settings = frameSettings(gamma);
             if (settings.alpha) refuseAlphaWith(*job.scene);
             const bool seeds = radiosityCarry(settings);

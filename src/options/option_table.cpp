@@ -884,7 +884,10 @@ const OptionSpec kOptions[] = {
      [](RenderOptions& o, const OptionInput& in) { o.verbose = toBool(in); },
      FR_WRITE(onOff(o.verbose)), nullptr},
     {"Version", "MV", OptionType::Float, "3.7", "Language version assumed before any #version.",
-     [](RenderOptions& o, const OptionInput& in) { o.version = toFloat(in.value); },
+     [](RenderOptions& o, const OptionInput& in) {
+         o.version = toFloat(in.value);
+         o.versionGiven = true;
+     },
      FR_WRITE(num(o.version)), nullptr},
     FR_ACCEPTED("Video_Mode", "", String, "",
                 "Display hardware mode (no effect: there is no preview window).", acceptLetter,

@@ -126,6 +126,7 @@ struct RenderOptions {
 
     // Parsing.
     double version = 3.7;
+    bool versionGiven = false;  // Version was set: the scene's version counts as declared
     std::vector<std::filesystem::path> libraryPaths;
     std::vector<std::pair<std::string, std::string>> declares;
     // Loop iterations and macro calls one frame's parse may run (0: no

@@ -123,7 +123,7 @@ AtmosphereView::AtmosphereView(const scene::Scene& scene, bool volumetric)
                   (!scene.atmosphere.fogs.empty() || !scene.atmosphere.rainbows.empty())) {}
 
 Color AtmosphereView::sky(const Vec3& unitDirection) const {
-    return scene_.languageVersion < 3.7 - 1e-9 ? legacySky(scene_, unitDirection)
+    return scene_.renderVersion() < 3.7 - 1e-9 ? legacySky(scene_, unitDirection)
                                                : layeredSky(scene_, unitDirection);
 }
 

@@ -34,13 +34,13 @@ RGB metallicTint(double metallic, double cosAngle, const RGB& pigment) {
 }
 
 RGB reflectance(const scene::Reflection& r, double cosIncidence, double relativeIor,
-                const RGB& pigment) {
+                const RGB& pigment, const RGB& variationScale) {
     double blend;
     if (r.fresnel)
         blend = fresnelReflectance(cosIncidence, relativeIor);
     else
         blend = std::pow(std::max(0.0, 1.0 - std::fabs(cosIncidence)), r.falloff);
-    RGB out = r.min + (r.max - r.min) * blend;
+    RGB out = r.min + (r.max - r.min) * variationScale * blend;
     if (r.metallic > 0) out = out * metallicTint(r.metallic, cosIncidence, pigment);
     return out;
 }

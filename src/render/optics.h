@@ -30,9 +30,10 @@ double metallicFresnel(double cosAngle);
 // grazing angles.
 RGB metallicTint(double metallic, double cosAngle, const RGB& pigment);
 
-// How much of the mirrored ray a finish adds at this angle (per channel).
+// How much of the mirrored ray a finish adds at this angle (per channel);
+// `variationScale` scales the part above the minimum (interior fading).
 RGB reflectance(const scene::Reflection& r, double cosIncidence, double relativeIor,
-                const RGB& pigment);
+                const RGB& pigment, const RGB& variationScale = RGB(1.0));
 
 // The direction of a unit ray `d` refracted at a surface with unit normal
 // `n` facing against d, going from ior n1 to n2 (`eta` = n1 / n2); empty

@@ -168,12 +168,6 @@ struct Path {
     double weight = 1.0;
 };
 
-InteriorStack::Region regionOf(const scene::Object& primitive) {
-    if (primitive.interior)
-        return {primitive.interior.get(), primitive.interior.get(), primitive.hollow};
-    return {&primitive, nullptr, primitive.hollow};
-}
-
 struct Tracing {
     const World& world;
     const scene::Light& light;
@@ -313,7 +307,7 @@ bool Tracing::trace(Path path) const {
         if (!hit.object->photons.passThrough) return false;
         const Vec3 p = path.ray.at(hit.t);
         cross(path, hit.t);
-        const InteriorStack::Region region = regionOf(*hit.object);
+        const InteriorStack::Region region = InteriorStack::of(*hit.object);
         if (path.inside.contains(region.key))
             path.inside.remove(region.key);
         else
@@ -340,7 +334,7 @@ void Tracing::interact(const Path& path, const Hit& hit, const Vec3& p) const {
     Vec3 uv(p.x, p.y, 0);
     Vec3 geometric = tex.usesUv() ? obj.normalAndUvAt(p, uv) : obj.normalAt(p);
     if (dot(geometric, dir) > 0) geometric = -geometric;
-    const InteriorStack::Region region = regionOf(obj);
+    const InteriorStack::Region region = InteriorStack::of(obj);
     const bool leaving = path.inside.contains(region.key);
     InteriorStack beyond = path.inside;
     if (leaving)

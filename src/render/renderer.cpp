@@ -32,7 +32,7 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     const scene::Scene& scene = world.scene();
     if (scene.globals.radiosity && settings.quality >= 9)
         radiosity = std::make_unique<Radiosity>(*scene.globals.radiosity, scene.camera.location,
-                                                scene.languageVersion < 3.7 - 1e-9);
+                                                scene.renderVersion() < 3.7 - 1e-9);
     if (radiosity && settings.radiosityStart)
         for (RadiositySample s : *settings.radiosityStart) {
             // Loaded samples belong to no pass of this frame: every lookup sees them.

@@ -59,15 +59,16 @@ RGB unreflected(const RGB& reflectivity) {
                std::max(0.0, 1.0 - reflectivity.b));
 }
 
+}  // namespace
+
 // The region a primitive's surface bounds: its interior, shared with the
-// other primitives of a CSG that inherited it, or the primitive itself.
-InteriorStack::Region regionOf(const scene::Object& primitive) {
+// other primitives of a CSG that inherited it, else its CSG tree's region,
+// or the primitive itself.
+InteriorStack::Region InteriorStack::of(const scene::Object& primitive) {
     if (primitive.interior)
         return {primitive.interior.get(), primitive.interior.get(), primitive.hollow};
-    return {&primitive, nullptr, primitive.hollow};
+    return {primitive.regionKey ? primitive.regionKey : &primitive, nullptr, primitive.hollow};
 }
-
-}  // namespace
 
 bool InteriorStack::contains(const void* key) const {
     for (int i = 0; i < size_; ++i)
@@ -115,8 +116,8 @@ Tracer::Tracer(const World& world, int quality, const Radiosity* radiosity)
       radiosity_(radiosity),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
-      opaqueSky_(world.scene().versionDeclared && world.scene().languageVersion >= 3.7 - 1e-9),
-      legacyFilterOpacity_(world.scene().languageVersion < 3.7 - 1e-9) {
+      opaqueSky_(world.scene().renderVersion() >= 3.7 - 1e-9),
+      legacyFilterOpacity_(world.scene().renderVersion() < 3.7 - 1e-9) {
     // povray starts camera rays inside every object that contains the
     // camera: a camera inside glass sees out through its ior. It lists them
     // in reverse declaration order, so the innermost (last listed) is the
@@ -139,7 +140,7 @@ void Tracer::addCameraRegions(const scene::Object& obj) {
             addCameraRegions(**it);
         return;
     }
-    if (obj.inside(scene_.camera.location)) cameraInside_.push(regionOf(obj));
+    if (obj.inside(scene_.camera.location)) cameraInside_.push(InteriorStack::of(obj));
 }
 
 RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transmit,
@@ -461,7 +462,7 @@ RGB Tracer::shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, c
 }
 
 Tracer::Crossing Tracer::crossingOf(const scene::Object& obj, const State& state) const {
-    const InteriorStack::Region region = regionOf(obj);
+    const InteriorStack::Region region = InteriorStack::of(obj);
     const bool leaving = state.inside.contains(region.key);
     Crossing c{state.inside, state.inside.ior(state.band), 1.0, 1.0};
     if (leaving)
@@ -543,12 +544,20 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             if (!crossing) crossing = crossingOf(at.obj, state);
             out.reflectivity =
                 reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment);
+            out.reflectedSum += out.reflectivity;
+            // Inside a fading interior the part of the reflection that
+            // varies with the angle fades as the light here does, its
+            // minimum does not (measured with povray 3.7: a glass block
+            // of reflection {0, 1 fresnel} and {0.2, 0.8} shows its inner
+            // reflections faded, one of constant reflection whole).
+            const RGB shown =
+                reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment, state.fade);
             if (!out.reflectivity.isBlack()) {
                 const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-                out.color += out.reflectivity *
-                             reflectionExponent(
-                                 spawnReflection(at, reflected, out.reflectivity, state, counts),
-                                 fin.reflection.exponent);
+                out.color +=
+                    shown * reflectionExponent(
+                                spawnReflection(at, reflected, out.reflectivity, state, counts),
+                                fin.reflection.exponent);
             }
         } else {
             out.reflectivity = RGB(0.0);
@@ -615,7 +624,7 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
         // what the reflection term did not already take, so the surface
         // mirrors 100 % (measured: a prism of transmit 0.5 passes 0.5 * 0.5
         // of the light whatever its reflection value).
-        const RGB rest = unreflected(layers.reflectivity);
+        const RGB rest = unreflected(layers.reflectedSum);
         // The mirrored ray keeps the incoming ray's adc weight (measured:
         // scaling it by `rest` cuts rays povray traces).
         if (!rest.isBlack()) {
@@ -623,7 +632,11 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
             // perturbed normal sends it through (measured: bumps on a water
             // surface seen from below, interior/caustic2.pov).
             const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts);
+            // It fades over the way here as refracted light would
+            // (measured: a glass block with fade_distance shows its
+            // totally reflected edges as dim as its face), where the
+            // reflection term stays whole.
+            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts) * state.fade;
         }
     }
     return color;
@@ -651,14 +664,14 @@ RGB Tracer::traceDispersed(const Layers& layers, const SurfacePoint& at, const C
             sum += weight * trace({at.p, *bent}, at.eps, child, counts) * state.fade;
             seen += childTransmit / bands;
         } else {
-            const RGB rest = unreflected(layers.reflectivity);
+            const RGB rest = unreflected(layers.reflectedSum);
             const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
             State mirrored = child;
             mirrored.kind = scene::RayKind::Reflection;
             mirrored.inside = state.inside;
             mirrored.transmit = nullptr;
             ++counts.reflection;
-            sum += weight * rest * trace({at.p, reflected}, at.eps, mirrored, counts);
+            sum += weight * rest * trace({at.p, reflected}, at.eps, mirrored, counts) * state.fade;
         }
     }
     return sum;

@@ -46,11 +46,14 @@ struct RayCounts {
 class InteriorStack {
   public:
     struct Region {
-        const void* key = nullptr;  // identity: the Interior, or the primitive without one
+        const void* key =
+            nullptr;  // identity: the Interior, else Object::regionKey or the primitive
         const scene::Interior* interior = nullptr;  // null: ior 1, no fading
         bool hollow = false;                        // fog reaches rays inside
     };
     static constexpr int kCapacity = 16;  // deeper nesting is treated as air
+    // The region a ray enters or leaves at `primitive`'s surface.
+    static Region of(const scene::Object& primitive);
 
     bool empty() const { return size_ == 0; }
     int size() const { return size_; }
@@ -165,14 +168,16 @@ class Tracer {
     };
     // What the layers of a texture give: their colour, what they let
     // through (also as one grey number, for alpha output: povray counts
-    // filter by the pigment's grey), and the last layer's reflectivity
-    // and perturbed normal.
+    // filter by the pigment's grey), the last layer's reflectivity and
+    // perturbed normal, and all layers' reflectivity summed (what a total
+    // internal reflection leaves to the mirrored ray).
     struct Layers {
         RGB color{0.0};
         RGB through{1.0};
         double throughGrey = 1.0;
         bool transmits = false;
         RGB reflectivity{0.0};
+        RGB reflectedSum{0.0};
         Vec3 n;
     };
     RGB shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,

@@ -198,6 +198,8 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
                   const Object& flags) {
     const bool needsTexture = !obj->texture && texture;
     const bool needsInterior = !obj->interior && flags.interior;
+    const bool needsRegion =
+        !obj->interior && !flags.interior && flags.regionKey && obj->regionKey != flags.regionKey;
     const bool needsInteriorTexture = !obj->interiorTexture && flags.interiorTexture;
     const bool needsFlags =
         (flags.noShadow && !obj->noShadow) || (flags.noImage && !obj->noImage) ||
@@ -206,9 +208,12 @@ ObjectRef inherit(const ObjectRef& obj, const std::shared_ptr<const Texture>& te
         (flags.doubleIlluminate && !obj->doubleIlluminate) || (flags.hollow && !obj->hollow);
     const bool needsPhotons = flags.photons.given && !obj->photons.given;
     if (!obj->isCsg() && !needsTexture && !needsInterior && !needsInteriorTexture && !needsFlags &&
-        !needsPhotons)
+        !needsPhotons && !needsRegion)
         return obj;
     auto copy = std::make_shared<Object>(*obj);
+    // A CSG tree without interiors is one region, named by its top node.
+    if (!copy->interior && !needsInterior)
+        copy->regionKey = flags.regionKey ? flags.regionKey : copy->isCsg() ? copy.get() : nullptr;
     if (needsTexture) copy->texture = texture;
     if (needsInterior) copy->interior = flags.interior;
     if (needsInteriorTexture) copy->interiorTexture = flags.interiorTexture;

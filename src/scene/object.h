@@ -76,6 +76,14 @@ struct Object {
     // Null: the nearest ancestor's interior, finally none (air, ior 1).
     // Primitives sharing one Interior are one region for refraction.
     std::shared_ptr<const Interior> interior;
+    // Without an interior, inside which region of space a ray is between
+    // this object's surfaces: every primitive of one CSG tree without
+    // interiors is one region, as in povray, whose CSG children share their
+    // parent's (default) interior (measured: a ray in glass entering a
+    // cavity cut as `intersection { sphere box }` leaves it through the
+    // box's face back into the glass). Set by csg::resolveInheritance;
+    // null: the object alone.
+    const void* regionKey = nullptr;
     bool inverse = false;
     // Only the parts of the surface inside every clipping object remain.
     std::vector<ObjectRef> clippedBy;

@@ -9,8 +9,8 @@
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/object.h"
-#include "scene/radiosity.h"
 #include "scene/photon_settings.h"
+#include "scene/radiosity.h"
 
 namespace frameray::scene {
 
@@ -42,7 +42,13 @@ struct Scene {
     Color background{RGB(0.0), 0.0, 1.0};
     Atmosphere atmosphere;         // fogs, sky sphere, rainbows
     double languageVersion = 3.7;  // the #version in force at the end of parse
-    bool versionDeclared = false;
+    bool versionDeclared = false;  // by #version or the Version option
+
+    // The version the image is made by: povray 3.7 renders a scene that
+    // declares none as a pre-3.7 one (measured: a scene without #version
+    // renders as with `#version 3.6`: no gamma handling, 3.6's filter and
+    // sky), though it parses it as 3.7.
+    double renderVersion() const { return versionDeclared ? languageVersion : 3.62; }
 };
 
 }  // namespace frameray::scene

@@ -23,7 +23,10 @@ struct FrameContext {
     std::vector<std::filesystem::path> libraryPaths;
     // Declare=Name=Value options: numbers become floats, others strings.
     std::vector<std::pair<std::string, std::string>> declares;
-    double version = 3.7;       // Version option (+MV); #version overrides
+    double version = 3.7;  // Version option (+MV); #version overrides
+    // Whether the Version option was given: povray then treats the scene as
+    // declaring its version (no warning, and 3.7's gamma without #version).
+    bool versionGiven = false;
     std::string includeHeader;  // Include_Header (+HI): included before the scene
     // Non-empty: #fopen ... write/append is an error with this message,
     // before the file is touched (a sharded run: frames that pass state

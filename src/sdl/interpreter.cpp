@@ -77,7 +77,7 @@ scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file,
     // depends on the scene's version (image/gamma.cpp applies the rule).
     if (!scene.globals.assumedGammaSet) {
         const char* text =
-            r.version() >= 3.7 - 1e-9
+            r.version() >= 3.7 - 1e-9 && r.versionSeen()
                 ? "warning: assumed_gamma not specified in this POV-Ray 3.7 or later scene; "
                   "using 'assumed_gamma 1.0'"
                 : "warning: assumed_gamma not specified, so gamma correction is turned off "

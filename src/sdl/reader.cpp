@@ -34,6 +34,7 @@ const char* stackFloor() {
 Reader::Reader(const FrameContext& frame, TokenCache& cache, MessageSink& messages)
     : frame_(frame), cache_(cache), messages_(messages) {
     version_ = frame.version;
+    versionSeen_ = frame.versionGiven;
     endToken_.kind = TokenKind::End;
 }
 

@@ -37,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         render::FrameStats stats;
         const render::FrameImage frameImage = render::renderFrame(world, settings, stats);
         const auto gamma = image::GammaEncoding::forScene(
-            scene.globals.assumedGammaSet, scene.globals.assumedGamma, scene.languageVersion, 0);
+            scene.globals.assumedGammaSet, scene.globals.assumedGamma, scene.renderVersion(), 0);
         const image::EncodedImage encoded = image::encodeFrame(
             frameImage.width, frameImage.height, frameImage.rgb, frameImage.alpha, gamma, 8,
             {0, 0, frameImage.width, frameImage.height});

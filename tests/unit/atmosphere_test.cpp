@@ -236,6 +236,7 @@ TEST(AtmosphereView, SeveralFogsCombine) {
 
 TEST(AtmosphereView, SkyLayersOverBackground) {
     scene::Scene s;
+    s.versionDeclared = true;  // 3.7's sky
     s.background = Color(RGB(0.2, 0.4, 0.8), 0.5, 0.25);
     const render::AtmosphereView bare(s, true);
     // The background alone: transmit lowers it, filter does not.
@@ -254,6 +255,7 @@ TEST(AtmosphereView, SkyLayersOverBackground) {
 TEST(AtmosphereView, LegacySkyKeepsTheBackground) {
     scene::Scene s;
     s.languageVersion = 3.6;
+    s.versionDeclared = true;
     s.background = Color(RGB(0.2, 0.4, 0.8), 0, 0.5);
     const render::AtmosphereView bare(s, true);
     expectRGB(bare.sky({0, 0, 1}).rgb, 0.2, 0.4, 0.8);

@@ -24,6 +24,14 @@ TEST(Gamma, Povray37Rules) {
                                        old.languageVersion, 0)
             .encode(0.5),
         0.5);
+    // A scene that declares no version renders as a pre-3.7 one: no gamma
+    // handling without assumed_gamma (povray 3.7 measured).
+    scene::Scene undeclared;
+    EXPECT_LT(undeclared.renderVersion(), 3.7);
+    EXPECT_DOUBLE_EQ(
+        image::GammaEncoding::forScene(false, 1.0, undeclared.renderVersion(), 0).encode(0.5), 0.5);
+    undeclared.versionDeclared = true;
+    EXPECT_DOUBLE_EQ(undeclared.renderVersion(), 3.7);
 }
 
 TEST(World, ClosestHitAndShadowsAcrossBvhAndPlanes) {
