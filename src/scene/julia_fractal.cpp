@@ -65,14 +65,11 @@ JuliaFractal::Quat JuliaFractal::step(const Quat& q) const {
         }
         r = {real, scale * q[1], scale * q[2], scale * q[3]};
     } else {
+        // povray 3.7's hypercomplex `cube` squares too (measured: its
+        // shapes are those of sqr; only its march steps differ, below).
         Complex z1(q[0] - q[3], q[1] + q[2]), z2(q[0] + q[3], q[1] - q[2]);
-        if (function_ == Function::Sqr) {
-            z1 *= z1;
-            z2 *= z2;
-        } else {
-            z1 = z1 * z1 * z1;
-            z2 = z2 * z2 * z2;
-        }
+        z1 *= z1;
+        z2 *= z2;
         r = {(z1.real() + z2.real()) / 2, (z1.imag() + z2.imag()) / 2, (z1.imag() - z2.imag()) / 2,
              (z2.real() - z1.real()) / 2};
     }
@@ -96,7 +93,9 @@ bool JuliaFractal::probe(const Vec3& p, const Vec3& u, double& stepOut) const {
     // hypercomplex: q(0) ... q(k - 1) (q(0) while k < 2) and 2^max(k, 1).
     double normProduct = 1;
     Quat product = q;
-    double power = 2;
+    // povray's hypercomplex `cube` leaves the 2^k out of its gradient.
+    const bool doubling = function_ == Function::Sqr;
+    double power = doubling ? 2 : 1;
     for (int k = 0; k < maxIterations_; ++k) {
         const double f = norm2(q);
         if (f > bailout2_) {
@@ -119,7 +118,7 @@ bool JuliaFractal::probe(const Vec3& p, const Vec3& u, double& stepOut) const {
         }
         if (k >= 1) {
             product = hypercomplexProduct(q, product);
-            power *= 2;
+            if (doubling) power *= 2;
         }
         normProduct *= f;
         q = step(q);

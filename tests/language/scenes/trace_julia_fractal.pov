@@ -11,6 +11,8 @@ global_settings { assumed_gamma 1.0 }
 #declare J = julia_fractal { <.49,.5,-.34,.1> quaternion max_iteration 7 precision 400 rotate <110,50,-60> }
 #declare H = julia_fractal { <-.745,0,.113,.05> hypercomplex max_iteration 9 precision 20 scale <1,2,1> rotate <135,-30,0> }
 #declare C = julia_fractal { <-.2,.6,.2,0> quaternion cube max_iteration 6 precision 30 }
+// povray's hypercomplex cube squares (its march steps differ from sqr's).
+#declare HC = julia_fractal { <-.745,0,.113,.05> hypercomplex cube max_iteration 9 precision 20 scale <1,2,1> rotate <135,-30,0> }
 #macro T(F, S, D, Name)
     #local N = <0, 0, 0>;
     #local P = trace(F, S, D, N);
@@ -28,5 +30,6 @@ global_settings { assumed_gamma 1.0 }
     T(J, <-1.55 + I * 0.16, 3, -0.37>, -y, concat("quaternion ", str(I, 0, 0)))
     T(H, <-1.55 + I * 0.16, 3, -0.16>, -y, concat("hypercomplex ", str(I, 0, 0)))
     T(C, <-1.55 + I * 0.16, 3, 0.1>, -y, concat("cube ", str(I, 0, 0)))
+    T(HC, <-1.55 + I * 0.16, 3, -0.16>, -y, concat("hypercomplex cube ", str(I, 0, 0)))
 #end
 #fclose Out
