@@ -92,7 +92,7 @@ FrameSpec FrameList::operator[](size_t i) const {
     FrameSpec f;
     const long long n = first_ + (offset_ + static_cast<long long>(i) * stride_) * step_;
     f.number = static_cast<int>(n);
-    f.clock = initialClock_ + delta_ * static_cast<double>(n - initial_);
+    f.clock = static_cast<float>(clockStart_ + static_cast<double>(n - initial_) * clockStep_);
     f.clockDelta = delta_;
     f.animated = true;
     f.output = composeName({folder_.string(), base_, extension_}, true, n, digits_);
@@ -201,7 +201,9 @@ Sequence planSequence(const options::RenderOptions& o) {
     if (!seq.animated) {
         FrameSpec& f = frames.still_;
         f.number = 0;
-        f.clock = o.clockSet ? o.clock : 0.0;
+        // povray keeps the clock in single precision (+K0.4237 is
+        // 0.42370000481605529785 in the scene).
+        f.clock = o.clockSet ? static_cast<float>(o.clock) : 0.0;
         f.output = outputName(o, seq.fileType, false, 0, 0);
         f.log = fs::path(f.output).replace_extension(".log");
         seq.clockOn = o.clockSet;
@@ -230,8 +232,11 @@ Sequence planSequence(const options::RenderOptions& o) {
         frames.count_ =
             static_cast<size_t>((static_cast<long long>(last) - first) / frames.step_ + 1);
         frames.initial_ = initial;
-        frames.initialClock_ = o.initialClock;
         frames.delta_ = delta;
+        const float start = static_cast<float>(o.initialClock);
+        frames.clockStart_ = start;
+        frames.clockStep_ = static_cast<double>(static_cast<float>(o.finalClock) - start) /
+                            static_cast<double>(final - initial);
         frames.digits_ = static_cast<int>(std::to_string(final).size());
         const NameParts parts = nameParts(o, seq.fileType);
         frames.folder_ = parts.folder;

@@ -69,7 +69,13 @@ class FrameList {
     long long first_ = 0, step_ = 1, offset_ = 0, stride_ = 1;
     size_t count_ = 0;
     int initial_ = 0, digits_ = 1;
-    double initialClock_ = 0, delta_ = 0;
+    double delta_ = 0;
+    // povray 3.7 keeps the clock in single precision: its start, and its
+    // step (the difference of the single-precision end points, divided in
+    // double precision) from which each frame's clock is summed in double
+    // and then rounded to single precision (measured against povray's
+    // clock for several ranges, cyclic or not, to the last bit).
+    double clockStart_ = 0, clockStep_ = 0;
     std::filesystem::path folder_;
     std::string base_, extension_;
 };

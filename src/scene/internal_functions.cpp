@@ -535,6 +535,10 @@ double noise3dOriginal(const double* a) {
     return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::Original);
 }
 
+double noise3dPerlin(const double* a) {
+    return solidNoise({a[0], a[1], a[2]}, NoiseGenerator::Perlin);
+}
+
 // A torus (major radius a[3], in the xz plane) wound with a helical tube.
 // In the torus' own coordinates — d the distance from the core circle,
 // θ = atan2(x, z) around the y axis (π/2 on the y axis itself), ψ the angle
@@ -685,20 +689,19 @@ double quantum(const double* a) {
 // povray picks the generator from the integer part of the parameter, two
 // lowest bits: 2 range-corrected, 3 (and -1) Perlin, anything else the
 // original (measured with -1 … 5).
-NoiseGenerator generatorParameter(double g, const char* function) {
+NoiseGenerator generatorParameter(double g) {
     switch (static_cast<int>(g) & 3) {
         case 2:
             return NoiseGenerator::RangeCorrected;
         case 3:
-            throw std::runtime_error(std::string("not supported yet: noise_generator 3 in ") +
-                                     function);
+            return NoiseGenerator::Perlin;
         default:
             return NoiseGenerator::Original;
     }
 }
 
 double noiseGenerator(const double* a) {
-    return solidNoise({a[0], a[1], a[2]}, generatorParameter(a[3], "f_noise_generator"));
+    return solidNoise({a[0], a[1], a[2]}, generatorParameter(a[3]));
 }
 
 // Noise in [-1, 1] at p scaled by `scale`.
@@ -718,7 +721,7 @@ double signedNoise(const double* a, double scale, NoiseGenerator g) {
 // uses one parameter set (all of povray's example scenes do).
 double ridgedMf(const double* a) {
     const double h = a[3], lacunarity = a[4], octaves = a[5], offset = a[6], gain = a[7];
-    const NoiseGenerator g = generatorParameter(a[8], "f_ridged_mf");
+    const NoiseGenerator g = generatorParameter(a[8]);
     auto ridge = [&](double scale) {
         const double s = offset - std::abs(signedNoise(a, scale, g));
         return s * s;
@@ -742,7 +745,7 @@ double ridgedMf(const double* a) {
 double heteroMf(const double* a) {
     const double h = a[3], lacunarity = a[4], octaves = a[5], offset = a[6];
     const int t = a[7] >= 1 ? static_cast<int>(a[7]) : 0;
-    const NoiseGenerator g = generatorParameter(a[8], "f_hetero_mf");
+    const NoiseGenerator g = generatorParameter(a[8]);
     double value = offset + signedNoise(a, 1, g);
     double frequency = 1;
     int i = 1;
@@ -767,7 +770,7 @@ double heteroMf(const double* a) {
 // a fractional count adds that fraction of the next octave (measured).
 double ridge(const double* a) {
     const double lambda = a[3], octaves = a[4], omega = a[5], offset = a[6], ridgeAt = a[7];
-    const NoiseGenerator g = generatorParameter(a[8], "f_ridge");
+    const NoiseGenerator g = generatorParameter(a[8]);
     const double spread = std::abs(ridgeAt - 0.5) + 0.5;
     auto term = [&](double scale) {
         return std::abs(ridgeAt - solidNoise({a[0] * scale, a[1] * scale, a[2] * scale}, g)) /
@@ -792,24 +795,6 @@ double ridge(const double* a) {
 // Parameter values frameray cannot match yet: refused when the call is
 // compiled with them as constants (an isosurface cannot report an error
 // mid-render), and by the formula itself otherwise.
-std::string refuseGenerator3(const double* a, const bool* known, int index, const char* name) {
-    if (known[index] && (static_cast<int>(a[index]) & 3) == 3)
-        return std::string("noise_generator 3 in ") + name;
-    return {};
-}
-
-std::string refuseNoiseGenerator(const double* a, const bool* known) {
-    return refuseGenerator3(a, known, 3, "f_noise_generator");
-}
-std::string refuseRidgedMf(const double* a, const bool* known) {
-    return refuseGenerator3(a, known, 8, "f_ridged_mf");
-}
-std::string refuseHeteroMf(const double* a, const bool* known) {
-    return refuseGenerator3(a, known, 8, "f_hetero_mf");
-}
-std::string refuseRidge(const double* a, const bool* known) {
-    return refuseGenerator3(a, known, 8, "f_ridge");
-}
 std::string refuseMesh1(const double* a, const bool* known) {
     if ((known[3] && !(a[3] > 0)) || (known[4] && !(a[4] > 0)))
         return "f_mesh1 with a thread distance <= 0";
@@ -854,7 +839,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_helix2", 7, helix2},
     {"f_hex_x", 1, hexX},
     {"f_hex_y", 1, hexY},
-    {"f_hetero_mf", 6, heteroMf, refuseHeteroMf},
+    {"f_hetero_mf", 6, heteroMf},
     {"f_hunt_surface", 1, fieldPoly<huntSurface>},
     {"f_hyperbolic_torus", 3, hyperbolicTorus},
     {"f_isect_ellipsoids", 4, isectEllipsoids},
@@ -883,8 +868,8 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_quartic_saddle", 1, fieldPoly<quarticSaddle>},
     {"f_quartic_cylinder", 3, quarticCylinder},
     {"f_r", 0, radius},
-    {"f_ridge", 6, ridge, refuseRidge},
-    {"f_ridged_mf", 6, ridgedMf, refuseRidgedMf},
+    {"f_ridge", 6, ridge},
+    {"f_ridged_mf", 6, ridgedMf},
     {"f_rounded_box", 4, roundedBox},
     {"f_sphere", 1, sphere},
     {"f_spikes", 5, spikes},
@@ -903,7 +888,7 @@ constexpr std::array<Entry, 79> kInternals = {{
     {"f_witch_of_agnesi_2d", 6, witchOfAgnesi2d},
     {"f_noise3d", 0, noise3d},
     {"", 0, nullptr},
-    {"f_noise_generator", 1, noiseGenerator, refuseNoiseGenerator},
+    {"f_noise_generator", 1, noiseGenerator},
 }};
 
 }  // namespace
@@ -914,6 +899,7 @@ InternalFunction internalFunction(int n, NoiseGenerator noise) {
     InternalFunction result{std::string(e.name), e.extraParams, nullptr};
     auto formula = e.formula;
     if (formula == noise3d && noise == NoiseGenerator::Original) formula = noise3dOriginal;
+    if (formula == noise3d && noise == NoiseGenerator::Perlin) formula = noise3dPerlin;
     if (formula) result.function = std::make_shared<FormulaFunction>(formula, e.refuse);
     return result;
 }

@@ -10,9 +10,26 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// Bisection steps refining a crossing: the bracket starts one march step
-// wide, so 40 halvings reach well below any pixel.
-constexpr int kBisections = 40;
+// povray's tolerance: hits are refined to it, and a ray starting inside
+// the set first moves twice it.
+constexpr double kTolerance = 1e-7;
+// povray drops intersections nearer than this to a ray's start.
+constexpr double kMinDepth = 1e-4;
+
+double norm2(const std::array<double, 4>& q) {
+    return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+}
+
+// Hypercomplex product, through the two complex components (x - w) + (y +
+// z) i and (x + w) + (y - z) i, which multiply independently.
+std::array<double, 4> hypercomplexProduct(const std::array<double, 4>& a,
+                                          const std::array<double, 4>& b) {
+    const Complex a1(a[0] - a[3], a[1] + a[2]), a2(a[0] + a[3], a[1] - a[2]);
+    const Complex b1(b[0] - b[3], b[1] + b[2]), b2(b[0] + b[3], b[1] - b[2]);
+    const Complex p1 = a1 * b1, p2 = a2 * b2;
+    return {(p1.real() + p2.real()) / 2, (p1.imag() + p2.imag()) / 2, (p1.imag() - p2.imag()) / 2,
+            (p2.real() - p1.real()) / 2};
+}
 
 }  // namespace
 
@@ -23,8 +40,14 @@ JuliaFractal::JuliaFractal(const std::array<double, 4>& c, Algebra algebra, Func
       function_(function),
       maxIterations_(std::max(1, maxIterations)),
       stepLength_(1.0 / std::max(precision, 1e-3)) {
-    const double cLength = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] + c[3] * c[3]);
-    radius_ = algebra == Algebra::Quaternion ? 1.0 + cLength : 4.0;
+    if (algebra == Algebra::Quaternion) {
+        const double cLength = std::sqrt(norm2(c));
+        radius_ = std::min(1.0 + cLength + kTolerance, 2.0);
+        bailout2_ = radius_ * radius_ + kTolerance;
+    } else {
+        radius_ = 4.0;
+        bailout2_ = 16.0;
+    }
     radius2_ = radius_ * radius_;
 }
 
@@ -42,14 +65,11 @@ JuliaFractal::Quat JuliaFractal::step(const Quat& q) const {
         }
         r = {real, scale * q[1], scale * q[2], scale * q[3]};
     } else {
+        // povray 3.7's hypercomplex `cube` squares too (measured: its
+        // shapes are those of sqr; only its march steps differ, below).
         Complex z1(q[0] - q[3], q[1] + q[2]), z2(q[0] + q[3], q[1] - q[2]);
-        if (function_ == Function::Sqr) {
-            z1 *= z1;
-            z2 *= z2;
-        } else {
-            z1 = z1 * z1 * z1;
-            z2 = z2 * z2 * z2;
-        }
+        z1 *= z1;
+        z2 *= z2;
         r = {(z1.real() + z2.real()) / 2, (z1.imag() + z2.imag()) / 2, (z1.imag() - z2.imag()) / 2,
              (z2.real() - z1.real()) / 2};
     }
@@ -60,7 +80,47 @@ JuliaFractal::Quat JuliaFractal::step(const Quat& q) const {
 bool JuliaFractal::inside(const Vec3& p) const {
     Quat q = {p.x, p.y, p.z, 0};
     for (int k = 0; k < maxIterations_; ++k) {
-        if (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > radius2_) return false;
+        if (norm2(q) > bailout2_) return false;
+        q = step(q);
+    }
+    return true;
+}
+
+bool JuliaFractal::probe(const Vec3& p, const Vec3& u, double& stepOut) const {
+    stepOut = stepLength_;
+    Quat q = {p.x, p.y, p.z, 0};
+    // Quaternions: the product of |q(j)|^2 over the iterates before k;
+    // hypercomplex: q(0) ... q(k - 1) (q(0) while k < 2) and 2^max(k, 1).
+    double normProduct = 1;
+    Quat product = q;
+    // povray's hypercomplex `cube` leaves the 2^k out of its gradient.
+    const bool doubling = function_ == Function::Sqr;
+    double power = doubling ? 2 : 1;
+    for (int k = 0; k < maxIterations_; ++k) {
+        const double f = norm2(q);
+        if (f > bailout2_) {
+            if (algebra_ == Algebra::Quaternion) {
+                const double base = function_ == Function::Sqr ? 2.0 : 3.0;
+                stepOut = std::pow(base, -(k + 1)) * std::log(f) / std::sqrt(normProduct);
+            } else {
+                const Quat& a = product;
+                const Quat n = {q[0] * power, q[1] * power, q[2] * power, q[3] * power};
+                const Vec3 g(a[0] * n[0] + a[1] * n[1] + a[2] * n[2] + a[3] * n[3],
+                             -a[1] * n[0] + a[0] * n[1] - a[3] * n[2] + a[2] * n[3],
+                             -a[2] * n[0] - a[3] * n[1] + a[0] * n[2] + a[1] * n[3]);
+                const double along = dot(g, u);
+                if (along < -1e-8) {
+                    const double s = -2.0 * along;
+                    if (f > stepLength_ * s && f < 30 * stepLength_ * s) stepOut = f / s;
+                }
+            }
+            return false;
+        }
+        if (k >= 1) {
+            product = hypercomplexProduct(q, product);
+            if (doubling) power *= 2;
+        }
+        normProduct *= f;
         q = step(q);
     }
     return true;
@@ -85,39 +145,62 @@ Vec3 JuliaFractal::normal(const Vec3& p) const {
 
 template <typename Crossing>
 void JuliaFractal::march(const Ray& ray, double tMin, double tMax, Crossing&& crossing) const {
-    // The part of the ray inside the bounding sphere.
-    const double dd = dot(ray.direction, ray.direction);
-    if (!(dd > 0)) return;
-    const double b = dot(ray.origin, ray.direction) / dd;
-    const double disc = b * b - (dot(ray.origin, ray.origin) - radius2_) / dd;
-    if (disc <= 0) return;
+    // povray marches the unit direction in "depth" units; t = depth / |d|.
+    const double len = std::sqrt(dot(ray.direction, ray.direction));
+    if (!(len > 0)) return;
+    const Vec3 u = ray.direction / len;
+    const double b = dot(ray.origin, u);
+    const double disc = b * b - (dot(ray.origin, ray.origin) - radius2_);
+    if (!(disc > 0)) return;
     const double root = std::sqrt(disc);
-    const double t0 = std::max(tMin, -b - root), t1 = std::min(tMax, -b + root);
-    if (!(t0 < t1)) return;
-    const double dt = stepLength_ / std::sqrt(dd);  // 1 / precision in object space
-    double prevT = t0;
-    bool prevInside = inside(ray.at(t0));
-    // Outside the bounding sphere nothing is inside (|q(0)| > R), so a set
-    // reaching the sphere (c = 0: the unit ball) is entered and left there.
-    const bool entersSphere = t0 > tMin, leavesSphere = t1 < tMax;
-    if (prevInside && entersSphere && !crossing(t0)) return;
-    for (int k = 1;; ++k) {
-        const double t = std::min(t1, t0 + k * dt);
-        const bool in = inside(ray.at(t));
-        if (in != prevInside) {
-            double lo = prevT, hi = t;
-            for (int i = 0; i < kBisections; ++i) {
-                const double mid = 0.5 * (lo + hi);
-                (inside(ray.at(mid)) == prevInside ? lo : hi) = mid;
+    const double depthMax = -b + root;
+    if (depthMax < kTolerance) return;
+    double depth = std::max(-b - root, kTolerance);
+    if (depth / len >= tMax) return;
+
+    Vec3 next = ray.origin + u * depth;
+    double dist = 0;
+    bool current = probe(next, u, dist);
+    if (current) {  // starting inside: move on a little first
+        next += u * (2 * kTolerance);
+        depth += 2 * kTolerance;
+        if (depth > depthMax) return;
+        current = probe(next, u, dist);
+    }
+    while (depth < depthMax) {
+        Vec3 point = next;
+        double distNext = 0;
+        bool nextInside = current;
+        for (;;) {  // march to the next change
+            dist = std::max(dist, stepLength_);
+            depth += dist;
+            if (depth > depthMax || depth / len > tMax) return;
+            point = next;
+            next += u * dist;
+            nextInside = probe(next, u, distNext);
+            if (nextInside != current) {
+                depth -= dist;
+                break;
             }
-            if (!crossing(hi)) return;
+            dist = distNext;
         }
-        if (t >= t1) {
-            if (in && leavesSphere) crossing(t1);
-            return;
+        // Bisection: `point` stays on the side of `current`.
+        while (dist > kTolerance) {
+            dist *= 0.5;
+            const Vec3 mid = point + u * dist;
+            if (inside(mid) == current) {
+                point = mid;
+                depth += dist;
+                if (depth > depthMax) return;
+            }
         }
-        prevT = t;
-        prevInside = in;
+        if (!current) depth += dist;  // the hit is the bracket's inside end
+        const double t = depth / len;
+        if (t > tMin && !crossing(t)) return;
+        // povray carries on from the end of the bracket but counts depth
+        // from the hit.
+        dist = distNext;
+        current = nextInside;
     }
 }
 
@@ -130,10 +213,19 @@ void JuliaFractal::allHits(const Ray& ray, double tMin, double tMax,
 }
 
 bool JuliaFractal::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
+    // povray stops at the first crossing for a fractal outside CSG, and its
+    // caller drops a crossing nearer than 1e-4 to the ray's start: a ray
+    // leaving the surface from just inside meets the surface it leaves
+    // first, and so nothing. A ray continued past an earlier hit (tMin
+    // above 0) starts there, as povray's continued rays do.
+    const double start = std::max(tMin, 0.0);
+    const Ray from{ray.at(start), ray.direction};
     bool found = false;
-    march(ray, tMin, tMax, [&](double hit) {
-        t = hit;
-        found = true;
+    march(from, -kInfinity, tMax - start, [&](double hit) {
+        if (hit > kMinDepth && start + hit < tMax) {
+            t = start + hit;
+            found = true;
+        }
         return false;
     });
     return found;

@@ -57,6 +57,15 @@ class TriangleMesh {
         const auto& f = inputFaces_[i].vertex;
         return {vertices_[f[0]], vertices_[f[1]], vertices_[f[2]]};
     }
+    // Its corners' unit normals (a smooth triangle); false for a flat one.
+    bool inputTriangleNormals(size_t i, std::array<Vec3, 3>& n) const {
+        for (size_t k = 0; k < 3; ++k) {
+            const int32_t j = inputFaces_[i].normal[k];
+            if (j < 0 || static_cast<size_t>(j) >= normals_.size()) return false;
+            n[k] = normals_[static_cast<size_t>(j)];
+        }
+        return true;
+    }
     // Its corners' uv (uv_vectors); false when it has none.
     bool inputTriangleUvs(size_t i, std::array<std::array<double, 2>, 3>& uv) const {
         for (size_t k = 0; k < 3; ++k) {

@@ -19,6 +19,41 @@ bool MeshCamera::faceRay(size_t m, size_t face, Ray& ray, const std::array<doubl
     return true;
 }
 
+bool MeshCamera::smoothFaceRay(size_t face, const std::array<double, 3>& w, Ray& ray) const {
+    const Placed& placed = meshes.front();
+    std::array<Vec3, 3> n;
+    if (!placed.mesh->inputTriangleNormals(face, n)) return false;
+    const std::array<Vec3, 3> c = placed.mesh->inputTriangle(face);
+    // In the mesh's own space, as povray: the blend is left at its length
+    // (a little under 1) for the start offset, then carried to world space.
+    const Vec3 blend = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+    if (!(dot(blend, blend) > 0)) return false;
+    const Vec3 start = c[0] * w[0] + c[1] * w[1] + c[2] * w[2] + blend * startOffset;
+    ray.origin = placed.toWorld.point(start);
+    const Vec3 dir = normalize(placed.toWorld.normal(blend));
+    ray.direction = reverse ? -dir : dir;
+    return true;
+}
+
+bool MeshCamera::hasUnblendableUvFace() const {
+    if (meshes.empty()) return false;
+    const TriangleMesh& mesh = *meshes.front().mesh;
+    // povray treats corner normals as equal when their dot product is
+    // within about 1e-10 of 1 (measured between 4e-11 and 4e-7); refuse a
+    // wider band so that no face povray makes flat is blended here.
+    constexpr double kSame = 1e-8;
+    for (size_t f = 0; f < mesh.inputTriangleCount(); ++f) {
+        std::array<std::array<double, 2>, 3> uv;
+        if (!mesh.inputTriangleUvs(f, uv)) continue;
+        std::array<Vec3, 3> n;
+        if (!mesh.inputTriangleNormals(f, n)) return true;
+        if (1 - dot(n[0], n[1]) < kSame && 1 - dot(n[0], n[2]) < kSame &&
+            1 - dot(n[1], n[2]) < kSame)
+            return true;
+    }
+    return false;
+}
+
 void MeshCamera::prepareUvLookup() {
     uvFaces_.clear();
     cells_.clear();
@@ -81,6 +116,7 @@ bool MeshCamera::uvRay(double u, double v, Ray& ray) const {
             ((t[1][0] - t[0][0]) * (v - t[0][1]) - (u - t[0][0]) * (t[1][1] - t[0][1])) / d;
         const double w0 = 1 - w1 - w2;
         if (w0 < -kEdge || w1 < -kEdge || w2 < -kEdge) continue;
+        if (smooth && smoothFaceRay(uvFaces_[i].face, {w0, w1, w2}, ray)) return true;
         return faceRay(0, uvFaces_[i].face, ray, {w0, w1, w2});
     }
     return false;
@@ -97,6 +133,17 @@ void MeshCamera::pixelRays(int x, int y, int width, int height, std::vector<Ray>
     }
     const size_t index = static_cast<size_t>(std::max(y - 1, 0)) * static_cast<size_t>(width) +
                          static_cast<size_t>(x);
+    if (distribution == 2) {
+        const size_t n = meshes.size();
+        const size_t stripWidth = static_cast<size_t>(width) / n;
+        if (stripWidth == 0) return;
+        const double strip = static_cast<double>(width) / static_cast<double>(n);
+        const size_t m = std::min(static_cast<size_t>(x / strip), n - 1);
+        const size_t face =
+            static_cast<size_t>(std::max(y - 1, 0)) * stripWidth + static_cast<size_t>(x);
+        if (faceRay(m, face, ray)) rays.push_back(ray);
+        return;
+    }
     if (distribution == 0) {
         const size_t count =
             std::min(meshes.size(), static_cast<size_t>(std::max(raysPerPixel, 1)));

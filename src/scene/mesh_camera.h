@@ -16,9 +16,16 @@
 //     except u = (W - 1.5) / W in the last column and v = 1 - 0.5 / H in
 //     the top row; the ray starts at the point of the (first) mesh whose
 //     uv_vectors hold it, along that face's normal as above. A uv point on
-//     no face stays black.
-// Distribution 2 (face chosen by mesh interleaving) and `smooth` are not
-// reproduced.
+//     no face stays black;
+//   - `smooth` (distribution 3): the ray runs along the face's corner
+//     normals blended by the point's barycentric weights; `location` z
+//     moves the start along that blended, not yet unit, normal in the
+//     mesh's own space (flat faces: see hasUnblendableUvFace);
+//   - distribution 2: side-by-side cameras. Mesh k of n covers the columns
+//     [k W / n, (k + 1) W / n); its face is row * (W / n) + x with the
+//     image's x, not the column inside the strip (as povray 3.7: every
+//     strip but the first starts k rows down its mesh). A pixel past a
+//     mesh's last face stays black.
 #pragma once
 
 #include <array>
@@ -40,10 +47,18 @@ struct MeshCamera {
     std::vector<Placed> meshes;
     double startOffset = 0;  // the camera's location z
     bool reverse = false;    // the camera's direction z < 0
+    bool smooth = false;     // distribution 3: blend smooth faces' normals
 
     // Distribution 3: indexes the first mesh's faces by their uv; call
     // once the meshes are in.
     void prepareUvLookup();
+
+    // `smooth` over a face povray blends no normals for: a flat one, or a
+    // smooth one whose corner normals (nearly) agree, which povray makes
+    // flat. povray then gives rays along no normal of the face (+x or +y
+    // of the mesh, measured), so frameray refuses such a mesh. True when
+    // the first mesh has a uv-mapped face of either kind.
+    bool hasUnblendableUvFace() const;
 
     // The rays of pixel (x, y) of a width x height image, appended to `rays`.
     void pixelRays(int x, int y, int width, int height, std::vector<Ray>& rays) const;
@@ -54,6 +69,10 @@ struct MeshCamera {
     // a degenerate one.
     bool faceRay(size_t m, size_t face, Ray& ray,
                  const std::array<double, 3>& w = {1.0 / 3, 1.0 / 3, 1.0 / 3}) const;
+    // `smooth`: the ray from the point with weights `w` of smooth face
+    // `face` of the first mesh, along its blended corner normals; false on
+    // a flat face.
+    bool smoothFaceRay(size_t face, const std::array<double, 3>& w, Ray& ray) const;
     // Distribution 3: the ray from uv point (u, v), if a face holds it.
     bool uvRay(double u, double v, Ray& ray) const;
 

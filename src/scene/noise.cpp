@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "scene/perlin_noise.h"
 #include "util/lattice_hash.h"
 
 namespace frameray::scene {
@@ -123,8 +124,7 @@ inline void visitCorners(const Vec3& p, Visit&& visit) {
 }  // namespace
 
 double solidNoise(const Vec3& p, NoiseGenerator generator) {
-    // Generator 3 is not reproduced yet; the parser refuses it, so it never
-    // reaches here.
+    if (generator == NoiseGenerator::Perlin) return perlinNoise(p);
     double sum = 0;
     visitCorners(p, [&](const double* t, double w, double x, double y, double z) {
         sum += corner(t, w, x, y, z);

@@ -18,7 +18,6 @@ std::shared_ptr<const scene::Shape> parseJuliaFractal(BuildContext& c, const Tok
     const std::array<double, 4> constant = {param.v[0], param.v[1], param.v[2], param.v[3]};
     Algebra algebra = Algebra::Quaternion;
     Function function = Function::Sqr;
-    Token functionAt = kind;
     double maxIterations = 20, precision = 20;
     for (;;) {
         const Token t = r.peek();
@@ -38,7 +37,6 @@ std::shared_ptr<const scene::Shape> parseJuliaFractal(BuildContext& c, const Tok
             case Keyword::kw_cube:
                 r.next();
                 function = Function::Cube;
-                functionAt = t;
                 continue;
             case Keyword::kw_exp:
             case Keyword::kw_reciprocal:
@@ -80,10 +78,6 @@ std::shared_ptr<const scene::Shape> parseJuliaFractal(BuildContext& c, const Tok
         }
         break;
     }
-    // Cubing hypercomplex numbers does not give povray's shape (measured);
-    // only their square is reproduced.
-    if (algebra == Algebra::Hypercomplex && function == Function::Cube)
-        r.unsupported(functionAt, "julia_fractal hypercomplex cube");
     if (maxIterations < 1) r.fail(kind, "julia_fractal needs max_iteration 1 or more");
     if (!(precision > 0)) r.fail(kind, "julia_fractal needs a precision above 0");
     return std::make_shared<scene::JuliaFractal>(constant, algebra, function,

@@ -2,7 +2,6 @@
 // [mesh { ... } ...] [smooth] } inside a camera block (povray 3.7). Each
 // mesh is a mesh statement (often `mesh { Declared transforms }`); its
 // faces, in the order written, give the primary rays (scene/mesh_camera.h).
-#include <fmt/format.h>
 
 #include "scene/mesh.h"
 #include "scene/mesh_camera.h"
@@ -37,9 +36,7 @@ std::shared_ptr<scene::MeshCamera> parseMeshCamera(BuildContext& c, const Token&
     r.accept(Sym::Comma);
     if (rays < 1 || rays != static_cast<int>(rays))
         r.fail(raysAt, "mesh_camera needs a whole number of rays per pixel, 1 or more");
-    if (distribution == 2)
-        r.unsupported(distributionAt, fmt::format("mesh_camera distribution {}", distribution));
-    if (distribution != 0 && distribution != 1 && distribution != 3)
+    if (distribution != 0 && distribution != 1 && distribution != 2 && distribution != 3)
         r.fail(distributionAt, "mesh_camera distribution must be 0, 1, 2 or 3");
     camera->raysPerPixel = static_cast<int>(rays);
     camera->distribution = static_cast<int>(distribution);
@@ -53,15 +50,18 @@ std::shared_ptr<scene::MeshCamera> parseMeshCamera(BuildContext& c, const Token&
             r.fail(meshAt, "mesh_camera needs meshes");
         camera->meshes.push_back(std::move(placed));
     }
-    if (r.peek().is(Keyword::kw_smooth)) r.unsupported(r.peek(), "mesh_camera smooth");
+    const Token smoothAt = r.peek();
+    if (r.accept(Keyword::kw_smooth)) camera->smooth = true;
     r.expect(Sym::RBrace, "'}' closing mesh_camera");
     if (camera->meshes.empty()) r.fail(at, "mesh_camera needs at least one mesh");
     if (camera->distribution == 0 &&
         static_cast<size_t>(camera->raysPerPixel) > camera->meshes.size())
         r.fail(raysAt, "Rays per pixel must be <= number of meshes");
+    if (camera->distribution >= 2 && camera->raysPerPixel != 1)
+        r.fail(raysAt, "Rays per pixel must be 1 for distribution 2 or 3");
     if (camera->distribution == 3) {
-        if (camera->raysPerPixel != 1)
-            r.fail(raysAt, "Rays per pixel must be 1 for distribution 3");
+        if (camera->smooth && camera->hasUnblendableUvFace())
+            r.unsupported(smoothAt, "mesh_camera smooth over a flat face");
         camera->prepareUvLookup();
     }
     return camera;

@@ -887,7 +887,7 @@ scene::NoiseGenerator parseNoiseGenerator(BuildContext& c, const Token& at) {
     const double g = r.parseFloat();
     if (g == 1) return scene::NoiseGenerator::Original;
     if (g == 2) return scene::NoiseGenerator::RangeCorrected;
-    if (g == 3) r.unsupported(at, "noise_generator 3");
+    if (g == 3) return scene::NoiseGenerator::Perlin;
     r.fail(at, fmt::format("noise_generator must be 1, 2 or 3, found {}", g));
 }
 

@@ -7,6 +7,7 @@
 
 #include "render/camera_rays.h"
 #include "render/focal_blur.h"
+#include "scene/mesh_camera.h"
 #include "sdl/interpreter.h"
 #include "util/chi_square.h"
 
@@ -193,4 +194,85 @@ TEST(CameraRays, OmnimaxMatchesPovrayProbe) {
     const Vec3 d = unitDirection(rays, 8.5, 6.5);
     EXPECT_NEAR(std::acos(d.z), 13.631 * kPi / 180, 1e-3);
     EXPECT_FALSE(rays.generate(0.5, 0.5));
+}
+
+namespace {
+
+// The rays of pixel (x, y) of a width x height image of the scene's mesh_camera.
+std::vector<scene::Ray> meshCameraRays(const scene::Scene& s, int x, int y, int width, int height) {
+    std::vector<scene::Ray> rays;
+    EXPECT_TRUE(s.camera.mesh);
+    if (s.camera.mesh) s.camera.mesh->pixelRays(x, y, width, height, rays);
+    return rays;
+}
+
+}  // namespace
+
+TEST(MeshCamera, Distribution2NumbersFacesByTheImageColumn) {
+    // Two 2 x 3 grids side by side in a 4 x 3 image. Face f of a grid is
+    // the triangle at x = f, so a ray's start x tells its face; mesh 1 sits
+    // at z = 5. Row y takes face row max(y - 1, 0) (as every distribution);
+    // the right half's face is row * 2 + the image's column, so it starts
+    // one row down its grid and its last row runs past the last face.
+    const auto s = parse(
+        "#declare G = mesh {\n"
+        "#for (F, 0, 5) triangle { <F, 0, 0>, <F, 1, 0>, <F + 1, 0, 0> } #end }\n"
+        "camera { mesh_camera { 1 2 mesh { G } mesh { G translate 5 * z } } }");
+    auto startFace = [&](int x, int y, double& z) {
+        const auto rays = meshCameraRays(s, x, y, 4, 3);
+        EXPECT_EQ(rays.size(), 1u) << x << ", " << y;
+        if (rays.empty()) return -1.0;
+        z = rays[0].origin.z;
+        return std::floor(rays[0].origin.x);
+    };
+    double z = 0;
+    EXPECT_EQ(startFace(0, 0, z), 0);
+    EXPECT_EQ(z, 0);
+    EXPECT_EQ(startFace(1, 2, z), 3);
+    EXPECT_EQ(startFace(2, 0, z), 2);  // mesh 1, face 0 * 2 + 2
+    EXPECT_EQ(z, 5);
+    EXPECT_EQ(startFace(3, 1, z), 3);
+    EXPECT_EQ(startFace(2, 2, z), 4);
+    EXPECT_TRUE(meshCameraRays(s, 3, 3, 4, 4).empty());  // face 2 * 2 + 3 = 7 > 5
+    EXPECT_THROW(parse("#declare G = mesh { triangle { 0, x, y } }\n"
+                       "camera { mesh_camera { 2 2 mesh { G } mesh { G } } }"),
+                 sdl::SdlError);
+}
+
+TEST(MeshCamera, SmoothBlendsTheCornerNormalsAtTheUvPoint) {
+    // One smooth triangle covering uv [0, 1]^2's lower-left half; pixel
+    // (10, 50) of 100 x 100 is uv (0.1, 0.5): barycentric weights 0.4 (a),
+    // 0.1 (b), 0.5 (c).
+    const std::string mesh =
+        "mesh { smooth_triangle { <0, 0, 0>, <0, 0, 1>, <2, 0, 0>, <1, 0, 1>, <0, 2, 0>, "
+        "<0, 1, 1> uv_vectors <0, 0>, <1, 0>, <0, 1> } }";
+    const auto flat = parse("camera { mesh_camera { 1 3 " + mesh + " } location <0, 0, 0.5> }");
+    const auto smooth =
+        parse("camera { mesh_camera { 1 3 " + mesh + " smooth } location <0, 0, 0.5> }");
+    const Vec3 a = normalize(Vec3(0, 0, 1)), b = normalize(Vec3(1, 0, 1)),
+               c = normalize(Vec3(0, 1, 1));
+    const Vec3 blend = a * 0.4 + b * 0.1 + c * 0.5;
+    const Vec3 point(0.2, 1.0, 0);
+    const auto f = meshCameraRays(flat, 10, 50, 100, 100);
+    const auto r = meshCameraRays(smooth, 10, 50, 100, 100);
+    ASSERT_EQ(f.size(), 1u);
+    ASSERT_EQ(r.size(), 1u);
+    // The face normal is -z (cross(c - a, b - a)), the blend is not.
+    expectNear(normalize(f[0].direction), {0, 0, -1}, 1e-12);
+    expectNear(normalize(r[0].direction), normalize(blend), 1e-12);
+    // location z moves the start along the blend as it is (shorter than 1).
+    expectNear(r[0].origin, point + blend * 0.5, 1e-12);
+}
+
+TEST(MeshCamera, SmoothOverAFlatFaceIsRefused) {
+    EXPECT_THROW(parse("camera { mesh_camera { 1 3 mesh { triangle { 0, x, y uv_vectors <0, 0>, "
+                       "<1, 0>, <0, 1> } } smooth } }"),
+                 sdl::SdlError);
+    // Corner normals that agree: povray makes the triangle flat.
+    EXPECT_THROW(parse("camera { mesh_camera { 1 3 mesh { smooth_triangle { 0, z, x, z, y, z "
+                       "uv_vectors <0, 0>, <1, 0>, <0, 1> } } smooth } }"),
+                 sdl::SdlError);
+    EXPECT_NO_THROW(
+        parse("camera { mesh_camera { 1 3 mesh { triangle { 0, x, y uv_vectors <0, 0>, "
+              "<1, 0>, <0, 1> } } } }"));
 }

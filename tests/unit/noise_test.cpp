@@ -57,6 +57,39 @@ TEST(Noise, OriginalGeneratorMatchesPovrayIncludingClipping) {
             << s.x << " " << s.y << " " << s.z;
 }
 
+// noise_generator 3: povray's f_noise_generator(x, y, z, 3) at these points.
+TEST(Noise, PerlinGeneratorMatchesPovray) {
+    const Sample samples[] = {
+        {0.1, 0.2, 0.3, 0.65226085372009845},
+        {1.5, 2.25, -3.75, 0.73358656915214959},
+        {-0.3, -0.7, -1.9, 0.43799933830006715},
+        {10.1, -20.3, 5.7, 0.37734394225072976},
+        {123.456, -789.012, 345.678, 0.51139163957296963},
+        {0, 0, 0, 0.51135430537303594},
+        {-55.5, 44.4, -33.3, 0.49790128050020410},
+        {0.9999, 0.0001, -0.0001, 0.52011025310398096},
+    };
+    for (const Sample& s : samples)
+        EXPECT_NEAR(solidNoise({s.x, s.y, s.z}, NoiseGenerator::Perlin), s.value, kTolerance)
+            << s.x << ", " << s.y << ", " << s.z;
+}
+
+TEST(NoisePatterns, PerlinGeneratorPatternsMatchPovray) {
+    const Vec3 a{0.1, 0.2, 0.3}, b{1.5, 2.25, -3.75};
+    auto value = [&](PatternKind kind, const Vec3& p) {
+        Pattern pat;
+        pat.kind = kind;
+        pat.noiseGenerator = NoiseGenerator::Perlin;
+        return pat.value(p);
+    };
+    EXPECT_NEAR(value(PatternKind::Wrinkles, a), 0.73837829018384549, kTolerance);
+    EXPECT_NEAR(value(PatternKind::Wrinkles, b), 0.64926705366418880, kTolerance);
+    EXPECT_NEAR(value(PatternKind::Agate, a), 0.99730066147025254, kTolerance);
+    EXPECT_NEAR(value(PatternKind::Agate, b), 0.45622300260647208, kTolerance);
+    EXPECT_NEAR(value(PatternKind::Granite, a), 0.18178678951938690, kTolerance);
+    EXPECT_NEAR(value(PatternKind::Granite, b), 0.03941335712951002, kTolerance);
+}
+
 TEST(Noise, VectorNoiseMatchesPovrayVturbulence) {
     // vturbulence(2, 0.5, 1, P) is one octave: the vector noise itself.
     const double samples[][6] = {

@@ -104,7 +104,9 @@ TEST(Sequence, ClockOnWithClockOption) {
     const auto s = plan({"+K0.7"});
     EXPECT_FALSE(s.animated);
     EXPECT_TRUE(s.clockOn);
-    EXPECT_DOUBLE_EQ(s.frames[0].clock, 0.7);
+    // povray keeps the clock in single precision.
+    EXPECT_EQ(s.frames[0].clock, 0.69999998807907104);
+    EXPECT_EQ(s.frames[0].clock, static_cast<float>(0.7));
     // In an animation +K is ignored.
     const auto a = plan({"+KFF5", "+K0.7"});
     EXPECT_DOUBLE_EQ(a.frames[0].clock, 0);
@@ -138,12 +140,32 @@ TEST(Sequence, FramesClockAndNamesMatchPovray) {
     EXPECT_EQ(plan({"+KFF9999", "+SF1", "+EF2", "+Oq"}).frames[1].output, "q0002.png");
 }
 
+// povray 3.7's clock, printed with str(clock, 0, 20) for each frame: single
+// precision, summed from the single-precision start in steps of the
+// single-precision range divided in double precision (0.000 before for the
+// frames below: frameray's clock was the double-precision value).
+TEST(Sequence, ClockIsPovraysSinglePrecisionClock) {
+    auto seq = plan({"+KFI1", "+KFF7", "+KI0.1", "+KF0.7"});
+    ASSERT_EQ(seq.frames.size(), 7u);
+    EXPECT_EQ(seq.frames[1].clock, 0.19999998807907104492);
+    EXPECT_EQ(seq.frames[2].clock, 0.29999998211860656738);
+    EXPECT_EQ(seq.frames[3].clock, 0.39999997615814208984);
+    seq = plan({"+KFI3", "+KFF20", "+KI-1.3", "+KF2.9", "+KC"});
+    EXPECT_EQ(seq.frames[1].clock, -1.06666660308837890625);
+    EXPECT_EQ(seq.frames[3].clock, -0.59999996423721313477);
+    EXPECT_EQ(seq.frames[5].clock, -0.13333334028720855713);
+    seq = plan({"+KFF60", "+KC"});
+    EXPECT_EQ(seq.frames[1].clock, 0.01666666753590106964);
+    EXPECT_EQ(seq.frames[25].clock, 0.41666665673255920410);
+    EXPECT_EQ(plan({"+K0.4237"}).frames[0].clock, 0.42370000481605529785);
+}
+
 TEST(Sequence, CyclicAnimation) {
     // +KFF10 +KC: frames 1..10, final_frame 11, clock 0 .. 0.9.
     auto seq = plan({"+KFF10", "+KC"});
     ASSERT_EQ(seq.frames.size(), 10u);
     EXPECT_EQ(seq.finalFrame, 11);
-    EXPECT_DOUBLE_EQ(seq.frames[9].clock, 0.9);
+    EXPECT_EQ(seq.frames[9].clock, static_cast<float>(0.9));
     EXPECT_DOUBLE_EQ(seq.frames[0].clockDelta, 0.1);
     // +KFF9 +KC: final_frame 10, so names get two digits.
     seq = plan({"+KFF9", "+KC"});

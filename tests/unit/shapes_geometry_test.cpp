@@ -216,21 +216,32 @@ TEST(Quadric, MixedTermsAndEllipsoidBounds) {
 
 TEST(JuliaFractal, ZeroParameterIsTheUnitBall) {
     // With c = 0 the square of a quaternion inside the unit ball stays
-    // inside it, and the bailout radius is 1 + |c| = 1: the set is the ball.
+    // inside it, and the bailout radius is 1 + |c| (+ 1e-7, as povray's):
+    // the set is the ball.
     const JuliaFractal j({0, 0, 0, 0}, JuliaFractal::Algebra::Quaternion,
                          JuliaFractal::Function::Sqr, 20, 20);
     EXPECT_TRUE(j.inside(Vec3(0.5, 0.3, -0.2)));
     EXPECT_FALSE(j.inside(Vec3(1.05, 0, 0)));
+    // The entry, refined to povray's 1e-7 on the inside side.
     const auto ts = hits(j, Ray{Vec3(-3, 0, 0), Vec3(1, 0, 0)});
-    ASSERT_EQ(ts.size(), 2u);
-    EXPECT_NEAR(ts[0], 2, 1e-9);
-    EXPECT_NEAR(ts[1], 4, 1e-9);
+    ASSERT_GE(ts.size(), 1u);
+    EXPECT_GE(ts[0], 2);
+    EXPECT_LT(ts[0], 2 + 1e-7);
+    // povray marches the set out of its bounding sphere without meeting
+    // the far side (measured: trace() from inside the ball finds nothing,
+    // a difference of a sphere and the ball sees only the sphere).
+    double t = 0;
+    EXPECT_FALSE(j.firstHit(Ray{Vec3(0, 0, 0), Vec3(1, 0, 0)}, 0, kInfinity, t));
+    // The bounding sphere: povray's 1 + |c| + 1e-7 (at most 2).
+    EXPECT_NEAR(j.bounds().hi.x, 1.0, 2e-7);
+    const JuliaFractal wide({0.9, 0.9, 0, 0}, JuliaFractal::Algebra::Quaternion,
+                            JuliaFractal::Function::Sqr, 5, 20);
+    EXPECT_DOUBLE_EQ(wide.bounds().hi.x, 2.0);
     // The normal: the gradient of |q(N)|^2 (= |p|^(2^(N+1)) here; few
     // iterations keep the finite differences tame).
     const JuliaFractal few({0, 0, 0, 0}, JuliaFractal::Algebra::Quaternion,
                            JuliaFractal::Function::Sqr, 3, 20);
     expectVec(few.normal(Vec3(0.6, 0.8, 0)), Vec3(0.6, 0.8, 0), 1e-5);
-    EXPECT_DOUBLE_EQ(j.bounds().hi.x, 1.0);
 }
 
 TEST(JuliaFractal, HypercomplexSquareAndQuaternionCube) {

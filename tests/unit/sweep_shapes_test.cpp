@@ -441,9 +441,13 @@ TEST(SweepShapesParse, Errors) {
     EXPECT_NE(parseErrorOf("sphere_sweep { b_spline 3, <0,0,0>, 1, <1,0,0>, 1, <2,0,0>, 1 }"), "");
     EXPECT_NE(parseErrorOf("superellipsoid { <0, 1> }").find("Illegal superellipsoid"),
               std::string::npos);
-    // internal(78) is f_noise_generator; generator 3 is not matched yet.
-    EXPECT_NE(parseErrorOf("#declare G = function { internal(78) }\n"
-                           "isosurface { function { G(x, y, z, 3) } }")
+    // internal(78) is f_noise_generator: generator 3 (Perlin) is accepted.
+    EXPECT_EQ(parseErrorOf("#declare G = function { internal(78) }\n"
+                           "isosurface { function { G(x, y, z, 3) } }"),
+              "");
+    // internal(40) is f_mesh1: a thread distance <= 0 is not matched yet.
+    EXPECT_NE(parseErrorOf("#declare G = function { internal(40) }\n"
+                           "isosurface { function { G(x, y, z, 0, 1, 1, 0.1, 1) } }")
                   .find("not supported yet"),
               std::string::npos);
     // internal(24) is f_helical_torus: ten parameters after x, y, z.
