@@ -171,9 +171,34 @@ void HeightField::traverse(const Ray& ray, double tMin, Limit tMax, Visit visit)
         int level, i, k;
         double t0, t1;  // the ray's stretch through the node's padded box
     };
+    // The walk starts at the smallest node holding the ray's whole stretch
+    // (a short shadow or reflected ray skips the upper levels): the cells
+    // under the stretch, widened by twice the pad, share that ancestor, and
+    // no cell outside it comes within a pad of the stretch.
+    int level = root, ni = 0, nk = 0;
+    if (root > 0 && std::isfinite(a0) && std::isfinite(a1)) {
+        const double xa = o.x + d.x * a0, xb = o.x + d.x * a1, za = o.z + d.z * a0,
+                     zb = o.z + d.z * a1;
+        const Level& cells = levels_[0];
+        auto cell = [](double v, double spacing, int count) {
+            return static_cast<int>(std::clamp(std::floor(v / spacing), 0.0, count - 1.0));
+        };
+        const int i0 = cell(std::min(xa, xb) - 2 * kPad, sx_, cells.nx),
+                  i1 = cell(std::max(xa, xb) + 2 * kPad, sx_, cells.nx),
+                  k0 = cell(std::min(za, zb) - 2 * kPad, sz_, cells.nz),
+                  k1 = cell(std::max(za, zb) + 2 * kPad, sz_, cells.nz);
+        level = 0;
+        while (level < root && ((i0 >> level) != (i1 >> level) || (k0 >> level) != (k1 >> level)))
+            ++level;
+        ni = i0 >> level, nk = k0 >> level;
+        if (level < root) {
+            const Level& start = levels_[static_cast<size_t>(level)];
+            if (!clipHeights(start.range[static_cast<size_t>(nk * start.nx + ni)], a0, a1)) return;
+        }
+    }
     Entry stack[3 * 32 + 4];
     int top = 0;
-    stack[top++] = {root, 0, 0, a0, a1};
+    stack[top++] = {level, ni, nk, a0, a1};
     while (top > 0) {
         const Entry e = stack[--top];
         // A hit found since this node was pushed may lie before its box:
