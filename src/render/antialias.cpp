@@ -1,5 +1,6 @@
 #include "render/antialias.h"
 
+#include <array>
 #include <cmath>
 
 #include "render/jitter.h"
@@ -25,6 +26,13 @@ class BlockGrid {
           done_(samples_.size(), false) {}
 
     PixelSample& at(int x, int y) { return samples_[index(x, y)]; }
+    // Method 1's comparison values of the sample at (x, y)
+    // (encodeForComparison of r, g, b), kept with it: each is compared
+    // four times.
+    std::array<double, 3>& encoded(int x, int y) {
+        if (encoded_.empty()) encoded_.resize(samples_.size());
+        return encoded_[index(x, y)];
+    }
     bool supersampled(int x, int y) const { return done_[index(x, y)]; }
     void markSupersampled(int x, int y) { done_[index(x, y)] = true; }
 
@@ -33,6 +41,7 @@ class BlockGrid {
     int x0_, y0_, width_;
     std::vector<PixelSample> samples_;
     std::vector<bool> done_;
+    std::vector<std::array<double, 3>> encoded_;
 };
 
 double encodeForComparison(double v, const AntialiasSettings& s) {
@@ -67,30 +76,36 @@ class NonRecursiveSampler {
         // super-sampled here (it belongs to another block).
         for (int x = b.x0; x < b.x1; ++x) {
             grid.at(x, b.y0 - 1) = centreSample(x, b.y0 - 1);
+            encode(grid, x, b.y0 - 1);
             grid.markSupersampled(x, b.y0 - 1);
         }
         for (int y = b.y0; y < b.y1; ++y) {
             grid.at(b.x0 - 1, y) = centreSample(b.x0 - 1, y);
+            encode(grid, b.x0 - 1, y);
             grid.markSupersampled(b.x0 - 1, y);
             for (int x = b.x0; x < b.x1; ++x) {
                 PixelSample& current = grid.at(x, y);
                 PixelSample& left = grid.at(x - 1, y);
                 PixelSample& top = grid.at(x, y - 1);
                 current = centreSample(x, y);
-                const bool leftDiffers = antialiasDistance(left, current, s_) >= s_.threshold;
-                const bool topDiffers = antialiasDistance(top, current, s_) >= s_.threshold;
+                encode(grid, x, y);
+                const bool leftDiffers = distance(grid, x - 1, y, x, y) >= s_.threshold;
+                const bool topDiffers = distance(grid, x, y - 1, x, y) >= s_.threshold;
                 // Neighbours first, each compared with this pixel's centre
                 // sample before this pixel is refined.
                 if (leftDiffers && !grid.supersampled(x - 1, y)) {
                     supersample(x - 1, y, left);
+                    encode(grid, x - 1, y);
                     grid.markSupersampled(x - 1, y);
                 }
                 if (topDiffers && !grid.supersampled(x, y - 1)) {
                     supersample(x, y - 1, top);
+                    encode(grid, x, y - 1);
                     grid.markSupersampled(x, y - 1);
                 }
                 if (leftDiffers || topDiffers) {
                     supersample(x, y, current);
+                    encode(grid, x, y);
                     grid.markSupersampled(x, y);
                 }
             }
@@ -98,6 +113,21 @@ class NonRecursiveSampler {
     }
 
   private:
+    // Keeps the comparison values of the sample now at (x, y).
+    void encode(BlockGrid& grid, int x, int y) {
+        const PixelSample& p = grid.at(x, y);
+        grid.encoded(x, y) = {encodeForComparison(p.rgb.r, s_), encodeForComparison(p.rgb.g, s_),
+                              encodeForComparison(p.rgb.b, s_)};
+    }
+    // antialiasDistance() of the samples at (ax, ay) and (bx, by), from
+    // their kept comparison values (the same sums, so the same bits).
+    double distance(BlockGrid& grid, int ax, int ay, int bx, int by) {
+        const auto& ea = grid.encoded(ax, ay);
+        const auto& eb = grid.encoded(bx, by);
+        return std::fabs(ea[0] - eb[0]) + std::fabs(ea[1] - eb[1]) + std::fabs(ea[2] - eb[2]) +
+               std::fabs(grid.at(ax, ay).transmit - grid.at(bx, by).transmit);
+    }
+
     PixelSample centreSample(int x, int y) {
         ++counts_.samples;
         return sample_(x, y);

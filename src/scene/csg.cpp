@@ -1,6 +1,9 @@
 #include "scene/csg.h"
 
 #include <algorithm>
+#include <cstdint>
+
+#include "scene/scratch.h"
 
 namespace frameray::scene::csg {
 
@@ -128,9 +131,63 @@ void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKi
             if (keepsCrossing(node, i, ray.at(hits[r].t), inverted)) hits[kept++] = hits[r];
         hits.resize(kept);
     }
-    // Stable: at equal t the earlier child comes first.
-    std::stable_sort(hits.begin() + static_cast<std::ptrdiff_t>(from), hits.end(),
-                     [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
+    // Stable: at equal t the earlier child comes first. Few hits are
+    // sorted in place (std::stable_sort allocates a buffer every call).
+    const auto first = hits.begin() + static_cast<std::ptrdiff_t>(from);
+    if (hits.end() - first <= 32) {
+        for (auto i = first + (first != hits.end() ? 1 : 0); i < hits.end(); ++i) {
+            const SurfaceHit h = *i;
+            auto j = i;
+            for (; j > first && h.t < (j - 1)->t; --j) *j = *(j - 1);
+            *j = h;
+        }
+    } else {
+        std::stable_sort(first, hits.end(),
+                         [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
+    }
+}
+
+namespace {
+
+// A child's crossing awaiting its test: where it lies in the hit list and
+// which child it belongs to.
+struct Candidate {
+    double t;
+    uint32_t index, child;
+};
+
+}  // namespace
+
+bool firstAccepted(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
+                   bool inverted, bool (*accept)(const SurfaceHit&, const void* context),
+                   const void* context, SurfaceHit& hit) {
+    if ((node.op == CsgOp::Intersection || node.op == CsgOp::Difference) &&
+        !rayMeetsOperandBoxes(node, ray, tMin))
+        return false;
+    ScratchVector<SurfaceHit> hitScratch;
+    ScratchVector<Candidate> candidateScratch;
+    std::vector<SurfaceHit>& hits = hitScratch.get();
+    std::vector<Candidate>& order = candidateScratch.get();
+    for (size_t i = 0; i < node.children.size(); ++i) {
+        const size_t start = hits.size();
+        const bool subtracted = node.op == CsgOp::Difference && i > 0;
+        node.children[i]->allHits(ray, tMin, tMax, kind, hits, inverted != subtracted);
+        for (size_t r = start; r < hits.size(); ++r)
+            order.push_back({hits[r].t, static_cast<uint32_t>(r), static_cast<uint32_t>(i)});
+    }
+    // allHits' order: by t, at equal t the earlier child (and within a
+    // child its own order) first.
+    std::sort(order.begin(), order.end(), [](const Candidate& a, const Candidate& b) {
+        return a.t < b.t || (a.t == b.t && a.index < b.index);
+    });
+    const bool keepsAll = node.op == CsgOp::Union && !inverted;
+    for (const Candidate& c : order) {
+        if (!keepsAll && !keepsCrossing(node, c.child, ray.at(c.t), inverted)) continue;
+        if (!accept(hits[c.index], context)) continue;
+        hit = hits[c.index];
+        return true;
+    }
+    return false;
 }
 
 bool inside(const Object& node, const Vec3& p) {

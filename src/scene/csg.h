@@ -23,6 +23,14 @@ namespace frameray::scene::csg {
 // the node counts inverted (its own inverse included), as in Object::allHits.
 void allHits(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
              std::vector<SurfaceHit>& hits, bool inverted);
+// The first of allHits' crossings, nearest first, that `accept` takes
+// (called with `context`); false when none. Equal to allHits followed by
+// a search of its list, but a crossing's place on the combined boundary
+// (the other operands' inside tests) is decided only for the crossings up
+// to the one taken: a shadow ray through a CSG tests one or two, not all.
+bool firstAccepted(const Object& node, const Ray& ray, double tMin, double tMax, RayKind kind,
+                   bool inverted, bool (*accept)(const SurfaceHit&, const void* context),
+                   const void* context, SurfaceHit& hit);
 // The combined inside test, before the node's inverse and clips.
 bool inside(const Object& node, const Vec3& p);
 // Bounds of the combined surface and inside, before the node's modifiers.

@@ -109,79 +109,145 @@ bool HeightField::hitCell(int i, int k, const Ray& ray, double tMin, double tMax
 
 template <typename Visit, typename Limit>
 void HeightField::traverse(const Ray& ray, double tMin, Limit tMax, Visit visit) const {
-    Vec3 inv;
-    bool flat[3];
-    for (int a = 0; a < 3; ++a) {
-        flat[a] = ray.direction[a] == 0;
-        inv[a] = flat[a] ? 0 : 1 / ray.direction[a];
-    }
+    // Every node's box is widened by kPad on each side, so that rounding
+    // cannot lose a triangle lying in a box face. The same pad for every
+    // node keeps a child's padded box inside its parent's: a child's stretch
+    // of the ray is its parent's stretch cut by the child's half planes.
+    constexpr double kPad = 2e-9;
+    constexpr double kInf = kInfinity;
+    const Vec3& o = ray.origin;
+    const Vec3& d = ray.direction;
+    const double invX = d.x != 0 ? 1 / d.x : 0, invY = d.y != 0 ? 1 / d.y : 0,
+                 invZ = d.z != 0 ? 1 / d.z : 0;
     const double water = waterLevel_ > 0 ? waterLevel_ : -kInfinity;
-    // Entry distance of the ray into a node's box, or false.
-    auto enter = [&](int level, int i, int k, double& t0) {
-        const Level& l = levels_[static_cast<size_t>(level)];
-        const auto& r = l.range[static_cast<size_t>(k * l.nx + i)];
-        const double hiY = r[1] / 65536.0;
+    // Narrows [a0, a1] to where the ray's y lies within the node's heights
+    // (above the water); false when nothing is left.
+    auto clipHeights = [&](const std::array<uint16_t, 2>& r, double& a0, double& a1) {
+        const double hiY = r[1] * kHeightScale;
         if (hiY < water) return false;
-        const int span = 1 << level;
-        const double lo[3] = {i * span * sx_, std::max(r[0] / 65536.0, water), k * span * sz_};
-        const double hi[3] = {std::min(i * span + span, width_ - 1) * sx_, hiY,
-                              std::min(k * span + span, height_ - 1) * sz_};
-        double a0 = tMin, a1 = tMax();
-        for (int a = 0; a < 3; ++a) {
-            // A relative pad keeps rounding from losing a triangle lying
-            // in a box face.
-            const double pad = 1e-9 * (hi[a] - lo[a] + 1.0);
-            if (flat[a]) {
-                if (ray.origin[a] < lo[a] - pad || ray.origin[a] > hi[a] + pad) return false;
-                continue;
-            }
-            double n = (lo[a] - pad - ray.origin[a]) * inv[a];
-            double f = (hi[a] + pad - ray.origin[a]) * inv[a];
-            if (n > f) std::swap(n, f);
-            a0 = std::max(a0, n);
-            a1 = std::min(a1, f);
-            if (a0 > a1) return false;
-        }
-        t0 = a0;
-        return true;
+        const double loY = std::max(r[0] * kHeightScale, water) - kPad;
+        if (d.y == 0) return o.y >= loY && o.y <= hiY + kPad && a0 <= a1;
+        double n = (loY - o.y) * invY, f = (hiY + kPad - o.y) * invY;
+        if (n > f) std::swap(n, f);
+        a0 = std::max(a0, n);
+        a1 = std::min(a1, f);
+        return a0 <= a1;
     };
+    // Cuts the ray's stretch [t0, t1] at the line coordinate = m into the
+    // near side's stretch [n0[0], n1[0]] and the far side's [n0[1], n1[1]]
+    // (empty when n0 > n1); each side's half plane is padded.
+    auto halves = [](double origin, double dir, double inv, double m, double t0, double t1,
+                     double n0[2], double n1[2]) {
+        if (dir != 0) {
+            const double a = (m - kPad - origin) * inv, b = (m + kPad - origin) * inv;
+            // Going up, the near side ends at b and the far one starts at
+            // a; going down, the other way round.
+            const double nearEnd = dir > 0 ? b : a, farStart = dir > 0 ? a : b;
+            n0[0] = t0, n1[0] = std::min(t1, nearEnd);
+            n0[1] = std::max(t0, farStart), n1[1] = t1;
+        } else {
+            // Parallel: each side whole or missed (side 0 below m).
+            n0[0] = n0[1] = t0;
+            n1[0] = origin <= m + kPad ? t1 : -kInf;
+            n1[1] = origin >= m - kPad ? t1 : -kInf;
+        }
+    };
+    // The root: the ray's stretch over the padded unit square.
+    double a0 = tMin, a1 = tMax();
+    const double x1 = (width_ - 1) * sx_, z1 = (height_ - 1) * sz_;
+    auto clipSlab = [&](double origin, double dir, double inv, double lo, double hi) {
+        if (dir == 0) return origin >= lo - kPad && origin <= hi + kPad;
+        double n = (lo - kPad - origin) * inv, f = (hi + kPad - origin) * inv;
+        if (n > f) std::swap(n, f);
+        a0 = std::max(a0, n);
+        a1 = std::min(a1, f);
+        return a0 <= a1;
+    };
+    const int root = static_cast<int>(levels_.size()) - 1;
+    if (!clipSlab(o.x, d.x, invX, 0, x1) || !clipSlab(o.z, d.z, invZ, 0, z1) ||
+        !clipHeights(levels_[static_cast<size_t>(root)].range[0], a0, a1))
+        return;
     struct Entry {
         int level, i, k;
-        double t;  // where the ray enters the node's (padded) box
+        double t0, t1;  // the ray's stretch through the node's padded box
     };
-    Entry stack[4 * 32 + 4];
+    // The walk starts at the smallest node holding the ray's whole stretch
+    // (a short shadow or reflected ray skips the upper levels): the cells
+    // under the stretch, widened by twice the pad, share that ancestor, and
+    // no cell outside it comes within a pad of the stretch.
+    int level = root, ni = 0, nk = 0;
+    if (root > 0 && std::isfinite(a0) && std::isfinite(a1)) {
+        const double xa = o.x + d.x * a0, xb = o.x + d.x * a1, za = o.z + d.z * a0,
+                     zb = o.z + d.z * a1;
+        const Level& cells = levels_[0];
+        auto cell = [](double v, double spacing, int count) {
+            return static_cast<int>(std::clamp(std::floor(v / spacing), 0.0, count - 1.0));
+        };
+        const int i0 = cell(std::min(xa, xb) - 2 * kPad, sx_, cells.nx),
+                  i1 = cell(std::max(xa, xb) + 2 * kPad, sx_, cells.nx),
+                  k0 = cell(std::min(za, zb) - 2 * kPad, sz_, cells.nz),
+                  k1 = cell(std::max(za, zb) + 2 * kPad, sz_, cells.nz);
+        level = 0;
+        while (level < root && ((i0 >> level) != (i1 >> level) || (k0 >> level) != (k1 >> level)))
+            ++level;
+        ni = i0 >> level, nk = k0 >> level;
+        if (level < root) {
+            const Level& start = levels_[static_cast<size_t>(level)];
+            if (!clipHeights(start.range[static_cast<size_t>(nk * start.nx + ni)], a0, a1)) return;
+        }
+    }
+    Entry stack[3 * 32 + 4];
     int top = 0;
-    const int root = static_cast<int>(levels_.size()) - 1;
-    double t0;
-    if (!enter(root, 0, 0, t0)) return;
-    stack[top++] = {root, 0, 0, t0};
+    stack[top++] = {level, ni, nk, a0, a1};
     while (top > 0) {
         const Entry e = stack[--top];
         // A hit found since this node was pushed may lie before its box:
         // nothing in it can be nearer (firstHit lowers tMax as it goes).
-        if (e.t > tMax()) continue;
+        const double limit = tMax();
+        if (e.t0 > limit) continue;
         if (e.level == 0) {
             if (!visit(e.i, e.k)) return;
             continue;
         }
-        // Children, nearest pushed last so it is visited first.
         const Level& below = levels_[static_cast<size_t>(e.level - 1)];
-        struct Child {
-            int i, k;
-            double t;
-        } kids[4];
-        int n = 0;
-        for (int dk = 0; dk < 2; ++dk)
-            for (int di = 0; di < 2; ++di) {
-                const int ci = 2 * e.i + di, ck = 2 * e.k + dk;
-                if (ci >= below.nx || ck >= below.nz) continue;
-                double t;
-                if (enter(e.level - 1, ci, ck, t)) kids[n++] = {ci, ck, t};
-            }
-        for (int a = 1; a < n; ++a)  // farthest first (at most four)
-            for (int b = a; b > 0 && kids[b - 1].t < kids[b].t; --b)
-                std::swap(kids[b - 1], kids[b]);
-        for (int c = 0; c < n; ++c) stack[top++] = {e.level - 1, kids[c].i, kids[c].k, kids[c].t};
+        const int half = 1 << (e.level - 1);
+        const int ci = 2 * e.i, ck = 2 * e.k;
+        // The ray's stretches through the children's columns (x) and rows
+        // (z), the near one first; a child past the grid's edge is absent.
+        double x0[2], x1[2], z0[2], z1[2];
+        int nx = 1, nz = 1;
+        if (ci + 1 < below.nx) {
+            halves(o.x, d.x, invX, (ci + 1) * half * sx_, e.t0, std::min(e.t1, limit), x0, x1);
+            nx = 2;
+        } else {
+            x0[0] = e.t0, x1[0] = std::min(e.t1, limit), x0[1] = kInf, x1[1] = -kInf;
+        }
+        if (ck + 1 < below.nz) {
+            halves(o.z, d.z, invZ, (ck + 1) * half * sz_, e.t0, std::min(e.t1, limit), z0, z1);
+            nz = 2;
+        } else {
+            z0[0] = e.t0, z1[0] = std::min(e.t1, limit), z0[1] = kInf, z1[1] = -kInf;
+        }
+        // Children pushed farthest first: (far, far), then the two mixed
+        // ones in order of entry, then (near, near).
+        const int near[2] = {d.x < 0 && nx == 2 ? 1 : 0, d.z < 0 && nz == 2 ? 1 : 0};
+        auto push = [&](int a, int b) {
+            if (a >= nx || b >= nz) return;
+            double t0 = std::max(x0[a], z0[b]), t1 = std::min(x1[a], z1[b]);
+            if (t0 > t1) return;
+            const int i = ci + (a ^ near[0]), k = ck + (b ^ near[1]);
+            if (!clipHeights(below.range[static_cast<size_t>(k * below.nx + i)], t0, t1)) return;
+            stack[top++] = {e.level - 1, i, k, t0, t1};
+        };
+        push(1, 1);
+        if (std::max(x0[1], z0[0]) > std::max(x0[0], z0[1])) {
+            push(1, 0);
+            push(0, 1);
+        } else {
+            push(0, 1);
+            push(1, 0);
+        }
+        push(0, 0);
     }
 }
 

@@ -152,6 +152,24 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind,
         }
         return found;
     }
+    if (!shape) {
+        // A CSG node: its crossings nearest first, each decided only
+        // when the nearer ones are out (allHits' list, searched lazily).
+        if (kind != RayKind::Shadow && !boundedBy.empty() && !passesBoundedBy(*this, ray, tMin))
+            return false;
+        struct Filter {
+            const Object* self;
+            const Ray* ray;
+            RayKind kind;
+        } filter{this, &ray, kind};
+        return csg::firstAccepted(
+            *this, ray, tMin, tMax, kind, inverse,
+            [](const SurfaceHit& h, const void* context) {
+                const auto& f = *static_cast<const Filter*>(context);
+                return insideAllClips(*f.self, f.ray->at(h.t)) && visibleTo(*h.primitive, f.kind);
+            },
+            &filter, hit);
+    }
     ScratchHits scratch;
     std::vector<SurfaceHit>& hits = scratch.get();
     allHits(ray, tMin, tMax, kind, hits);

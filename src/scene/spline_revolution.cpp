@@ -5,6 +5,7 @@
 #include <numbers>
 #include <span>
 
+#include "scene/scratch.h"
 #include "scene/shape_math.h"
 #include "util/roots.h"
 
@@ -46,8 +47,50 @@ bool heightInterval(const Ray& r, double lo, double hi, double& t0, double& t1) 
 // Product of polynomials in increasing powers.
 void multiply(const double* p, int np, const double* q, int nq, double* out) {
     std::fill(out, out + np + nq - 1, 0.0);
+    // Zero top coefficients add only exact zeros to out (x + 0 == x, and
+    // +0 + -0 == +0): skipping them gives the same bits.
+    while (np > 1 && p[np - 1] == 0) --np;
+    while (nq > 1 && q[nq - 1] == 0) --nq;
     for (int i = 0; i < np; ++i)
         for (int j = 0; j < nq; ++j) out[i + j] += p[i] * q[j];
+}
+
+// Squared distance from (u, v) to a piece's (u, v) box, widened by far more
+// than rounding: a lower bound of closestOnSegment's distance, whose
+// candidates all lie on the piece.
+double boxDistance2(const ProfileSegment& seg, double u, double v) {
+    const double padU = 1e-9 * (1 + std::fabs(seg.uMin) + std::fabs(seg.uMax)),
+                 padV = 1e-9 * (1 + std::fabs(seg.vMin) + std::fabs(seg.vMax));
+    const double du = std::max({seg.uMin - padU - u, 0.0, u - seg.uMax - padU}),
+                 dv = std::max({seg.vMin - padV - v, 0.0, v - seg.vMax - padV});
+    return du * du + dv * dv;
+}
+
+// The piece (index) and its parameter s nearest (u, v) by
+// closestOnSegment, the first in order among equally near ones. Pieces
+// whose box lies farther than the nearest found so far are skipped; the
+// piece with the nearest box is measured first.
+int closestPiece(const std::vector<ProfileSegment>& segments, double u, double v, double& s) {
+    int first = -1;
+    double firstBox = kInfinity;
+    for (size_t i = 0; i < segments.size(); ++i) {
+        const double b = boxDistance2(segments[i], u, v);
+        if (b < firstBox) firstBox = b, first = static_cast<int>(i);
+    }
+    if (first < 0) return -1;
+    double best = closestOnSegment(segments[static_cast<size_t>(first)], u, v, s);
+    int bestIndex = first;
+    for (size_t i = 0; i < segments.size(); ++i) {
+        if (static_cast<int>(i) == first || boxDistance2(segments[i], u, v) > best) continue;
+        double si;
+        const double d = closestOnSegment(segments[i], u, v, si);
+        if (d < best || (d == best && static_cast<int>(i) < bestIndex)) {
+            best = d;
+            s = si;
+            bestIndex = static_cast<int>(i);
+        }
+    }
+    return bestIndex;
 }
 
 double poly3(const double c[4], double s) {
@@ -84,7 +127,8 @@ void Lathe::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
     // fixes the profile parameter) and refined below: the general
     // equation loses its precision as dy -> 0.
     const bool horizontal = std::fabs(dy) < 1e-7 * length(ray.direction);
-    std::vector<double> found;
+    ScratchVector<double> scratch;
+    std::vector<double>& found = scratch.get();
     for (const ProfileSegment& seg : segments_) {
         double t0, t1;
         if (!heightInterval(ray, seg.vMin, seg.vMax, t0, t1)) continue;
@@ -174,18 +218,10 @@ void Lathe::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
 
 Vec3 Lathe::normal(const Vec3& p) const {
     const double rho = std::sqrt(p.x * p.x + p.z * p.z);
-    double best = kInfinity, bestS = 0;
-    const ProfileSegment* bestSeg = nullptr;
-    for (const ProfileSegment& seg : segments_) {
-        double s;
-        const double d = closestOnSegment(seg, rho, p.y, s);
-        if (d < best) {
-            best = d;
-            bestS = s;
-            bestSeg = &seg;
-        }
-    }
-    if (!bestSeg) return {0, 1, 0};
+    double bestS = 0;
+    const int index = closestPiece(segments_, rho, p.y, bestS);
+    if (index < 0) return {0, 1, 0};
+    const ProfileSegment* bestSeg = &segments_[static_cast<size_t>(index)];
     ProfilePoint tan = bestSeg->tangent(bestS);
     if (tan.u == 0 && tan.v == 0)  // a repeated control point: look just inside the piece
         tan = bestSeg->tangent(bestS < 0.5 ? bestS + 1e-6 : bestS - 1e-6);
@@ -212,17 +248,9 @@ double turnsAroundY(const Vec3& p) {
 // by the piece's own parameter.
 bool Lathe::uv(const Vec3& p, double& u, double& v) const {
     const double rho = std::sqrt(p.x * p.x + p.z * p.z);
-    double best = kInfinity, bestS = 0;
-    std::size_t bestIndex = 0;
-    for (std::size_t i = 0; i < segments_.size(); ++i) {
-        double s;
-        const double d = closestOnSegment(segments_[i], rho, p.y, s);
-        if (d < best) {
-            best = d;
-            bestS = s;
-            bestIndex = i;
-        }
-    }
+    double bestS = 0;
+    const std::size_t bestIndex =
+        static_cast<std::size_t>(std::max(closestPiece(segments_, rho, p.y, bestS), 0));
     u = turnsAroundY(p);
     v = segments_.empty() ? 0 : (static_cast<double>(bestIndex) + bestS) / segments_.size();
     return true;

@@ -120,18 +120,23 @@ Color Pigment::at(const Vec3& given, const SurfaceInfo* surface) const {
     const SurfaceInfo* sub = surface;  // world-space: the same for sub-pigments
     // Sub-pigments are evaluated in this pigment's space, at the point its
     // warps displaced (povray: the entries of a turbulent map are
-    // turbulent too; measured).
-    Vec3 p = mapEntryPoint(pattern, point);
-    if (m.hasTransform) p = m.transform.inversePoint(p);
+    // turbulent too; measured). Only lists and pigment maps have entries:
+    // a colour map does not pay for the warps twice.
+    auto entryPoint = [&] {
+        Vec3 q = mapEntryPoint(pattern, point);
+        if (m.hasTransform) q = m.transform.inversePoint(q);
+        return q;
+    };
     switch (kind_) {
         case Kind::List: {
             const auto i = static_cast<std::size_t>(pattern.index(point));
-            return i < m.list.size() && m.list[i] ? m.list[i]->at(p, sub) : Color();
+            return i < m.list.size() && m.list[i] ? m.list[i]->at(entryPoint(), sub) : Color();
         }
         case Kind::ColorMapped:
             return m.colorMap.at(pattern.value(point, surface));
         case Kind::PigmentMapped: {
             if (pigmentMap.empty()) return Color();
+            const Vec3 p = entryPoint();
             if (m.average) {
                 // Every entry weighted by its value (povray's `average`).
                 double total = 0;

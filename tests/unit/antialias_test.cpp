@@ -125,6 +125,28 @@ TEST(Antialias, ResultDoesNotDependOnOtherBlocks) {
     for (size_t i = 0; i < whole.size(); ++i) EXPECT_EQ(whole[i].rgb.r, again[i].rgb.r);
 }
 
+TEST(Antialias, Method1ConvertsEachSampleOnceForItsComparisons) {
+    // Each pixel is compared four times (with its left and upper
+    // neighbours, and by its right and lower ones); its colour is brought
+    // to the comparison gamma once, and again only when refined.
+    for (const double edge : {100.0, 4.3, 2.6}) {
+        VerticalEdge plane{edge};
+        AntialiasSettings s = settings(1);
+        int conversions = 0;
+        s.toLinear = [&](double v) {
+            ++conversions;
+            return v;
+        };
+        AntialiasCounts counts;
+        sampleBlock({0, 0, 8, 8}, s, std::ref(plane), counts);
+        // 64 pixels, the row above and the column left of the block.
+        EXPECT_EQ(conversions, 3 * (80 + static_cast<int>(counts.supersampledPixels))) << edge;
+        if (edge < 10) {
+            EXPECT_GT(counts.supersampledPixels, 0u);
+        }
+    }
+}
+
 TEST(Antialias, DistanceComparesInAntialiasGamma) {
     AntialiasSettings s;
     s.gamma = 2.5;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "parse_support.h"
 #include "render/world.h"
 #include "scene/flat_shapes.h"
@@ -366,4 +368,59 @@ TEST(Csg, IntersectionWithADiscOnlyAlongRaysThroughItsBox) {
     // disc towards a part of the box below the disc's plane.
     EXPECT_TRUE(allHits(*i, {{-10, -3.5, 0}, {1, 1, 0}}).empty());
     EXPECT_TRUE(allHits(*i, {{1.6, 0.5, 0}, {-1, -1, 0}}).empty());
+}
+
+// Object::firstHit on a CSG node searches the children's crossings lazily
+// (inside tests only up to the crossing taken): it must give what allHits
+// followed by a search for the first crossing the ray kind sees gives, for
+// every operation, inverted operands, clips and hidden primitives.
+TEST(Csg, FirstHitIsTheFirstVisibleCrossingOfAllHits) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> coord(-1.5, 1.5), radius(0.4, 1.4);
+    auto randomPrimitive = [&](int n) -> std::shared_ptr<Object> {
+        const Vec3 c{coord(rng), coord(rng), coord(rng)};
+        auto o = n % 2 ? sphere(c, radius(rng)) : box(c - Vec3(radius(rng)), c + Vec3(radius(rng)));
+        o->noShadow = n % 5 == 0;
+        o->inverse = n % 7 == 3;
+        return o;
+    };
+    const CsgOp ops[] = {CsgOp::Union, CsgOp::Merge, CsgOp::Intersection, CsgOp::Difference};
+    int found = 0;
+    for (int tree = 0; tree < 60; ++tree) {
+        std::vector<ObjectRef> kids;
+        for (int k = 0; k < 2 + tree % 3; ++k) {
+            if (k == 1) {  // a nested node among the operands
+                kids.push_back(csgOf(ops[(tree + 1) % 4], {randomPrimitive(tree + k),
+                                                           randomPrimitive(tree + 2 * k + 1)}));
+            } else {
+                kids.push_back(randomPrimitive(tree * 3 + k));
+            }
+        }
+        auto node = csgOf(ops[tree % 4], kids);
+        node->inverse = tree % 9 == 4;
+        if (tree % 4 == 1)
+            node->clippedBy = {primitive(std::make_shared<Plane>(Vec3{0.3, 1, 0.2}, 0.4))};
+        for (int r = 0; r < 200; ++r) {
+            const Vec3 o{coord(rng) * 3, coord(rng) * 3, -6};
+            const Ray ray{o, normalize(Vec3{coord(rng), coord(rng), 4})};
+            for (const RayKind kind : {RayKind::Camera, RayKind::Shadow}) {
+                std::vector<SurfaceHit> hits;
+                node->allHits(ray, 1e-6, kInfinity, kind, hits);
+                const SurfaceHit* expected = nullptr;
+                for (const SurfaceHit& h : hits)
+                    if (kind != RayKind::Shadow || !h.primitive->noShadow) {
+                        expected = &h;
+                        break;
+                    }
+                SurfaceHit got;
+                const bool hit = node->firstHit(ray, 1e-6, kInfinity, kind, got);
+                ASSERT_EQ(hit, expected != nullptr) << "tree " << tree << " ray " << r;
+                if (!hit) continue;
+                ++found;
+                EXPECT_EQ(got.t, expected->t) << "tree " << tree << " ray " << r;
+                EXPECT_EQ(got.primitive, expected->primitive) << "tree " << tree << " ray " << r;
+            }
+        }
+    }
+    EXPECT_GT(found, 800);
 }

@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <tuple>
 
 #include "scene/bicubic_patch.h"
 #include "scene/height_field.h"
+#include "scene/shape_math.h"
 
 using namespace frameray;
 using namespace frameray::scene;
@@ -160,6 +163,90 @@ TEST(HeightField, WaterLevelHidesWhatIsBelow) {
     double t;
     EXPECT_TRUE(hf.firstHit({{0.1, 5, 0.1}, {0, -1, 0}}, 0, kInfinity, t));
     EXPECT_FALSE(hf.firstHit({{0.6, 5, 0.6}, {0, -1, 0}}, 0, kInfinity, t));
+}
+
+// Every hit of a height field's triangles, cell by cell, built as
+// height_field.h describes them (the search's answer must be these, bit
+// for bit, whichever cells its quadtree walk visits).
+std::vector<double> bruteForceHits(const HeightField& hf, int w, int h, double water,
+                                   const Ray& ray, double tMin, double tMax) {
+    const double sx = 1.0 / (w - 1), sz = 1.0 / (h - 1);
+    auto corner = [&](int i, int k) { return Vec3(i * sx, hf.sample(i, k), k * sz); };
+    std::vector<double> ts;
+    for (int k = 0; k + 1 < h; ++k)
+        for (int i = 0; i + 1 < w; ++i) {
+            const Vec3 c00 = corner(i, k), c10 = corner(i + 1, k), c01 = corner(i, k + 1),
+                       c11 = corner(i + 1, k + 1);
+            const Vec3 tri[2][3] = {{c00, c10, c01}, {c10, c11, c01}};
+            for (const auto& t : tri) {
+                double hit;
+                if (!detail::hitTriangle(ray, t[0], t[1], t[2], tMin, tMax, hit)) continue;
+                if (water > 0 && ray.origin.y + ray.direction.y * hit < water) continue;
+                ts.push_back(hit);
+            }
+        }
+    std::sort(ts.begin(), ts.end());
+    return ts;
+}
+
+TEST(HeightField, QuadtreeWalkFindsWhatTestingEveryCellFinds) {
+    // Random fields (odd sizes: partial quadtree nodes at the edges), rays
+    // of every kind: steep, grazing, from below, axis-parallel, along grid
+    // lines and through grid points, some starting inside the box.
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(0, 1), wide(-0.5, 1.5);
+    for (const auto& [w, h, water] : {std::tuple{37, 21, 0.0}, std::tuple{16, 16, 0.35},
+                                      std::tuple{2, 9, 0.0}, std::tuple{65, 3, 0.2}}) {
+        std::vector<uint16_t> heights(static_cast<size_t>(w * h));
+        for (auto& v : heights) v = static_cast<uint16_t>(unit(rng) * 50000 + 5000);
+        const HeightField hf(w, h, heights, false, water);
+        int hits = 0;
+        for (int n = 0; n < 4000; ++n) {
+            Vec3 o{wide(rng), unit(rng) * 2 - 0.3, wide(rng)};
+            Vec3 d{unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5};
+            switch (n % 8) {
+                case 1:
+                    d.y *= 0.02;
+                    break;  // grazing
+                case 2:
+                    d = {0, -1, 0};
+                    break;  // straight down
+                case 3:
+                    d.x = 0;
+                    o.x = (n % w) / double(w - 1);
+                    break;  // along a grid line
+                case 4:
+                    d.z = 0;
+                    o.z = (n % h) / double(h - 1);
+                    break;
+                case 5:  // through a grid point
+                    o = Vec3((n % w) / double(w - 1), hf.sample(n % w, n % h),
+                             (n % h) / double(h - 1)) -
+                        d * 3;
+                    break;
+                case 6:
+                    d.y = 0;
+                    o.y = unit(rng);
+                    break;  // horizontal
+                default:
+                    break;
+            }
+            const Ray ray{o, d};
+            const double tMin = n % 3 == 0 ? 0.5 : 0, tMax = n % 5 == 0 ? 2.5 : kInfinity;
+            const auto all = bruteForceHits(hf, w, h, water, ray, tMin, tMax);
+            double t = -1;
+            const bool found = hf.firstHit(ray, tMin, tMax, t);
+            ASSERT_EQ(found, !all.empty()) << w << "x" << h << " ray " << n;
+            if (found) {
+                EXPECT_EQ(t, all.front()) << w << "x" << h << " ray " << n;
+                ++hits;
+            }
+            std::vector<double> ts;
+            hf.allHits(ray, tMin, tMax, ts);
+            EXPECT_EQ(ts, all) << w << "x" << h << " ray " << n;
+        }
+        EXPECT_GT(hits, 500);
+    }
 }
 
 TEST(BicubicPatch, CornersAndDiagonal) {

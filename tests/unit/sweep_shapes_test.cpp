@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "parse_support.h"
 #include "render/renderer.h"
@@ -317,6 +318,58 @@ TEST(Lathe, ClosedProfileInsideAndBezierPieces) {
     const Vec3 n = dome.normal({0, 1, 0});
     EXPECT_NEAR(std::fabs(n.y), 1, 1e-12);
     EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.z));
+}
+
+TEST(Lathe, NormalAndUvFromTheNearestPieceAsAFullSearch) {
+    // normal() and uv() skip pieces whose box lies farther than the
+    // nearest piece found; they must pick what measuring every piece in
+    // order (the first of equally near ones) picks, bit for bit.
+    const std::vector<ProfilePoint> points{{2, 1},    {2, -1},     {3, -1},  {3.4, -2},
+                                           {4, -1.1}, {3.6, -0.9}, {2.6, 0}, {3.6, 0.9},
+                                           {4, 1.1},  {3.4, 2},    {3, 1},   {2, 1}};
+    for (const SplineKind kind : {SplineKind::Linear, SplineKind::Cubic}) {
+        const Lathe lathe(kind, points);
+        std::vector<ProfileSegment> pieces;
+        const int per = pointsPerSegment(kind);
+        for (size_t i = 0; i + static_cast<size_t>(per) <= points.size(); ++i)
+            pieces.push_back(makeProfileSegment(kind, &points[i]));
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> angle(0, 6.283), radius(1.5, 4.5), height(-2.5, 2.5);
+        int onSurface = 0;
+        for (int n = 0; n < 3000; ++n) {
+            // Half the points on the profile (the pieces' joints included),
+            // half anywhere around it.
+            double rho = radius(rng), y = height(rng);
+            if (n % 2 == 0) {
+                const auto& piece = pieces[static_cast<size_t>(n / 2) % pieces.size()];
+                const ProfilePoint at = piece.at((n / 2 / pieces.size()) % 5 / 4.0);
+                rho = at.u, y = at.v;
+                ++onSurface;
+            }
+            const double a = angle(rng);
+            const Vec3 p{rho * std::cos(a), y, rho * std::sin(a)};
+            double best = kInfinity, bestS = 0;
+            size_t bestIndex = 0;
+            for (size_t i = 0; i < pieces.size(); ++i) {
+                double s;
+                const double d =
+                    closestOnSegment(pieces[i], std::sqrt(p.x * p.x + p.z * p.z), p.y, s);
+                if (d < best) best = d, bestS = s, bestIndex = i;
+            }
+            double u, v;
+            ASSERT_TRUE(lathe.uv(p, u, v));
+            EXPECT_EQ(v, (static_cast<double>(bestIndex) + bestS) / pieces.size()) << n;
+            const ProfilePoint tan = pieces[bestIndex].tangent(bestS);
+            if (tan.u == 0 && tan.v == 0) continue;
+            const double r = std::sqrt(p.x * p.x + p.z * p.z);
+            const Vec3 expected = normalize(Vec3{tan.v * p.x / r, -tan.u, tan.v * p.z / r});
+            const Vec3 got = lathe.normal(p);
+            EXPECT_EQ(got.x, expected.x) << n;
+            EXPECT_EQ(got.y, expected.y) << n;
+            EXPECT_EQ(got.z, expected.z) << n;
+        }
+        EXPECT_GT(onSurface, 1000);
+    }
 }
 
 TEST(Sor, ConstantRadiusIsACappedCylinder) {
