@@ -158,6 +158,14 @@ Vec3 Box::normal(const Vec3& p) const {
     int bestAxis = 0;
     double bestDist = kInfinity, sign = 1;
     for (int axis = 0; axis < 3; ++axis) {
+        // A box flat along an axis (corners sharing a coordinate) is all
+        // that face, whatever rounding left in the point (measured:
+        // var_reflection's flat boxes reflect everywhere in povray).
+        if (hi_[axis] == lo_[axis]) {
+            Vec3 n;
+            n[axis] = 1;
+            return n;
+        }
         const double extent = std::fmax(hi_[axis] - lo_[axis], 1e-300);
         const double dLo = std::fabs(p[axis] - lo_[axis]) / extent;
         const double dHi = std::fabs(p[axis] - hi_[axis]) / extent;
