@@ -272,12 +272,14 @@ RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv
     return pigment.at(bottom.transform.inversePoint(at), &surface).rgb;
 }
 
+Tracer::Grain::Grain(const Vec3& p) : random(p.x, p.y, std::bit_cast<uint64_t>(p.z)) {}
+
 // Ambient, emission, diffuse and highlights of one texture layer whose
 // pigment at the point is `surface`, shaded with the normal n.
 RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
-                       const RGB& fade, RayCounts& counts, const RGB* gathered,
-                       bool radiosityRay) const {
+                       const RGB& fade, RayCounts& counts, const RGB* gathered, bool radiosityRay,
+                       std::optional<Grain>* grain) const {
     const scene::Finish& fin = *tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
@@ -305,11 +307,18 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
     // crand: povray darkens each light's diffuse term by crand times a
     // fresh random number in [0, 1) (measured: uniform, independent per
-    // light, scaled by the light and the pigment, not clamped). povray's
+    // light, scaled by the light and the pigment, not clamped), and every
+    // texture layer below by the same colour again: the darkening adds up
+    // from layer to layer, each share in the colour of the layer that
+    // made it (measured: a white crand layer over a crand layer darkens
+    // the lower one by both, the upper one's share unscaled by the lower
+    // one's pigment, with the upper one's number). povray's
     // numbers change from render to render; these come from the point, so
     // frames stay deterministic.
-    std::optional<SampleRandom> grain;
-    if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
+    std::optional<Grain> ownGrain;
+    if (!grain) grain = &ownGrain;
+    if (fin.crand != 0 && !*grain) grain->emplace(p);
+    size_t lightIndex = 0;
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
     if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
@@ -319,6 +328,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         color += photons->irradiance(p, n, scratch) * lit * (fin.diffuse) * fade;
     }
     for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
+        const size_t index = lightIndex++;
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
@@ -353,8 +363,14 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
             double intensity =
                 diffuse *
                 (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
-            if (grain) intensity -= fin.crand * grain->next();
-            color += lightColor * lit * intensity;
+            RGB diffuseColor = lit * intensity;
+            if (*grain) {
+                std::vector<RGB>& sums = (*grain)->sums;
+                if (sums.size() <= index) sums.resize(index + 1, RGB(0.0));
+                if (fin.crand != 0) sums[index] += pigment * (fin.crand * (*grain)->random.next());
+                diffuseColor -= sums[index] * opacity;
+            }
+            color += lightColor * diffuseColor;
         }
         if (fromBehind) continue;
         // povray 3.7: shadowless lights give no highlights.
@@ -500,6 +516,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
     out.n = at.geometric;
     RGB pigment(0.0);
     std::optional<RGB> radiosityHere;
+    std::optional<Grain> grain;  // crand's darkening, carried down the layers
     const size_t layerCount = 1 + top.layersBelow.size();
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
@@ -535,7 +552,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             gathered = &*radiosityHere;
         }
         const RGB local = localLight(tex, surface, at.obj, at.p, n, at.viewDir, at.eps, state.fade,
-                                     counts, gathered, state.radiosity.ray);
+                                     counts, gathered, state.radiosity.ray, &grain);
         out.color += i == 0 ? local : out.through * local;
 
         if (spawns && fin.reflection.any()) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "render/atmosphere.h"
 #include "render/dispersion.h"
@@ -15,6 +16,7 @@
 #include "render/radiosity.h"
 #include "render/world.h"
 #include "util/color.h"
+#include "util/sample_random.h"
 
 namespace frameray::render {
 
@@ -189,13 +191,24 @@ class Tracer {
                         const Crossing& c, const State& state, RayCounts& counts) const;
     RGB traceDispersed(const Layers& layers, const SurfacePoint& at, const Crossing& c,
                        const State& state, State child, double& seen, RayCounts& counts) const;
+    // crand's darkening of the diffuse light at one point, carried from
+    // texture layer to layer (see localLight): per light, the sum of
+    // crand times a fresh random number times the layer's pigment over the
+    // layers shaded so far.
+    struct Grain {
+        explicit Grain(const Vec3& p);
+        SampleRandom random;
+        std::vector<RGB> sums;  // by the light's place in LightsFor
+    };
     // `gathered`: the radiosity light arriving at p, when radiosity is on
     // (it replaces ambient light); `radiosityRay`: shading for a radiosity
-    // ray, which sees no highlights and area lights as point lights.
+    // ray, which sees no highlights and area lights as point lights;
+    // `grain`: crand's darkening so far at this point, null when no layer
+    // above has crand (made here for the first layer that has).
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                    const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps, const RGB& fade,
-                   RayCounts& counts, const RGB* gathered = nullptr,
-                   bool radiosityRay = false) const;
+                   RayCounts& counts, const RGB* gathered = nullptr, bool radiosityRay = false,
+                   std::optional<Grain>* grain = nullptr) const;
 
     // --- radiosity (tracer_radiosity.cpp) ---
     // The light that other surfaces send to p (normal n, facing the
