@@ -640,7 +640,9 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
             // perturbed normal sends it through (measured: bumps on a water
             // surface seen from below, interior/caustic2.pov).
             const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts);
+            // Faded on the way here as the refracted ray is (measured: a
+            // fading glass cone with no reflection at all).
+            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts) * state.fade;
         }
     }
     return color;
