@@ -139,9 +139,13 @@ class Tracer {
     // p is where the surface is lit, texP where the texture is evaluated
     // (they differ inside a warped texture map); uv is the surface's
     // (u, v, 0) for uv_mapping.
+    // `patternNormal`: the normal a texture map's pattern sees (null: the
+    // geometric one); `perturbed`, when given, receives the last normal a
+    // normal pattern of the texture made (untouched when none did).
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
                      const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
-                     const Vec3& geometric, const State& state, RayCounts& counts) const;
+                     const Vec3& geometric, const State& state, RayCounts& counts,
+                     const Vec3* patternNormal = nullptr, Vec3* perturbed = nullptr) const;
     // The pieces of shadeTexture. SurfacePoint is the point being shaded
     // (shadeTexture's arguments and the self-hit epsilon of rays leaving it).
     struct SurfacePoint {
@@ -149,6 +153,7 @@ class Tracer {
         const scene::Object& obj;
         Vec3 p, texP, uv, viewDir, geometric;
         double eps;
+        Vec3 patternNormal;  // what a texture map's pattern sees as the normal
     };
     // Where a ray through the surface goes: the interiors beyond it and
     // the iors on both sides.
@@ -176,9 +181,10 @@ class Tracer {
         bool transmits = false;
         RGB reflectivity{0.0};
         Vec3 n;
+        bool perturbed = false;  // some layer has a normal pattern
     };
     RGB shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,
-                        RayCounts& counts) const;
+                        RayCounts& counts, Vec3* perturbed) const;
     Crossing crossingOf(const scene::Object& obj, const State& state) const;
     // `crossing` is found when a layer's reflection needs it (kept for
     // continueThrough).
