@@ -125,12 +125,20 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
         planar ? std::fabs(dot(light.position - p, light.axis())) : path.distance;
     const double att = light.attenuation(p, fadeDistance);
     if (att <= 0) return RGB(0.0);
+    // How far from p objects can shadow it.
+    double shadowDistance = path.distance;
     if (light.projectedThrough) {
-        // Only light that crosses the object on its way to p.
+        // Only light that crosses the object on its way to p, and as if it
+        // came from there: only what lies between p and the object casts
+        // shadows (measured: a bar between the light and the object casts
+        // none, a box between the object and the wall does, and a copy of
+        // the object placed in the scene does not darken its own
+        // projection; lights/projected_through.pov).
         scene::SurfaceHit h;
         if (!light.projectedThrough->firstHit({p, path.toLight}, selfHit, path.distance,
                                               scene::RayKind::Any, h))
             return RGB(0.0);
+        shadowDistance = h.t;
     }
     const RGB color = light.color * att;
     if (light.shadowless || !quality.shadows) return color;
@@ -139,7 +147,7 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
         light.isArea && quality.areaLights && (light.area.size1 > 1 || light.area.size2 > 1);
     if (!sampleArea) {
         ++shadowRays;
-        return color * world.shadowFilter({p, path.toLight}, selfHit, path.distance - selfHit,
+        return color * world.shadowFilter({p, path.toLight}, selfHit, shadowDistance - selfHit,
                                           selfHit, &light);
     }
 

@@ -273,12 +273,14 @@ RGB Tracer::quickColour(const scene::Texture& top, const Vec3& p, const Vec3& uv
     return pigment.at(bottom.transform.inversePoint(at), &surface).rgb;
 }
 
+Tracer::Grain::Grain(const Vec3& p) : random(p.x, p.y, std::bit_cast<uint64_t>(p.z)) {}
+
 // Ambient, emission, diffuse and highlights of one texture layer whose
 // pigment at the point is `surface`, shaded with the normal n.
 RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                        const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps,
-                       const RGB& fade, RayCounts& counts, const RGB* gathered,
-                       bool radiosityRay) const {
+                       const RGB& fade, RayCounts& counts, const RGB* gathered, bool radiosityRay,
+                       std::optional<Grain>* grain) const {
     const scene::Finish& fin = *tex.finish;
     const RGB& pigment = surface.rgb;
     // What the surface lets through: filter tints by the pigment, transmit
@@ -306,11 +308,18 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     const Vec3 reflected = viewDir - n * (2 * dot(viewDir, n));
     // crand: povray darkens each light's diffuse term by crand times a
     // fresh random number in [0, 1) (measured: uniform, independent per
-    // light, scaled by the light and the pigment, not clamped). povray's
+    // light, scaled by the light and the pigment, not clamped), and every
+    // texture layer below by the same colour again: the darkening adds up
+    // from layer to layer, each share in the colour of the layer that
+    // made it (measured: a white crand layer over a crand layer darkens
+    // the lower one by both, the upper one's share unscaled by the lower
+    // one's pigment, with the upper one's number). povray's
     // numbers change from render to render; these come from the point, so
     // frames stay deterministic.
-    std::optional<SampleRandom> grain;
-    if (fin.crand != 0) grain.emplace(p.x, p.y, std::bit_cast<uint64_t>(p.z));
+    std::optional<Grain> ownGrain;
+    if (!grain) grain = &ownGrain;
+    if (fin.crand != 0 && !*grain) grain->emplace(p);
+    size_t lightIndex = 0;
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
     if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
@@ -320,6 +329,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         color += photons->irradiance(p, n, scratch) * lit * (fin.diffuse) * fade;
     }
     for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
+        const size_t index = lightIndex++;
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
         const Vec3 toLight = path.toLight;
@@ -354,8 +364,14 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
             double intensity =
                 diffuse *
                 (fin.brilliance == 1.0 ? cosIncidence : std::pow(cosIncidence, fin.brilliance));
-            if (grain) intensity -= fin.crand * grain->next();
-            color += lightColor * lit * intensity;
+            RGB diffuseColor = lit * intensity;
+            if (*grain) {
+                std::vector<RGB>& sums = (*grain)->sums;
+                if (sums.size() <= index) sums.resize(index + 1, RGB(0.0));
+                if (fin.crand != 0) sums[index] += pigment * (fin.crand * (*grain)->random.next());
+                diffuseColor -= sums[index] * opacity;
+            }
+            color += lightColor * diffuseColor;
         }
         if (fromBehind) continue;
         // povray 3.7: shadowless lights give no highlights.
@@ -419,15 +435,18 @@ RGB Tracer::shade(const scene::Ray& ray, const Hit& hit, const State& state,
 
 RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
                          const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
-                         const Vec3& geometric, const State& state, RayCounts& counts) const {
-    const SurfacePoint at{ray, obj, p, texP, uv, viewDir, geometric, 0.0};
-    if (top.map) return shadeTextureMap(top, at, state, counts);
+                         const Vec3& geometric, const State& state, RayCounts& counts,
+                         const Vec3* patternNormal, Vec3* perturbed) const {
+    const SurfacePoint at{
+        ray, obj, p, texP, uv, viewDir, geometric, 0.0, patternNormal ? *patternNormal : geometric};
+    if (top.map) return shadeTextureMap(top, at, state, counts, perturbed);
     if (state.transmit) *state.transmit = 0.0;
     SurfacePoint here = at;
     here.eps = selfHitEpsilon(p, ray);
     const bool spawns = secondaryRays_ && state.level < scene_.globals.maxTraceLevel;
     std::optional<Crossing> crossing;
     const Layers layers = shadeLayers(top, here, spawns, state, crossing, counts);
+    if (perturbed && layers.perturbed) *perturbed = layers.n;
     if (!spawns || !layers.transmits) return layers.color;
     const double throughWeight = std::max(
         {std::abs(layers.through.r), std::abs(layers.through.g), std::abs(layers.through.b)});
@@ -438,26 +457,50 @@ RGB Tracer::shadeTexture(const scene::Texture& top, const scene::Ray& ray, const
 
 // A patterned texture: povray 3.7 shades each texture the pattern picks
 // (with its own reflection and transmission) and blends the shaded colours
-// by their weights (measured).
+// by their weights (measured). It shades them last entry first, and the
+// pattern of a texture map inside an entry sees, as the normal, the one
+// the entries shaded before it perturbed (measured: a slope map of a bumpy
+// and a plain texture, used twice in a gradient map, picks by the bumped
+// normal for the lower entry; textures/patterns/slopemt_37.pov matches
+// exactly this way); lighting keeps each entry's own normal.
 RGB Tracer::shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,
-                            RayCounts& counts) const {
+                            RayCounts& counts, Vec3* perturbed) const {
     RGB color(0.0);
     const Vec3 q = top.transform.inversePoint(top.uvMapping ? at.uv : at.texP);
     const Vec3 entry = top.map->entryPoint(q);
-    const scene::SurfaceInfo surface{at.geometric, at.viewDir, at.uv};
+    const scene::SurfaceInfo surface{at.patternNormal, at.viewDir, at.uv};
+    Vec3 seen = at.patternNormal;
     double transmitSum = 0, entryTransmit = 0;
     State part = state;
     if (state.transmit) part.transmit = &entryTransmit;
+    // The entries picked, shaded last first (a map picks one or two; an
+    // average list may pick more).
+    using Picked = std::pair<const scene::Texture*, double>;
+    std::array<Picked, 4> few{};
+    size_t count = 0;
+    std::vector<Picked> many;
     top.map->visit(
         q,
         [&](const scene::Texture& t, double w) {
-            color += shadeTexture(t, at.ray, at.obj, at.p, entry, at.uv, at.viewDir, at.geometric,
-                                  part, counts) *
-                     w;
-            transmitSum += entryTransmit * w;
+            if (count < few.size())
+                few[count] = {&t, w};
+            else {
+                if (many.empty()) many.assign(few.begin(), few.end());
+                many.emplace_back(&t, w);
+            }
+            ++count;
         },
         &surface);
+    const Picked* picked = many.empty() ? few.data() : many.data();
+    for (size_t i = count; i-- > 0;) {
+        const Vec3 before = seen;
+        color += shadeTexture(*picked[i].first, at.ray, at.obj, at.p, entry, at.uv, at.viewDir,
+                              at.geometric, part, counts, &before, &seen) *
+                 picked[i].second;
+        transmitSum += entryTransmit * picked[i].second;
+    }
     if (state.transmit) *state.transmit = transmitSum;
+    if (perturbed) *perturbed = seen;
     return color;
 }
 
@@ -501,6 +544,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
     out.n = at.geometric;
     RGB pigment(0.0);
     std::optional<RGB> radiosityHere;
+    std::optional<Grain> grain;  // crand's darkening, carried down the layers
     const size_t layerCount = 1 + top.layersBelow.size();
     for (size_t i = 0; i < layerCount; ++i) {
         const scene::Texture& tex = i == 0 ? top : *top.layersBelow[i - 1];
@@ -510,6 +554,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
         const scene::SurfaceInfo unperturbed{at.geometric, at.viewDir, at.uv};
         const Vec3 n = tex.perturbNormal(layerP, at.geometric, at.uv, &unperturbed);
         out.n = n;
+        out.perturbed = out.perturbed || tex.normal;
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
         const scene::SurfaceInfo info{n, at.viewDir, at.uv};
@@ -536,7 +581,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             gathered = &*radiosityHere;
         }
         const RGB local = localLight(tex, surface, at.obj, at.p, n, at.viewDir, at.eps, state.fade,
-                                     counts, gathered, state.radiosity.ray);
+                                     counts, gathered, state.radiosity.ray, &grain);
         out.color += i == 0 ? local : out.through * local;
 
         if (spawns && fin.reflection.any()) {
@@ -632,10 +677,10 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
             // perturbed normal sends it through (measured: bumps on a water
             // surface seen from below, interior/caustic2.pov).
             const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-            // It fades over the way here as refracted light would
-            // (measured: a glass block with fade_distance shows its
-            // totally reflected edges as dim as its face), where the
-            // reflection term stays whole.
+            // Faded on the way here as the refracted ray is (measured: a
+            // fading glass cone with no reflection at all; a glass block
+            // with fade_distance shows its totally reflected edges as dim
+            // as its face), where the reflection term stays whole.
             color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts) * state.fade;
         }
     }

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "render/atmosphere.h"
 #include "render/dispersion.h"
@@ -15,6 +16,7 @@
 #include "render/radiosity.h"
 #include "render/world.h"
 #include "util/color.h"
+#include "util/sample_random.h"
 
 namespace frameray::render {
 
@@ -140,9 +142,13 @@ class Tracer {
     // p is where the surface is lit, texP where the texture is evaluated
     // (they differ inside a warped texture map); uv is the surface's
     // (u, v, 0) for uv_mapping.
+    // `patternNormal`: the normal a texture map's pattern sees (null: the
+    // geometric one); `perturbed`, when given, receives the last normal a
+    // normal pattern of the texture made (untouched when none did).
     RGB shadeTexture(const scene::Texture& top, const scene::Ray& ray, const scene::Object& obj,
                      const Vec3& p, const Vec3& texP, const Vec3& uv, const Vec3& viewDir,
-                     const Vec3& geometric, const State& state, RayCounts& counts) const;
+                     const Vec3& geometric, const State& state, RayCounts& counts,
+                     const Vec3* patternNormal = nullptr, Vec3* perturbed = nullptr) const;
     // The pieces of shadeTexture. SurfacePoint is the point being shaded
     // (shadeTexture's arguments and the self-hit epsilon of rays leaving it).
     struct SurfacePoint {
@@ -150,6 +156,7 @@ class Tracer {
         const scene::Object& obj;
         Vec3 p, texP, uv, viewDir, geometric;
         double eps;
+        Vec3 patternNormal;  // what a texture map's pattern sees as the normal
     };
     // Where a ray through the surface goes: the interiors beyond it and
     // the iors on both sides.
@@ -179,9 +186,10 @@ class Tracer {
         RGB reflectivity{0.0};
         RGB reflectedSum{0.0};
         Vec3 n;
+        bool perturbed = false;  // some layer has a normal pattern
     };
     RGB shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,
-                        RayCounts& counts) const;
+                        RayCounts& counts, Vec3* perturbed) const;
     Crossing crossingOf(const scene::Object& obj, const State& state) const;
     // `crossing` is found when a layer's reflection needs it (kept for
     // continueThrough).
@@ -194,13 +202,24 @@ class Tracer {
                         const Crossing& c, const State& state, RayCounts& counts) const;
     RGB traceDispersed(const Layers& layers, const SurfacePoint& at, const Crossing& c,
                        const State& state, State child, double& seen, RayCounts& counts) const;
+    // crand's darkening of the diffuse light at one point, carried from
+    // texture layer to layer (see localLight): per light, the sum of
+    // crand times a fresh random number times the layer's pigment over the
+    // layers shaded so far.
+    struct Grain {
+        explicit Grain(const Vec3& p);
+        SampleRandom random;
+        std::vector<RGB> sums;  // by the light's place in LightsFor
+    };
     // `gathered`: the radiosity light arriving at p, when radiosity is on
     // (it replaces ambient light); `radiosityRay`: shading for a radiosity
-    // ray, which sees no highlights and area lights as point lights.
+    // ray, which sees no highlights and area lights as point lights;
+    // `grain`: crand's darkening so far at this point, null when no layer
+    // above has crand (made here for the first layer that has).
     RGB localLight(const scene::Texture& tex, const Color& surface, const scene::Object& obj,
                    const Vec3& p, const Vec3& n, const Vec3& viewDir, double eps, const RGB& fade,
-                   RayCounts& counts, const RGB* gathered = nullptr,
-                   bool radiosityRay = false) const;
+                   RayCounts& counts, const RGB* gathered = nullptr, bool radiosityRay = false,
+                   std::optional<Grain>* grain = nullptr) const;
 
     // --- radiosity (tracer_radiosity.cpp) ---
     // The light that other surfaces send to p (normal n, facing the

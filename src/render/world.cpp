@@ -350,13 +350,10 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
     ctx.hitObject = nullptr;
     ctx.kind = kind;
     ctx.tests = counters();
-    if (hasBounded_ && embreeCanTrace(ray, ctx.tMax)) {
-        RTCRayHit rh{};
-        rh.ray = toEmbreeRay(ray, ctx.tMax);
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(bvh_, &ctx.embree, &rh);
-        if (ctx.error) std::rethrow_exception(ctx.error);
-    }
+    // Unbounded objects first, in scene order: a bounded surface at the
+    // same distance as one of them must be strictly nearer to win, as in
+    // povray with bounding on (measured: a plane wins over a box face
+    // lying in it whichever is declared first; issue 22, filtfun).
     for (size_t i = 0; i < unbounded_.size(); ++i) {
         const scene::Object* obj = unbounded_[i];
         ++ctx.tests[unboundedKinds_[i]];
@@ -365,6 +362,13 @@ bool World::intersect(const scene::Ray& ray, double tMin, double tMax, Hit& hit,
             ctx.tMax = h.t;
             ctx.hitObject = h.primitive;
         }
+    }
+    if (hasBounded_ && embreeCanTrace(ray, ctx.tMax)) {
+        RTCRayHit rh{};
+        rh.ray = toEmbreeRay(ray, ctx.tMax);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(bvh_, &ctx.embree, &rh);
+        if (ctx.error) std::rethrow_exception(ctx.error);
     }
     if (!ctx.hitObject) return false;
     hit.t = ctx.tMax;

@@ -5,6 +5,7 @@
 
 #include "scene/blob.h"
 #include "scene/csg.h"
+#include "scene/quadric.h"
 #include "scene/scratch.h"
 
 namespace frameray::scene {
@@ -96,6 +97,26 @@ bool passesBoundedBy(const Object& obj, const Ray& ray, double tMin) {
     return true;
 }
 
+// clipped_by also bounds: povray tests a clipped object only for rays
+// that meet its bounding box, which is the box of its clipping objects
+// (their common part), not its own: measured, a finite cylinder clipped
+// by a height field shows wherever rays cross the height field's box; an
+// infinite quadric's box is its part of that box (Cylinder_Y shows only
+// where rays cross the height field's box inside the cylinder's x and z
+// range, objects/csg/hfclip.pov). A closed clip's inside lies in its box,
+// so this cuts nothing more; an open one (a height field, whose inside
+// reaches down without end) cuts the object at the box. An inverted
+// clip's inside is outside its box: never a bound here.
+bool meetsClipBoxes(const Object& obj, const Ray& ray, double tMin, double tMax) {
+    Bounds box = Bounds::infinite();
+    for (const ObjectRef& clip : obj.clippedBy)
+        if (!clip->inverse) box = box.intersected(clip->surfaceBounds());
+    if (obj.shape && !obj.inverse && dynamic_cast<const Quadric*>(obj.shape.get()))
+        box = obj.insideBoundsWithin(box);
+    double from = tMin, to = tMax;
+    return box.padded().clip(ray, from, to);
+}
+
 bool insideAllClips(const Object& obj, const Vec3& p) {
     return std::all_of(obj.clippedBy.begin(), obj.clippedBy.end(),
                        [&](const ObjectRef& c) { return c->inside(p); });
@@ -108,6 +129,7 @@ void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
     // povray cuts an object at an undersized bound for what the camera
     // sees but not for the shadow it casts.
     if (kind != RayKind::Shadow && !boundedBy.empty() && !passesBoundedBy(*this, ray, tMin)) return;
+    if (!clippedBy.empty() && !meetsClipBoxes(*this, ray, tMin, tMax)) return;
     const size_t from = hits.size();
     if (shape) {
         thread_local std::vector<double> ts;  // the shape call below never recurses

@@ -387,7 +387,9 @@ double Pattern::raw(const Vec3& p, const SurfaceInfo* surface) const {
             return wrapAboveOne(function->eval(args));
         }
         case PatternKind::Onion:
-            return length(p);
+            // Wrapped by the pattern itself (measured: onion is 0 at a
+            // distance of exactly 1 or 2, not the map's last colour).
+            return std::fmod(length(p), 1.0);
         case PatternKind::Radial:
             return turns(p.x, -p.z);
         case PatternKind::Spherical:

@@ -22,10 +22,31 @@ bool Shape::firstHit(const Ray& ray, double tMin, double tMax, double& t) const 
 
 namespace {
 
-// Both roots of |o + t d - c|^2 = r^2, in increasing order, by the
-// cancellation-free closest-approach formulation of shape_math.h.
+// Both roots of |o + t d - c|^2 = r^2, in increasing order. Near the
+// sphere, povray's arithmetic (closest approach along the unit direction,
+// then the half chord): its rounding decides on which side of a pattern
+// boundary lying on the surface a hit falls (measured: an onion with
+// rings at radius 1 on a unit sphere, textures/pigments/cantelop.pov).
+// Far away, where that form cancels catastrophically, the cancellation-
+// free formulation of shape_math.h.
 bool sphereRoots(const Ray& ray, const Vec3& center, double radius, double& t0, double& t1) {
-    return detail::distanceRoots(ray.origin - center, ray.direction, radius * radius, t0, t1);
+    const Vec3 oc = center - ray.origin;
+    const double r2 = radius * radius;
+    const double ocSquared = dot(oc, oc);
+    const double a = dot(ray.direction, ray.direction);
+    if (a == 0 || !(ocSquared <= 1e6 * r2))
+        return detail::distanceRoots(ray.origin - center, ray.direction, r2, t0, t1);
+    // A direction unit to rounding is used as it is, as povray does.
+    const bool unitLength = std::fabs(a - 1) < 1e-9;
+    const double length = unitLength ? 1 : std::sqrt(a);
+    const Vec3 unit = unitLength ? ray.direction : ray.direction * (1 / length);
+    const double closest = dot(oc, unit);
+    const double halfChord2 = r2 - ocSquared + closest * closest;
+    if (halfChord2 < 0) return false;
+    const double halfChord = std::sqrt(halfChord2);
+    t0 = (closest - halfChord) / length;
+    t1 = (closest + halfChord) / length;
+    return true;
 }
 
 }  // namespace
@@ -158,6 +179,14 @@ Vec3 Box::normal(const Vec3& p) const {
     int bestAxis = 0;
     double bestDist = kInfinity, sign = 1;
     for (int axis = 0; axis < 3; ++axis) {
+        // A box flat along an axis (corners sharing a coordinate) is all
+        // that face, whatever rounding left in the point (measured:
+        // var_reflection's flat boxes reflect everywhere in povray).
+        if (hi_[axis] == lo_[axis]) {
+            Vec3 n;
+            n[axis] = 1;
+            return n;
+        }
         const double extent = std::fmax(hi_[axis] - lo_[axis], 1e-300);
         const double dLo = std::fabs(p[axis] - lo_[axis]) / extent;
         const double dHi = std::fabs(p[axis] - hi_[axis]) / extent;

@@ -1,6 +1,8 @@
+#include "scene/shapes.h"
+
 #include <gtest/gtest.h>
 
-#include "scene/shapes.h"
+#include <cmath>
 
 using namespace frameray;
 using namespace frameray::scene;
@@ -47,4 +49,17 @@ TEST(Box, SlabsAndNormals) {
     EXPECT_TRUE(b.inside({0.9, 0, 0}));
     EXPECT_FALSE(b.inside({1.1, 0, 0}));
     EXPECT_FALSE(b.firstHit({{2, 0, -5}, {0, 0, 1}}, 0, kInfinity, t));
+}
+
+TEST(Box, FlatBoxNormalIsItsFaceWhateverTheRounding) {
+    // var_reflection.pov's boxes <-1,-5,0.25>,<1,20000,0.25>: a hit point a
+    // rounding error off z = 0.25 still lies on the flat face (povray
+    // reflects off all of it).
+    Box b({-1, -5, 0.25}, {1, 20000, 0.25});
+    for (const double dz : {0.0, 1e-16, -1e-16, 5.55e-17}) {
+        const Vec3 n = b.normal({0.99, 19999.9, 0.25 + dz});
+        EXPECT_EQ(std::fabs(n.z), 1) << dz;
+        EXPECT_EQ(n.x, 0) << dz;
+        EXPECT_EQ(n.y, 0) << dz;
+    }
 }
