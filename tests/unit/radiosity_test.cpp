@@ -375,6 +375,7 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
     samples[0].irradiance.g = 1.0 / 7.0;
     samples[0].nearest = 0.0123;
     samples[0].toNearest = normalize(Vec3(1, 2, 3));
+    samples[1].quality = 0.3125;  // a sample of weakly rated rays counts less when looked up
     render::writeRadiosityFile(dir / "a.rca", samples);
     const std::vector<render::RadiositySample> back = render::readRadiosityFile(dir / "a.rca");
     ASSERT_EQ(back.size(), samples.size());
@@ -388,7 +389,15 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
         EXPECT_EQ(back[i].depth, samples[i].depth);
         EXPECT_EQ(back[i].nearest, samples[i].nearest);
         EXPECT_EQ(back[i].toNearest.y, samples[i].toNearest.y);
+        EXPECT_EQ(back[i].quality, samples[i].quality);
     }
+    // The previous format (no quality) is still read: quality 1.
+    std::ofstream(dir / "old.rca")
+        << "frameray radiosity cache 2\n0 1 2 3 0 0 1 0.5 0.5 0.5 2 1 0 0 1\n";
+    const std::vector<render::RadiositySample> old = render::readRadiosityFile(dir / "old.rca");
+    ASSERT_EQ(old.size(), 1u);
+    EXPECT_EQ(old[0].quality, 1.0);
+    EXPECT_EQ(old[0].radius, 2.0);
     // A povray cache file (its sample lines start with C and a depth).
     std::ofstream(dir / "pov.rca") << "C2\t-1.29\t-0.9\t0.76\t7ffe7f\t0.0985\t0.0988\t0.1161\n";
     try {
@@ -398,7 +407,7 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
         EXPECT_NE(std::string(e.what()).find("not a frameray radiosity cache file"),
                   std::string::npos);
     }
-    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 2\n0 1 2 3\n";
+    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 3\n0 1 2 3\n";
     EXPECT_THROW(render::readRadiosityFile(dir / "bad.rca"), std::runtime_error);
     EXPECT_THROW(render::readRadiosityFile(dir / "missing.rca"), std::runtime_error);
     fs::remove_all(dir);
