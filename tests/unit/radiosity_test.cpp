@@ -284,6 +284,36 @@ TEST(Radiosity, ImageDoesNotDependOnTheThreadCount) {
     EXPECT_EQ(one.radiosity.samples, two.radiosity.samples);
 }
 
+// povray 3.7's pretrace spots lie at their cells' centres (moved by up to a
+// pixel) even where the cell reaches past the image's edge (measured from
+// the positions in its cache file: rad_def_test at 160x120, spots near
+// y = 121.6 +- 1). Here 48x36 in cells of 16 pixels: the last row of spots
+// is near y = 40, world y = 1.8 - 40/10 = -2.2; kept within the image
+// they stopped at -1.8.
+TEST(Radiosity, PretraceSpotsMayLieBeyondTheImage) {
+    const std::string scene = R"(#version 3.7;
+global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
+  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
+camera { orthographic location <0, 0, -10> direction z right x * 4.8 up y * 3.6 }
+sky_sphere { pigment { rgb 1 } }
+plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+)";
+    render::FrameSettings keep;
+    keep.keepRadiosity = true;
+    render::FrameStats stats;
+    const render::FrameImage image = renderText(scene, 1, stats, keep);
+    double lowest = 0;
+    int pretrace = 0;
+    for (const render::RadiositySample& s : image.radiosityCache) {
+        if (s.pass == 0) continue;
+        ++pretrace;
+        lowest = std::min(lowest, s.point.y);
+    }
+    EXPECT_EQ(pretrace, 9);  // 3 x 3 spots
+    EXPECT_LT(lowest, -2.05);
+    EXPECT_GT(lowest, -2.35);
+}
+
 TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
     render::FrameStats stats;
     renderText(room(false), 1, stats);
