@@ -206,9 +206,10 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     // shows the fog only in front of it and beyond it; inside a hollow
     // sky sphere the fog stays).
     if (!state.inside.allHollow()) return color;
-    // povray 3.7's radiosity rays see no fog (measured: a white plane
-    // under a grey sky in a red fog, constant or ground, gathers the grey
-    // unfogged; camera rays are fogged alike).
+    // povray 3.7's radiosity rays see no fog and no rainbow (measured: a
+    // white plane under a grey sky in a red fog, constant or ground,
+    // gathers the grey unfogged, camera rays fogged alike; a red rainbow
+    // over the directions the plane gathers from leaves it grey).
     if (state.kind == scene::RayKind::Radiosity) return color;
     if (state.transmit) {
         const Color seen = atmosphere_.along(ray, hit.t, Color(color, 0.0, *state.transmit));
