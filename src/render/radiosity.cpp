@@ -48,19 +48,31 @@ Radiosity::Radiosity(const scene::RadiositySettings& settings, const Vec3& eye, 
     }
 }
 
-Vec3 Radiosity::direction(int i, int count, size_t start) {
-    // Point i of a spiral lattice over the unit disc (radius
-    // sqrt((i + 1/2) / count), turned by the golden angle each step),
-    // lifted to the hemisphere (Malley's method: uniform over the disc is
-    // cosine-weighted over the hemisphere); the whole set turned by the
-    // set's angle.
-    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-    const double set = static_cast<double>(start / static_cast<size_t>(count));
-    const double turn = 2 * std::numbers::pi * std::fmod(set * 0.6180339887498949, 1.0);
-    const double r2 = (i + 0.5) / count;
+namespace {
+
+// The radical inverse of n in base b (the digits of n mirrored about the
+// point): point n of the van der Corput sequence.
+double radicalInverse(size_t n, size_t base) {
+    double result = 0;
+    const double inverse = 1.0 / static_cast<double>(base);
+    double digit = inverse;
+    for (; n > 0; n /= base, digit *= inverse) result += static_cast<double>(n % base) * digit;
+    return result;
+}
+
+}  // namespace
+
+Vec3 Radiosity::direction(size_t index) {
+    const double r2 = radicalInverse(index + 1, 2);
+    const double phi = 2 * std::numbers::pi * radicalInverse(index + 1, 3);
     const double r = std::sqrt(r2);
-    const double phi = golden * i + turn;
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r2))};
+}
+
+void Radiosity::sampleFrame(const Vec3& n, Vec3& u, Vec3& v) {
+    const Vec3 axis = std::fabs(n.z) >= 0.9 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
+    u = normalize(cross(n, axis));
+    v = cross(u, n);
 }
 
 RadiosityCell Radiosity::cellOf(const RadiositySample& sample) const {

@@ -91,16 +91,23 @@ class Radiosity {
     }
 
     // The pool of directions samples take their rays from, in turn (the
-    // second value of `count`, at least `count`): `count` consecutive
-    // directions make one sample's set, a cosine-weighted spiral over the
-    // hemisphere (evenly spread for any count), each set of the pool
-    // turned by its own angle (the golden ratio's multiples of a turn), so
-    // neighbouring samples err differently and blending them averages the
-    // errors out. With a pool of `count` every sample shoots the same set.
+    // second value of `count`, at least `count`; povray's default 1600):
+    // each sample takes the next `count` consecutive entries. Measured
+    // from povray 3.7 (a sky-only scene whose sky colour encodes the
+    // direction, one new sample per pixel, 16-bit output): entry j is
+    // point j+1 of the Halton sequence in bases 2 and 3, lifted to the
+    // hemisphere cosine-weighted (sin^2 of the angle from the normal = the
+    // base-2 radical inverse, the turn around it = the base-3 one), so any
+    // run of consecutive entries is stratified on its own. povray uses
+    // this for pools of 1600 and more (the default); for smaller pools it
+    // uses another table, not measured: frameray takes the same sequence.
     size_t poolSize() const { return poolSize_; }
-    // Direction i of the `count` of the set starting at `start` in the
-    // pool, in a frame whose z is the surface normal.
-    static Vec3 direction(int i, int count, size_t start);
+    // Pool entry `index` in a frame whose z is the surface normal.
+    static Vec3 direction(size_t index);
+    // The frame povray 3.7 turns pool entries into for unit normal n
+    // (measured as above): u = n x z normalized, or n x y where |n.z| is
+    // 0.9 or more; v = u x n. World direction = u*x + v*y + n*z.
+    static void sampleFrame(const Vec3& n, Vec3& u, Vec3& v);
     const std::vector<RadiositySample>& samples() const { return samples_; }
     const std::vector<RadiosityCell>& cells() const { return cells_; }
     const RadiosityOctree& octree() const { return octree_; }

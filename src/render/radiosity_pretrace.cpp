@@ -20,7 +20,8 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
     // Each pass goes tile by tile (povray's 32-pixel render blocks, in
     // rows). Within a tile the spots lie on a grid of the pass's step,
     // aligned across the image, each at its cell's centre moved by up to a
-    // pixel (hashed from the pass and the spot). At +WT1 povray lets every
+    // pixel (hashed from the pass and the spot), even where that lies past
+    // the image's edge. At +WT1 povray lets every
     // lookup see every sample gathered so far, whichever tile gathered it.
     //
     // A tile (or, with nearest_count's second value, each part of it) goes
@@ -81,14 +82,19 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
                     for (double gx = startX; gx < x1; gx += step) {
                         if (gx < x0) continue;
                         SampleRandom r(gx, gy, static_cast<std::uint64_t>(pass) + 0x5ad105ULL);
-                        const double x = std::clamp(gx + offset + jitter * (2 * r.next() - 1) + 0.5,
-                                                    double(window.x0), window.x1 - 1e-6);
-                        const double y = std::clamp(gy + offset + jitter * (2 * r.next() - 1) + 0.5,
-                                                    double(window.y0), window.y1 - 1e-6);
+                        // Not kept within the image: povray's spots of the last
+                        // row and column lie at their cells' centres, beyond
+                        // the edge when the cell reaches past it (measured from
+                        // its cache file).
+                        const double x = gx + offset + jitter * (2 * r.next() - 1) + 0.5;
+                        const double y = gy + offset + jitter * (2 * r.next() - 1) + 0.5;
                         ++traced;
                         // A mesh_camera's pixel has its own rays (none, one
                         // or several); every other projection one.
-                        if (std::vector<scene::Ray> meshRays; camera.meshRays(x, y, meshRays)) {
+                        // (A mesh_camera's spots stay on its pixels.)
+                        if (std::vector<scene::Ray> meshRays; camera.meshRays(
+                                std::clamp(x, double(window.x0), window.x1 - 1e-6),
+                                std::clamp(y, double(window.y0), window.y1 - 1e-6), meshRays)) {
                             for (const scene::Ray& ray : meshRays)
                                 tracer.traceCamera(ray, rays, nullptr, &task);
                         } else if (const std::optional<scene::Ray> ray = camera.generate(x, y)) {

@@ -179,9 +179,11 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
             return throughMedia(ray, 0.0, true, state, seen.rgb, counts);
         }
         // No fog for a ray that leaves the scene inside an object that is
-        // not hollow (measured: the sky seen from inside an inverse plane).
-        RGB sky = state.inside.allHollow() ? atmosphere_.miss(ray).rgb
-                                           : atmosphere_.sky(normalize(ray.direction)).rgb;
+        // not hollow (measured: the sky seen from inside an inverse plane),
+        // nor for a radiosity ray (below).
+        RGB sky = state.inside.allHollow() && state.kind != scene::RayKind::Radiosity
+                      ? atmosphere_.miss(ray).rgb
+                      : atmosphere_.sky(normalize(ray.direction)).rgb;
         if (fades) sky = sky * interiorFade(*medium->interior, scene::kInfinity);
         return throughMedia(ray, 0.0, true, state, sky, counts);
     }
@@ -205,6 +207,11 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
     // shows the fog only in front of it and beyond it; inside a hollow
     // sky sphere the fog stays).
     if (!state.inside.allHollow()) return color;
+    // povray 3.7's radiosity rays see no fog and no rainbow (measured: a
+    // white plane under a grey sky in a red fog, constant or ground,
+    // gathers the grey unfogged, camera rays fogged alike; a red rainbow
+    // over the directions the plane gathers from leaves it grey).
+    if (state.kind == scene::RayKind::Radiosity) return color;
     if (state.transmit) {
         const Color seen = atmosphere_.along(ray, hit.t, Color(color, 0.0, *state.transmit));
         *state.transmit = seen.transmit;

@@ -7,18 +7,6 @@
 
 namespace frameray::render {
 
-namespace {
-
-// A frame around unit normal n (z = n) that turns smoothly with n except
-// near one axis.
-void tangentFrame(const Vec3& n, Vec3& u, Vec3& v) {
-    const Vec3 helper = std::fabs(n.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-    u = normalize(cross(helper, n));
-    v = cross(n, u);
-}
-
-}  // namespace
-
 RGB Tracer::radiosityLight(const Vec3& p, const Vec3& n, const scene::Object& obj, double eps,
                            double weight, const State& state, RayCounts& counts) const {
     RadiosityTask* task = state.radiosity.task;
@@ -75,7 +63,7 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     count = std::min(count, static_cast<int>(radiosity_->poolSize()));
     const size_t first = state.radiosity.task->takeDirections(depth, static_cast<size_t>(count));
     Vec3 u, v;
-    tangentFrame(n, u, v);
+    Radiosity::sampleFrame(n, u, v);
     const double pathLength = state.radiosity.length + length(p - state.radiosity.origin);
 
     State child;
@@ -97,7 +85,8 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     double nearest = scene::kInfinity;
     Vec3 toNearest(0, 0, 1);
     for (int i = 0; i < count; ++i) {
-        const Vec3 d = Radiosity::direction(i, count, first);
+        const Vec3 d =
+            Radiosity::direction((first + static_cast<size_t>(i)) % radiosity_->poolSize());
         const Vec3 dir = u * d.x + v * d.y + n * d.z;
         ++counts.radiosity;
         quality = 1;

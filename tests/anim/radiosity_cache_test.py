@@ -71,7 +71,7 @@ def main():
     first, _ = run(frameray, work, "to_file",
                    ["+WT2", "Final_Frame=2", "+RFO", "Radiosity_File_Name=" + cache])
     with open(cache) as f:
-        if f.readline().strip() != "frameray radiosity cache 2" or len(f.readlines()) < 10:
+        if f.readline().strip() != "frameray radiosity cache 3" or len(f.readlines()) < 10:
             fail("Radiosity_To_File wrote no cache")
     again, _ = run(frameray, work, "from_file",
                    ["+WT2", "Final_Frame=2", "+RFI", "Radiosity_File_Name=" + cache])

@@ -58,16 +58,16 @@ render::RadiositySample sampleAt(const Vec3& p, const Vec3& n, double irradiance
 }  // namespace
 
 // The pool of directions (the second value of `count`): samples take their
-// rays from it in turn, `count` at a time; each sample's set is
-// cosine-weighted and evenly spread on its own, consecutive sets differ,
-// and a pool of `count` gives every sample the same set.
-TEST(Radiosity, EverySampleShootsAnEvenCosineWeightedSet) {
-    for (const size_t start : {size_t{0}, size_t{35}, size_t{70}}) {
+// rays from it in turn, `count` at a time; every run of the pool is
+// cosine-weighted and stratified on its own (within a few percent), and a
+// pool of `count` gives every sample the same set.
+TEST(Radiosity, EverySampleShootsAStratifiedCosineWeightedRun) {
+    for (size_t start = 0; start < 1600; start += 35) {
         double meanCos = 0;
         int within60 = 0;
         Vec3 sum(0);
-        for (int i = 0; i < 35; ++i) {
-            const Vec3 d = render::Radiosity::direction(i, 35, start);
+        for (size_t i = 0; i < 35; ++i) {
+            const Vec3 d = render::Radiosity::direction((start + i) % 1600);
             EXPECT_NEAR(length(d), 1.0, 1e-12);
             EXPECT_GE(d.z, 0.0);
             meanCos += d.z / 35;
@@ -75,14 +75,11 @@ TEST(Radiosity, EverySampleShootsAnEvenCosineWeightedSet) {
             sum = sum + d;
         }
         // The mean of cos is 2/3; the share within 60 degrees is 0.75.
-        EXPECT_NEAR(meanCos, 2.0 / 3.0, 0.002) << start;
-        EXPECT_NEAR(within60 / 35.0, 0.75, 0.5 / 35) << start;
-        EXPECT_NEAR(sum.x / 35, 0.0, 0.02) << start;
-        EXPECT_NEAR(sum.y / 35, 0.0, 0.02) << start;
+        EXPECT_NEAR(meanCos, 2.0 / 3.0, 0.025) << start;
+        EXPECT_NEAR(within60 / 35.0, 0.75, 0.03) << start;
+        EXPECT_NEAR(sum.x / 35, 0.0, 0.06) << start;
+        EXPECT_NEAR(sum.y / 35, 0.0, 0.06) << start;
     }
-    EXPECT_GT(
-        length(render::Radiosity::direction(3, 35, 0) - render::Radiosity::direction(3, 35, 35)),
-        0.01);
     // Samples take consecutive runs of the pool, each depth its own turn.
     scene::RadiositySettings set;
     set.count = 35;
@@ -100,6 +97,55 @@ TEST(Radiosity, EverySampleShootsAnEvenCosineWeightedSet) {
     render::RadiosityTask one(single, true, true);
     EXPECT_EQ(one.takeDirections(0, 35), 0u);
     EXPECT_EQ(one.takeDirections(0, 35), 0u);
+}
+
+// povray 3.7's directions, measured: a plane under a sky whose colour is
+// (x+1)/2, (y+1)/2, (z+1)/2 of the direction, radiosity with recursion
+// limit 1 and a reuse radius too small to reuse, so every pixel of a
+// 40x40 +WT1 render (16-bit, gamma 1) is one new sample, the mean of its
+// rays' directions; counts 5, 7, 9 and 11 solved for the 1600 entries
+// (residual 6e-5). Pool entry j is Halton point j+1 (bases 2, 3).
+TEST(Radiosity, SamplesShootPovraysDirections) {
+    const auto world = [](const Vec3& n, size_t index) {
+        Vec3 u, v;
+        render::Radiosity::sampleFrame(n, u, v);
+        const Vec3 d = render::Radiosity::direction(index);
+        return u * d.x + v * d.y + n * d.z;
+    };
+    const auto near = [](const Vec3& a, const Vec3& b, double tolerance) {
+        return length(a - b) < tolerance;
+    };
+    // Single entries, normal +z (solved from the counts).
+    const Vec3 up(0, 0, 1);
+    EXPECT_TRUE(near(world(up, 0), Vec3(0.35351, 0.61236, 0.70713), 1e-3));
+    EXPECT_TRUE(near(world(up, 1), Vec3(0.24999, -0.43303, 0.86595), 1e-3));
+    EXPECT_TRUE(near(world(up, 2), Vec3(-0.66337, 0.55670, 0.50004), 1e-3));
+    EXPECT_TRUE(near(world(up, 3), Vec3(0.33229, 0.12087, 0.93540), 1e-3));
+    EXPECT_TRUE(near(world(up, 1599), Vec3(0.08282, -0.04916, 0.99531), 1e-3));
+    // Other normals, count 5: pixel k shows the mean of entries 5k..5k+4.
+    const auto mean5 = [&](const Vec3& n, size_t k) {
+        Vec3 sum(0);
+        for (size_t i = 0; i < 5; ++i) sum = sum + world(n, 5 * k + i);
+        return sum * 0.2;
+    };
+    const Vec3 tilted = normalize(Vec3(1, 2, 3));
+    EXPECT_TRUE(near(mean5(tilted, 0), Vec3(0.16374, 0.38793, 0.59002), 1e-3));
+    EXPECT_TRUE(near(mean5(tilted, 1), Vec3(0.10021, 0.30550, 0.66168), 1e-3));
+    EXPECT_TRUE(near(mean5(tilted, 77), Vec3(0.39275, 0.28023, 0.60107), 1e-3));
+    const Vec3 side = normalize(Vec3(3, -1, 0.5));
+    EXPECT_TRUE(near(mean5(side, 0), Vec3(0.68481, -0.19979, 0.12859), 1e-3));
+    EXPECT_TRUE(near(mean5(side, 77), Vec3(0.61627, -0.44360, 0.13225), 1e-3));
+    const Vec3 down(0, 0, -1);
+    EXPECT_TRUE(near(mean5(down, 0), Vec3(-0.02702, 0.01567, -0.72418), 1e-3));
+    EXPECT_TRUE(near(mean5(down, 77), Vec3(0.22594, 0.01741, -0.73669), 1e-3));
+    // The frame switches from n x z to n x y at |n.z| = 0.9 (measured
+    // between 0.89 and 0.9).
+    Vec3 u, v;
+    render::Radiosity::sampleFrame(normalize(Vec3(0.456, 0, 0.89)), u, v);
+    EXPECT_TRUE(near(u, Vec3(0, -1, 0), 1e-3));
+    render::Radiosity::sampleFrame(normalize(Vec3(0.4146, 0, 0.91)), u, v);
+    EXPECT_TRUE(near(u, Vec3(-0.91, 0, 0.4146), 1e-3));
+    EXPECT_TRUE(near(v, Vec3(0, 1, 0), 1e-3));
 }
 
 // povray 3.7's settings per bounce: rays halve (at least 5), the error
@@ -238,6 +284,36 @@ TEST(Radiosity, ImageDoesNotDependOnTheThreadCount) {
     EXPECT_EQ(one.radiosity.samples, two.radiosity.samples);
 }
 
+// povray 3.7's pretrace spots lie at their cells' centres (moved by up to a
+// pixel) even where the cell reaches past the image's edge (measured from
+// the positions in its cache file: rad_def_test at 160x120, spots near
+// y = 121.6 +- 1). Here 48x36 in cells of 16 pixels: the last row of spots
+// is near y = 40, world y = 1.8 - 40/10 = -2.2; kept within the image
+// they stopped at -1.8.
+TEST(Radiosity, PretraceSpotsMayLieBeyondTheImage) {
+    const std::string scene = R"(#version 3.7;
+global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
+  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
+camera { orthographic location <0, 0, -10> direction z right x * 4.8 up y * 3.6 }
+sky_sphere { pigment { rgb 1 } }
+plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+)";
+    render::FrameSettings keep;
+    keep.keepRadiosity = true;
+    render::FrameStats stats;
+    const render::FrameImage image = renderText(scene, 1, stats, keep);
+    double lowest = 0;
+    int pretrace = 0;
+    for (const render::RadiositySample& s : image.radiosityCache) {
+        if (s.pass == 0) continue;
+        ++pretrace;
+        lowest = std::min(lowest, s.point.y);
+    }
+    EXPECT_EQ(pretrace, 9);  // 3 x 3 spots
+    EXPECT_LT(lowest, -2.05);
+    EXPECT_GT(lowest, -2.35);
+}
+
 TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
     render::FrameStats stats;
     renderText(room(false), 1, stats);
@@ -329,6 +405,7 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
     samples[0].irradiance.g = 1.0 / 7.0;
     samples[0].nearest = 0.0123;
     samples[0].toNearest = normalize(Vec3(1, 2, 3));
+    samples[1].quality = 0.3125;  // a sample of weakly rated rays counts less when looked up
     render::writeRadiosityFile(dir / "a.rca", samples);
     const std::vector<render::RadiositySample> back = render::readRadiosityFile(dir / "a.rca");
     ASSERT_EQ(back.size(), samples.size());
@@ -342,7 +419,15 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
         EXPECT_EQ(back[i].depth, samples[i].depth);
         EXPECT_EQ(back[i].nearest, samples[i].nearest);
         EXPECT_EQ(back[i].toNearest.y, samples[i].toNearest.y);
+        EXPECT_EQ(back[i].quality, samples[i].quality);
     }
+    // The previous format (no quality) is still read: quality 1.
+    std::ofstream(dir / "old.rca")
+        << "frameray radiosity cache 2\n0 1 2 3 0 0 1 0.5 0.5 0.5 2 1 0 0 1\n";
+    const std::vector<render::RadiositySample> old = render::readRadiosityFile(dir / "old.rca");
+    ASSERT_EQ(old.size(), 1u);
+    EXPECT_EQ(old[0].quality, 1.0);
+    EXPECT_EQ(old[0].radius, 2.0);
     // A povray cache file (its sample lines start with C and a depth).
     std::ofstream(dir / "pov.rca") << "C2\t-1.29\t-0.9\t0.76\t7ffe7f\t0.0985\t0.0988\t0.1161\n";
     try {
@@ -352,7 +437,7 @@ TEST(RadiosityFile, SamplesComeBackBitForBitAndForeignFilesAreRefused) {
         EXPECT_NE(std::string(e.what()).find("not a frameray radiosity cache file"),
                   std::string::npos);
     }
-    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 2\n0 1 2 3\n";
+    std::ofstream(dir / "bad.rca") << "frameray radiosity cache 3\n0 1 2 3\n";
     EXPECT_THROW(render::readRadiosityFile(dir / "bad.rca"), std::runtime_error);
     EXPECT_THROW(render::readRadiosityFile(dir / "missing.rca"), std::runtime_error);
     fs::remove_all(dir);
