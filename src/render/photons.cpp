@@ -43,8 +43,23 @@ double adaptiveGather(const PhotonMap& map, const Vec3& p, double radius, int ga
     const double first = gather(radius, found);
     if (static_cast<int>(found.size()) >= gatherMin) return first;
     double before = static_cast<double>(found.size()) / (first * first);
-    if (before == 0) before = 1e-16;
     thread_local std::vector<PhotonNeighbour> wider;
+    if (before == 0) {
+        before = 1e-16;
+        // Nothing within the radius: the wider search is kept only when it
+        // finds fewer than expand_thresholds' minimum (its density, at
+        // least that minimum over (3 r)^2, is always far more than the
+        // increase allowed over 1e-16, as checked here), so it can stop
+        // at that many (much of the floor around a caustic is so).
+        const double leastAfter = expandMin / (9.0 * radius * radius);
+        if (expandMin > 0 && expandMin <= gatherMax &&
+            (leastAfter - before) / before >= expandIncrease) {
+            map.nearest(p, 3.0 * radius, expandMin, wider);
+            if (static_cast<int>(wider.size()) == expandMin) return first;  // dark
+            found.swap(wider);
+            return 3.0 * radius;
+        }
+    }
     const double widerRadius = gather(3.0 * radius, wider);
     const double after = static_cast<double>(wider.size()) / (widerRadius * widerRadius);
     const int n = static_cast<int>(wider.size());
