@@ -341,11 +341,14 @@ void Tracing::cross(Path& path, double depth) const {
 bool Tracing::trace(Path path) const {
     Hit hit;
     for (;;) {
-        if (!world.intersect(path.ray, path.tMin, scene::kInfinity, hit, scene::RayKind::Shadow))
+        if (!world.intersect(path.ray, path.tMin, scene::kInfinity, hit, scene::RayKind::Photon))
             return false;
-        // On its way to its target a photon passes pass_through objects
-        // (entering and leaving their interiors) and is stopped by every
-        // other one, other targets too (povray 3.7).
+        // Photons do not see no_image and no_shadow surfaces (povray 3.7,
+        // measured: a no_image or no_shadow target or floor stores no
+        // photons; no_reflection changes nothing). On its way to its
+        // target a photon passes pass_through objects (entering and
+        // leaving their interiors) and is stopped by every other one,
+        // other targets too (povray 3.7).
         if (path.bounced || isPartOf(target, hit.object)) break;
         if (!hit.object->photons.passThrough) return false;
         const Vec3 p = path.ray.at(hit.t);

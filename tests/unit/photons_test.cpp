@@ -574,3 +574,30 @@ TEST(Photons, FewerPhotonsThanGatherMaxShowNoCausticUnlessARadiusIsGiven) {
                                 settings, render::PhotonStats{});
     EXPECT_GT(given.irradiance(centre, up, scratch).r, 0.0);
 }
+
+// Photons do not see no_image and no_shadow surfaces (povray 3.7,
+// measured on tests/conformance/scenes/photons_refraction.pov: 31097
+// photons stored; none with the glass target or the floor no_image or
+// no_shadow; 31097 with the floor no_reflection). Before, photons saw
+// no_image surfaces.
+TEST(Photons, NoImageAndNoShadowSurfacesAreInvisibleToPhotons) {
+    auto stored = [](const std::string& targetFlags, const std::string& floorFlags) {
+        test_support::ParsedScene p(R"(
+            global_settings { photons { spacing 0.02 jitter 0 } }
+            light_source { <3, 8, 2>, rgb 1 photons { refraction on reflection off } }
+            plane { y, 0 )" + floorFlags +
+                                    R"( }
+            sphere { <0, 1, 0>, 1 pigment { rgbf <1, 1, 1, 0.95> } interior { ior 1.5 }
+              photons { target refraction on reflection off collect off } )" +
+                                    targetFlags + " }");
+        const render::World world(p.scene);
+        return world.photons() ? world.photons()->stats().stored : 0u;
+    };
+    const std::uint64_t all = stored("", "");
+    EXPECT_GT(all, 5000u);
+    EXPECT_EQ(stored("no_image", ""), 0u);
+    EXPECT_EQ(stored("no_shadow", ""), 0u);
+    EXPECT_EQ(stored("", "no_image"), 0u);
+    EXPECT_EQ(stored("", "no_shadow"), 0u);
+    EXPECT_EQ(stored("", "no_reflection"), all);
+}
