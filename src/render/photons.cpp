@@ -22,16 +22,53 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Where fewer than gather min photons lie within the gather radius, povray
-// searches again in a wider disc. The factor is fitted, not derived: with
-// an explicit radius over evenly spaced photons, povray's caustic edge
-// ramps as a disc of about 2.5 times the radius; on our conformance scenes
-// (a glass sphere, mirrors, an area light) one widening by 3 matches best
-// (refraction 0.954 -> 0.976, reflection 0.962 -> 0.996, area light
-// 0.934 -> 0.974); repeated 1.2 steps match worse. expand_thresholds
-// changes nothing measurable in povray 3.7 (percent 0 to 1, minimum 10 to
-// 1000, with explicit and estimated radii), so it is read and left alone.
-constexpr double kGatherWidening = 3.0;
+// povray 3.7 gathers surface photons and media photons alike (measured
+// on a patch of evenly spaced photons, tests/conformance/scenes/
+// photons_gather.pov): the photons within the gather radius, at most
+// gather max (the radius then shrinking to the farthest of them). With
+// fewer than gather min it searches again within three times the radius
+// and keeps the wider search when the density it finds (count / radius^2)
+// is less than expand_thresholds' increase above the first one's, or when
+// it found some but fewer than expand_thresholds' minimum; else the first
+// search stands, even when it found nothing (so a dark ring surrounds a
+// caustic there). Returns the radius of the disc (sphere) the photons in
+// `found` stand for.
+double adaptiveGather(const PhotonMap& map, const Vec3& p, double radius, int gatherMin,
+                      int gatherMax, double expandIncrease, int expandMin,
+                      std::vector<PhotonNeighbour>& found) {
+    auto gather = [&](double size, std::vector<PhotonNeighbour>& out) {
+        map.nearest(p, size, gatherMax, out);
+        return static_cast<int>(out.size()) == gatherMax ? std::sqrt(out.back().distance2) : size;
+    };
+    const double first = gather(radius, found);
+    if (static_cast<int>(found.size()) >= gatherMin) return first;
+    double before = static_cast<double>(found.size()) / (first * first);
+    thread_local std::vector<PhotonNeighbour> wider;
+    if (before == 0) {
+        before = 1e-16;
+        // Nothing within the radius: the wider search is kept only when it
+        // finds fewer than expand_thresholds' minimum (its density, at
+        // least that minimum over (3 r)^2, is always far more than the
+        // increase allowed over 1e-16, as checked here), so it can stop
+        // at that many (much of the floor around a caustic is so).
+        const double leastAfter = expandMin / (9.0 * radius * radius);
+        if (expandMin > 0 && expandMin <= gatherMax &&
+            (leastAfter - before) / before >= expandIncrease) {
+            map.nearest(p, 3.0 * radius, expandMin, wider);
+            if (static_cast<int>(wider.size()) == expandMin) return first;  // dark
+            found.swap(wider);
+            return 3.0 * radius;
+        }
+    }
+    const double widerRadius = gather(3.0 * radius, wider);
+    const double after = static_cast<double>(wider.size()) / (widerRadius * widerRadius);
+    const int n = static_cast<int>(wider.size());
+    if ((after - before) / before < expandIncrease || (n < expandMin && n > 0)) {
+        found.swap(wider);
+        return widerRadius;
+    }
+    return first;
+}
 
 // --- targets --------------------------------------------------------------
 
@@ -298,11 +335,14 @@ void Tracing::cross(Path& path, double depth) const {
 bool Tracing::trace(Path path) const {
     Hit hit;
     for (;;) {
-        if (!world.intersect(path.ray, path.tMin, scene::kInfinity, hit, scene::RayKind::Shadow))
+        if (!world.intersect(path.ray, path.tMin, scene::kInfinity, hit, scene::RayKind::Photon))
             return false;
-        // On its way to its target a photon passes pass_through objects
-        // (entering and leaving their interiors) and is stopped by every
-        // other one, other targets too (povray 3.7).
+        // Photons do not see no_image and no_shadow surfaces (povray 3.7,
+        // measured: a no_image or no_shadow target or floor stores no
+        // photons; no_reflection changes nothing). On its way to its
+        // target a photon passes pass_through objects (entering and
+        // leaving their interiors) and is stopped by every other one,
+        // other targets too (povray 3.7).
         if (path.bounced || isPartOf(target, hit.object)) break;
         if (!hit.object->photons.passThrough) return false;
         const Vec3 p = path.ray.at(hit.t);
@@ -677,29 +717,55 @@ std::vector<Emitter> emitters(const std::vector<scene::Light>& lights) {
     return out;
 }
 
-// povray estimates the gather radius from the photons themselves: around
-// an isolated patch of photons its caustic shows a halo about three times
-// as wide as the disc holding `gather` max photons inside the patch
-// (measured on mirror caustics of 120 to 6700 photons; the halo grows as
-// the square root of gather max). This takes evenly spaced photons of the
-// map, the distance within which gather max photons lie around each, and
-// three times their median.
+// The surface map's gather radius, as povray 3.7 estimates it (the media
+// map's rule below, with discs for spheres; measured: povray's estimate
+// gives the same image as an explicit radius of 0.002, 0.0105, 0.021,
+// 0.12 and 0.40 on caustics whose estimate here is 0.0019, 0.0107,
+// 0.024, 0.10 and 0.26). povray takes its samples at random, so its
+// radius scatters from scene to scene around the rule's expected value
+// (0.22 to 0.75 over fifteen random draws on the last of those scenes);
+// this takes up to 4000 evenly spaced photons of the map (the tree's
+// order spreads them over it) to come close to that expected value:
+// around each the density of the gather max photons nearest it, n / (pi
+// r^2); their mean; the radius of a disc holding gather max photons at
+// that density; widened by 1 + 20 f, f the fraction of samples whose
+// density within that radius lies between 5 % and 70 % of the mean.
 double estimateRadius(const PhotonMap& map, int gatherMax) {
     if (map.empty()) return 0;
-    constexpr size_t kSamples = 256;
     const size_t n = map.size();
-    const size_t samples = std::min(kSamples, n);
-    std::vector<double> radii;
-    std::vector<PhotonNeighbour> found;
-    for (size_t i = 0; i < samples; ++i) {
-        const Photon& ph = map.photons()[i * n / samples];
-        map.nearest(ph.at(), scene::kInfinity, gatherMax, found);
-        if (!found.empty()) radii.push_back(std::sqrt(found.back().distance2));
-    }
-    if (radii.empty()) return 0;
-    std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
-                     radii.end());
-    return 3.0 * radii[radii.size() / 2];
+    const size_t samples = std::min<size_t>(n, 4000);
+    // The density around each sample (-1: none found), in parallel; each
+    // sample has its own slot, so the result does not depend on threads.
+    auto densities = [&](double limit, size_t offset) {
+        std::vector<double> out(samples, -1.0);
+        tbb::parallel_for(size_t{0}, samples, [&](size_t i) {
+            thread_local std::vector<PhotonNeighbour> found;
+            const Vec3 at = map.photons()[(i * n + offset) / samples % n].at();
+            map.nearest(at, limit, gatherMax, found);
+            if (found.empty()) return;
+            const double r = static_cast<int>(found.size()) == gatherMax
+                                 ? std::sqrt(found.back().distance2)
+                                 : limit;
+            if (r > 0) out[i] = static_cast<double>(found.size()) / (kPi * r * r);
+        });
+        return out;
+    };
+    double sum = 0;
+    size_t counted = 0;
+    for (const double d : densities(scene::kInfinity, 0))
+        if (d >= 0) {
+            sum += d;
+            ++counted;
+        }
+    if (counted == 0) return 0;
+    const double mean = sum / static_cast<double>(counted);
+    if (!(mean > 0) || !std::isfinite(mean)) return 0;
+    const double radius = std::sqrt(static_cast<double>(gatherMax) / (kPi * mean));
+    // A second set of samples, offset from the first.
+    size_t sparse = 0;
+    for (const double d : densities(radius, n / 2))
+        if (d >= 0 && d < 0.7 * mean && d > 0.05 * mean) ++sparse;
+    return radius * (1.0 + 20.0 * static_cast<double>(sparse) / static_cast<double>(samples));
 }
 
 // The media map's gather radius, as povray 3.7 estimates it (its
@@ -805,53 +871,21 @@ std::unique_ptr<const Photons> Photons::build(const World& world) {
 
 RGB Photons::irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const {
     if (surface_.empty() || radius_ <= 0) return RGB(0.0);
-    double radius = radius_;
-    surface_.nearest(p, radius, gatherMax_, scratch);
-    if (static_cast<int>(scratch.size()) < gatherMin_) {
-        radius *= kGatherWidening;
-        surface_.nearest(p, radius, gatherMax_, scratch);
-    }
-    if (scratch.empty()) return RGB(0.0);
-    const double r2 =
-        static_cast<int>(scratch.size()) == gatherMax_ ? scratch.back().distance2 : radius * radius;
-    if (r2 <= 0) return RGB(0.0);
+    const double radius = adaptiveGather(surface_, p, radius_, gatherMin_, gatherMax_,
+                                         expandIncrease_, expandMin_, scratch);
+    if (scratch.empty() || !(radius > 0)) return RGB(0.0);
     RGB sum(0.0);
     for (const PhotonNeighbour& f : scratch)
         if (dot(f.photon->travel(), n) < 0) sum += f.photon->light();
-    return sum * (1.0 / (kPi * r2));
+    return sum * (1.0 / (kPi * radius * radius));
 }
 
-}  // namespace frameray::render
-
-namespace frameray::render {
-
-// povray 3.7's adaptive gather (its documented rule): the photons within
-// the radius, at most gather max (the radius then shrinking to the
-// farthest of them); with fewer than gather min the search widens once
-// by twice the radius, and the wider search is kept if the density it
-// finds (count / radius^2) is less than expand_thresholds' increase above
-// the first one's, or it found some but fewer than expand_thresholds'
-// minimum.
+// The media photons, gathered as surface photons are (adaptiveGather).
 double Photons::mediaPhotons(const Vec3& p, std::vector<PhotonNeighbour>& found) const {
     found.clear();
     if (media_.empty() || !(mediaRadius_ > 0)) return 0;
-    auto gather = [&](double size, std::vector<PhotonNeighbour>& out) {
-        media_.nearest(p, size, gatherMax_, out);
-        return static_cast<int>(out.size()) == gatherMax_ ? std::sqrt(out.back().distance2) : size;
-    };
-    double radius = gather(mediaRadius_, found);
-    if (static_cast<int>(found.size()) >= gatherMin_) return radius;
-    double before = static_cast<double>(found.size()) / (radius * radius);
-    if (before == 0) before = 1e-16;
-    std::vector<PhotonNeighbour> wider;
-    const double widerRadius = gather(3.0 * mediaRadius_, wider);
-    const double after = static_cast<double>(wider.size()) / (widerRadius * widerRadius);
-    const int n = static_cast<int>(wider.size());
-    if ((after - before) / before < expandIncrease_ || (n < expandMin_ && n > 0)) {
-        found.swap(wider);
-        radius = widerRadius;
-    }
-    return radius;
+    return adaptiveGather(media_, p, mediaRadius_, gatherMin_, gatherMax_, expandIncrease_,
+                          expandMin_, found);
 }
 
 }  // namespace frameray::render

@@ -38,10 +38,12 @@
 // summed over the disc they cover (radius: the farthest one's distance
 // when max were found, else the gather radius; a box filter, measured on
 // the edge of a mirror's caustic). Only photons arriving on the side
-// facing the viewer count. The radius is povray's `radius`, or estimated
-// from the photons (see estimateRadius in photons.cpp); where fewer than
-// `gather` min photons lie within it the search widens once (see
-// kGatherWidening).
+// facing the viewer count. With fewer than `gather` min the search widens
+// to three times the radius, kept or not by expand_thresholds as povray
+// 3.7 does (adaptiveGather in photons.cpp: a dark ring around an isolated
+// caustic). The radius is povray's `radius`, or estimated from the
+// photons' mean density as povray does it (estimateRadius in
+// photons.cpp).
 //
 // Media. With `media max_steps [, factor]` a photon that has bounced
 // leaves photons along its path through scattering media (depositInMedia

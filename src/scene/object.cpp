@@ -22,6 +22,8 @@ bool visibleTo(const Object& primitive, RayKind kind) {
             return !primitive.noReflection;
         case RayKind::Shadow:
             return !primitive.noShadow;
+        case RayKind::Photon:
+            return !primitive.noShadow && !primitive.noImage;
         case RayKind::Radiosity:
             return !primitive.noRadiosity;
         case RayKind::Any:
@@ -128,7 +130,9 @@ void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
                      std::vector<SurfaceHit>& hits, bool inverted) const {
     // povray cuts an object at an undersized bound for what the camera
     // sees but not for the shadow it casts.
-    if (kind != RayKind::Shadow && !boundedBy.empty() && !passesBoundedBy(*this, ray, tMin)) return;
+    if (kind != RayKind::Shadow && kind != RayKind::Photon && !boundedBy.empty() &&
+        !passesBoundedBy(*this, ray, tMin))
+        return;
     if (!clippedBy.empty() && !meetsClipBoxes(*this, ray, tMin, tMax)) return;
     const size_t from = hits.size();
     if (shape) {

@@ -33,6 +33,7 @@ enum class RayKind {
     Camera,      // skips no_image surfaces (also rays refracted from camera rays)
     Reflection,  // skips no_reflection surfaces
     Shadow,      // skips no_shadow surfaces
+    Photon,      // skips no_shadow and no_image surfaces (povray 3.7's photons)
     Radiosity,   // skips no_radiosity surfaces
     Any,         // sees everything (bounding tests)
 };

@@ -41,7 +41,8 @@ struct PhotonSettings {
     // 0.5 unless given; measured: advanced/optics.pov shoots 16971 photons at
     // its media box, 2553 with autostop 0).
     double autostop = 0.5;
-    // expand_thresholds: read, and as in povray 3.7 (measured) no effect.
+    // expand_thresholds: when a gather's wider search is kept
+    // (render/photons.cpp, adaptiveGather).
     double expandIncrease = 0.2;
     int expandMin = 40;
     double radius = 0;  // gather radius; 0: estimated from the photons
