@@ -599,11 +599,13 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             out.reflectedSum += out.reflectivity;
             // Inside a fading interior the part of the reflection that
             // varies with the angle fades as the light here does, its
-            // minimum does not (measured with povray 3.7: a glass block
-            // of reflection {0, 1 fresnel} and {0.2, 0.8} shows its inner
-            // reflections faded, one of constant reflection whole).
-            const RGB shown =
-                reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment, state.fade);
+            // minimum does not, unless the finish conserves energy: then
+            // the reflection stays whole (measured with povray 3.7 on a
+            // glass block: reflection {0, 1 fresnel} and {0.2, 0.8} faded,
+            // constant reflection whole; {0.2, 1 fresnel} conserve_energy
+            // whole, incdemo/glasses/glass.pov).
+            const RGB shown = reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment,
+                                          fin.conserveEnergy ? RGB(1.0) : state.fade);
             if (!out.reflectivity.isBlack()) {
                 const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
                 out.color +=
