@@ -65,6 +65,8 @@ void Media::prepareSampling() {
 // as in a pigment: black to white, or the pattern's own (bozo, marble,
 // wood, agate, radial, mandel; measured: a `density { bozo }` box of
 // absorbing media casts povray's red, green and blue bozo shadow).
-Pigment defaultDensity() { return Pigment(Color(RGB(1.0))); }
+Pigment defaultDensity() {
+    return Pigment(Color(RGB(1.0)));
+}
 
 }  // namespace frameray::scene
