@@ -360,8 +360,7 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         if (cosIncidence <= 0) continue;
         RGB lightColor =
             lightArriving(world_, light, p, path, eps,
-                          radiosityRay ? radiosityLighting_ : lighting_, counts.shadow) *
-            fade;
+                          radiosityRay ? radiosityLighting_ : lighting_, counts.shadow);
         if (lightColor.isBlack()) continue;
         if (irid)
             lightColor =

@@ -103,11 +103,14 @@ class Tracer {
         scene::RayKind kind = scene::RayKind::Camera;
         InteriorStack inside;
         SpectralBand band;  // white until a dispersive interior splits the ray
-        // How much of the light and of the transmitted rays at this ray's
-        // hit survive the interior the ray crossed to get there; the
-        // surface's ambient, emission and reflection are not faded
-        // (measured: povray 3.7 leaves them whole). Set by trace() for the
-        // one hit, never inherited.
+        // How much of the transmitted rays at this ray's hit survive the
+        // interior the ray crossed to get there; the surface's ambient,
+        // emission and reflection are not faded (measured: povray 3.7
+        // leaves them whole), nor its lights: those are faded by their own
+        // shadow rays' way out of the interior (render/world.cpp; measured:
+        // with a no_shadow fading slab or water povray's back face or
+        // floor keeps its whole light). Set by trace() for the one hit,
+        // never inherited.
         RGB fade{1.0};
         // With alpha output (+UA), where a camera ray and the rays that
         // continue it through surfaces report how much of the background

@@ -495,8 +495,12 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     // Fading interiors the ray has entered, with where: the light is faded
     // over the distance from entry to exit (measured: povray's shadow
     // under a fade_distance sphere is as dark as the fade of the chord
-    // predicts). Leaving one it did not enter (a ray starting inside)
-    // fades nothing, as in povray (measured: glass.inc I_Glass1..4). At
+    // predicts). Leaving one it did not enter (a ray starting inside, as
+    // from a stone under fading water) fades the light over the distance
+    // from the ray's start: this is how povray 3.7 fades the light that
+    // reaches a surface inside a fading interior (measured: a lit floor
+    // under benchmark.pov's water darkens with depth only when the water
+    // casts shadows; with no_shadow it keeps its whole light). At
     // the default fade_power 0 shadow rays do not fade, though camera rays
     // pass half the light (measured: interior/atten1.pov's shadows).
     struct Inside {
@@ -515,8 +519,11 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
             inside[i] = inside[--insideCount];
             return;
         }
-        if (dot(outwardNormal(obj, p), ray.direction) < 0 && insideCount < inside.size())
-            inside[insideCount++] = {in, t};
+        if (dot(outwardNormal(obj, p), ray.direction) < 0) {
+            if (insideCount < inside.size()) inside[insideCount++] = {in, t};
+        } else {
+            passed *= interiorFade(*in, (t - tMin) * speed);
+        }
     };
     // Hollow objects with media: the light is dimmed by the media between
     // where the ray enters and leaves, or from its start when it starts

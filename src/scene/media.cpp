@@ -61,10 +61,12 @@ void Media::prepareSampling() {
         sampleThreshold[size_t(i)] = t * chiSquareUpperTailInverse(i + 1, confidence);
 }
 
+// A density pattern given without a colour map takes the same default map
+// as in a pigment: black to white, or the pattern's own (bozo, marble,
+// wood, agate, radial, mandel; measured: a `density { bozo }` box of
+// absorbing media casts povray's red, green and blue bozo shadow).
 Pigment defaultDensity() {
-    Pigment p(Color(RGB(1.0)));
-    p.setColorMap(ColorMap::grayscale());
-    return p;
+    return Pigment(Color(RGB(1.0)));
 }
 
 }  // namespace frameray::scene

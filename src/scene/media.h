@@ -82,8 +82,9 @@ struct Media {
 
 using MediaList = std::vector<std::shared_ptr<const Media>>;
 
-// A density block's pigment before its items: density 1 everywhere, and the
-// grey ramp (density = pattern value) for a pattern without a colour map.
+// A density block's pigment before its items: density 1 everywhere; a
+// pattern without a colour map takes its pigment default map (black to
+// white for most).
 Pigment defaultDensity();
 
 }  // namespace frameray::scene

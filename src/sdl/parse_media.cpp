@@ -91,6 +91,7 @@ static DensityPtr parseDensityBody(BuildContext& c, Sym closing) {
             r.unsupported(item, fmt::format("'{}' in density", item.text));
         r.fail(item, fmt::format("expected a density item or '}}', found {}", describeToken(item)));
     }
+    pigment->settleDefaultColorMap();
     return std::make_shared<const DensityValue>(DensityValue{pigment});
 }
 
