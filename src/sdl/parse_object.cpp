@@ -247,7 +247,22 @@ void placeObject(BuildContext& c, const ObjectValue& object) {
 // layers the glass over the grey, advanced/glasschess.pov). Patterned
 // textures cannot be layered, either way.
 static void layerOnTop(Reader& r, const Token& at, const scene::Object& obj,
-                       std::optional<scene::Texture>& texture, scene::Texture upper) {
+                       std::optional<scene::Texture>& texture, scene::Texture upper,
+                       const scene::Texture& defaultTexture) {
+    // The object's uv_mapping maps the textures given after it; when
+    // nothing but uv_mapping came before, there is nothing to layer over
+    // (advanced/benchmark.pov's `object { MSH uv_mapping texture { } }`).
+    if (texture && !obj.texture && texture->uvMapping) {
+        upper.uvMapping = true;
+        const bool onlyUvMapping = texture->pigment == defaultTexture.pigment &&
+                                   texture->finish == defaultTexture.finish &&
+                                   texture->normal == defaultTexture.normal && !texture->map &&
+                                   texture->layersBelow.empty();
+        if (onlyUvMapping) {
+            texture = std::move(upper);
+            return;
+        }
+    }
     const scene::Texture* below = texture ? &*texture : obj.texture.get();
     if (below) {
         if (below->map) r.fail(at, "Cannot layer over a patterned texture.");
@@ -293,7 +308,7 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
             return true;
         }
         case Keyword::kw_texture:
-            layerOnTop(r, tok, obj, texture, parseLayeredTextures(c));
+            layerOnTop(r, tok, obj, texture, parseLayeredTextures(c), c.defaultTexture);
             return true;
         case Keyword::kw_interior:
             obj.interior = parseInterior(c, obj.interior.get());
@@ -311,7 +326,7 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
         case Keyword::kw_material: {
             // Its texture replaces the object's; its interior too.
             const MaterialPtr m = parseMaterial(c);
-            if (m->texture) layerOnTop(r, tok, obj, texture, *m->texture);
+            if (m->texture) layerOnTop(r, tok, obj, texture, *m->texture, c.defaultTexture);
             if (m->interior) obj.interior = m->interior;
             return true;
         }
