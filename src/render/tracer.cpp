@@ -603,8 +603,11 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             // glass block: reflection {0, 1 fresnel} and {0.2, 0.8} faded,
             // constant reflection whole; {0.2, 1 fresnel} conserve_energy
             // whole, incdemo/glasses/glass.pov).
-            const RGB shown = reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment,
-                                          fin.conserveEnergy ? RGB(1.0) : state.fade);
+            const bool fades = !fin.conserveEnergy &&
+                               (state.fade.r != 1 || state.fade.g != 1 || state.fade.b != 1);
+            const RGB shown = fades ? reflectance(fin.reflection, cosView, crossing->fresnelRatio,
+                                                  pigment, state.fade)
+                                    : out.reflectivity;
             if (!out.reflectivity.isBlack()) {
                 const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
                 out.color +=
