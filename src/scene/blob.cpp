@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scene/polynomial_shapes.h"
+#include "scene/scratch.h"
 #include "scene/shape_math.h"
 #include "util/roots.h"
 
@@ -25,6 +26,7 @@ Vec3 nearestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
 struct FieldPiece {
     double lo, hi;
     double c[5];
+    double peak;  // the largest value the piece takes anywhere on the ray
 };
 
 // Adds the piece of strength * (1 - |f + s g|²/R²)² over the part of
@@ -41,7 +43,10 @@ void addPiece(const Vec3& f, const Vec3& g, double radius, double strength, doub
     const double e0 = 1 - dot(f, f) / r2;
     const double e1 = -2 * dot(f, g) / r2;
     const double e2 = -dot(g, g) / r2;
-    FieldPiece piece{lo, hi, {}};
+    // e peaks where the ray passes closest to the component (e2 < 0 here:
+    // distanceRoots found a chord, so g is not zero).
+    const double ePeak = e0 - e1 * e1 / (4 * e2);
+    FieldPiece piece{lo, hi, {}, strength * ePeak * ePeak};
     piece.c[0] = strength * e0 * e0;
     piece.c[1] = strength * 2 * e0 * e1;
     piece.c[2] = strength * (e1 * e1 + 2 * e0 * e2);
@@ -157,14 +162,17 @@ void Blob::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>
     const Vec3 centre = bounds_.isFinite() ? (bounds_.lo + bounds_.hi) * 0.5 : Vec3(0, 0, 0);
     const detail::RecentredRay rr(ray, centre);
     if (!rr.valid()) return;
-    std::vector<FieldPiece> pieces;
+    // Per-thread scratch: a blob is hit by every ray of its scenes, and two
+    // fresh vectors per ray cost more than the pieces' arithmetic.
+    ScratchVector<FieldPiece> pieceScratch;
+    ScratchVector<double> cutScratch;
+    std::vector<FieldPiece>& pieces = pieceScratch.get();
     for (const Component& c : components_) componentPieces(c, rr.base, rr.dir, pieces);
     if (pieces.empty()) return;
     const double sMin = rr.sOf(tMin), sMax = rr.sOf(tMax);
     // Cut the ray at every piece's ends; between two cuts the field is one
     // quartic, the sum of the pieces covering that span.
-    std::vector<double> cuts;
-    cuts.reserve(pieces.size() * 2);
+    std::vector<double>& cuts = cutScratch.get();
     for (const FieldPiece& p : pieces) {
         cuts.push_back(p.lo);
         cuts.push_back(p.hi);
@@ -176,13 +184,18 @@ void Blob::allHits(const Ray& ray, double tMin, double tMax, std::vector<double>
         const double lo = std::max(cuts[i], sMin), hi = std::min(cuts[i + 1], sMax);
         if (!(lo <= hi)) continue;
         double c[5] = {-threshold_, 0, 0, 0, 0};
+        double ceiling = 0;  // no point of the span has a larger field
         bool any = false;
         for (const FieldPiece& p : pieces) {
             if (p.lo > cuts[i] || p.hi < cuts[i + 1]) continue;
             for (int k = 0; k < 5; ++k) c[k] += p.c[k];
+            ceiling += std::max(p.peak, 0.0);
             any = true;
         }
         if (!any) continue;  // field 0 here: below any positive threshold
+        // A span whose field cannot reach a positive threshold has no
+        // surface: most spans of a ray grazing a few components.
+        if (threshold_ > 0 && ceiling < threshold_) continue;
         double roots[4];
         const int n = realRootsInInterval(c, lo, hi, roots,
                                           sturm_ ? RootMethod::Sturm : RootMethod::ClosedForm);
