@@ -3,24 +3,119 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "scene/implicit_search.h"
 #include "scene/shape_math.h"
 
 namespace frameray::scene {
 
-namespace {
-
-bool inRange(double x, double lo, double hi, double margin) {
-    return x >= lo - margin && x <= hi + margin;
-}
-
-}  // namespace
-
 Parametric::Parametric(ParametricSettings settings) : s_(std::move(settings)) {
     const Bounds b = bounds();
     scale_ = std::max(1e-300, length(b.hi - b.lo));
     buildTree();
+    if (s_.precomputeDepth > 0) {
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!s_.precomputeAxis[axis]) continue;
+            precomputed_[axis].resize(std::size_t{1} << s_.precomputeDepth);
+            precompute(axis, 1, s_.uMin, s_.uMax, s_.vMin, s_.vMax);
+        }
+    }
+}
+
+namespace {
+
+// Bounds of a function along a stretch of length `width` whose ends take
+// the values a and b, if it changes at most at rate `gradient`.
+void boundStretch(double width, double a, double b, double gradient, double& lo, double& hi) {
+    const double slack = std::max(0.0, 0.5 * (gradient * width - std::fabs(a - b)));
+    lo = std::min(a, b) - slack;
+    hi = std::max(a, b) + slack;
+}
+
+// The hits found last on this thread, with the (u, v) they were found
+// with: the normal and uv_mapping need them, and a shape is only given
+// the point. A small ring, so a few other parametric tests between the
+// hit and its shading do not push it out.
+struct RememberedHit {
+    const void* shape = nullptr;
+    Vec3 p;
+    double u = 0, v = 0;
+};
+constexpr std::size_t kRemembered = 8;
+struct RememberedHits {
+    std::array<RememberedHit, kRemembered> hits;
+    std::size_t next = 0;
+};
+RememberedHits& rememberedHits() {
+    thread_local RememberedHits ring;
+    return ring;
+}
+
+}  // namespace
+
+Parametric::Range Parametric::coordinateRange(int axis, double u0, double u1, double v0,
+                                              double v1) const {
+    const CompiledFunction& f = axis == 0 ? *s_.fx : axis == 1 ? *s_.fy : *s_.fz;
+    auto at = [&](double u, double v) {
+        const double args[3] = {u, v, 0};
+        // povray bounds the function minus the accuracy (measured: its hits
+        // lie that much nearer along each axis).
+        return f.eval(args) - s_.accuracy;
+    };
+    const double g = s_.maxGradient;
+    double lowLo, lowHi, highLo, highHi;  // along the edges u = u0 and u = u1
+    boundStretch(v1 - v0, at(u0, v0), at(u0, v1), g, lowLo, lowHi);
+    boundStretch(v1 - v0, at(u1, v0), at(u1, v1), g, highLo, highHi);
+    Range r{}, unused{};
+    boundStretch(u1 - u0, lowHi, highHi, g, unused.lo, r.hi);
+    boundStretch(u1 - u0, lowLo, highLo, g, r.lo, unused.hi);
+    return r;
+}
+
+void Parametric::precompute(int axis, std::uint64_t number, double u0, double u1, double v0,
+                            double v1) {
+    std::vector<Range>& table = precomputed_[axis];
+    if (number >= table.size() / 2) {  // the last level
+        table[number] = coordinateRange(axis, u0, u1, v0, v1);
+        return;
+    }
+    if (u1 - u0 < v1 - v0) {
+        const double vm = 0.5 * (v0 + v1);
+        precompute(axis, 2 * number, u0, u1, v0, vm);
+        precompute(axis, 2 * number + 1, u0, u1, vm, v1);
+    } else {
+        const double um = 0.5 * (u0 + u1);
+        precompute(axis, 2 * number, u0, um, v0, v1);
+        precompute(axis, 2 * number + 1, um, u1, v0, v1);
+    }
+    const Range& a = table[2 * number];
+    const Range& b = table[2 * number + 1];
+    table[number] = {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+
+bool Parametric::containerSpan(const Ray& ray, double& t0, double& t1) const {
+    if (s_.sphereContainer) {
+        // povray: no span when the ray starts outside and the centre lies
+        // behind it, or when it only grazes the sphere.
+        const Vec3 oc = s_.center - ray.origin;
+        const double speed2 = dot(ray.direction, ray.direction);
+        if (!(speed2 > 0)) return false;
+        const double closest = dot(oc, ray.direction) / speed2;
+        const double r2 = s_.radius * s_.radius;
+        const double oc2 = dot(oc, oc);
+        if (oc2 >= r2 && closest * std::sqrt(speed2) < 1e-10) return false;
+        const double half2 = (r2 - oc2) / speed2 + closest * closest;
+        if (!(half2 * speed2 > 1e-10)) return false;
+        const double half = std::sqrt(half2);
+        t0 = closest - half;
+        t1 = closest + half;
+        return true;
+    }
+    // A box: from the ray's start when it starts inside.
+    if (!detail::clipToBox(ray, s_.boxLo, s_.boxHi, t0, t1)) return false;
+    t0 = std::max(t0, 0.0);
+    return t1 >= 1e-6;
 }
 
 void Parametric::buildTree() {
@@ -51,13 +146,6 @@ void Parametric::buildTree() {
         node.sector.lo = lo;
         node.sector.hi = hi;
     }
-}
-
-bool Parametric::containerInterval(const Ray& ray, double& t0, double& t1) const {
-    if (s_.sphereContainer)
-        return detail::distanceRoots(ray.origin - s_.center, ray.direction, s_.radius * s_.radius,
-                                     t0, t1);
-    return detail::clipToBox(ray, s_.boxLo, s_.boxHi, t0, t1);
 }
 
 Bounds Parametric::bounds() const {
@@ -157,111 +245,130 @@ void Parametric::allHits(const Ray& ray, double tMin, double tMax, std::vector<d
 }
 
 bool Parametric::firstHit(const Ray& ray, double tMin, double tMax, double& tHit) const {
-    double c0, c1;
-    if (!containerInterval(ray, c0, c1)) return false;
-    const double speed = length(ray.direction);
-    if (!(speed > 0)) return false;
-    // A ray leaving the surface (shadows, reflections) must not find its
-    // own start again.
-    const double lo = std::max(c0, tMin + 1e-9 * scale_ / speed);
-    double best = std::min(c1, tMax);
-    if (!(lo < best)) return false;
+    double near, far;
+    if (!containerSpan(ray, near, far)) return false;
+    // A ray continuing from an earlier hit starts where that one was, as
+    // povray's new ray from that point would.
+    near = std::max(near, tMin);
+    if (near == far) near = 0;
+    near += 4 * s_.accuracy;
+    if (near > far) return false;
 
-    // The ray's entry into the box of a sector, within [lo, best].
-    auto enters = [&](const Sector& s, double& near) {
-        const Vec3& bl = s.lo;
-        const Vec3& bh = s.hi;
-        near = lo;
-        double far = best;
-        for (int a = 0; a < 3; ++a) {
+    struct Piece {
+        double u0, u1, v0, v1;
+        std::uint64_t number;  // 1 for the whole rectangle, 2n and 2n + 1 for n's halves
+    };
+    constexpr int kStack = 64;
+    constexpr std::uint64_t kLastNumber = 10000000;  // numbers past the tables stop growing
+    Piece stack[kStack];
+    int top = 0;
+    stack[0] = {s_.uMin, s_.uMax, s_.vMin, s_.vMax, 1};
+    double best = kInfinity, bestU = 0, bestV = 0;
+    double entry = 0;  // where the ray enters the piece's last slab
+    while (top >= 0) {
+        const Piece piece = stack[top];
+        const double du = piece.u1 - piece.u0, dv = piece.v1 - piece.v0;
+        const bool alongV = dv > du;
+        double size = alongV ? dv : du;
+        double slabIn[3], slabOut[3];
+        bool crossed[3] = {false, false, false};
+        double stretch = 0;  // the longest stretch of the ray through one slab
+        bool dropped = false;
+        for (int a = 0; a < 3 && !dropped; ++a) {
+            const std::vector<Range>& table = precomputed_[a];
+            const Range r = piece.number < table.size()
+                                ? table[piece.number]
+                                : coordinateRange(a, piece.u0, piece.u1, piece.v0, piece.v1);
             const double o = ray.origin[a], d = ray.direction[a];
-            if (d == 0) {
-                if (o < bl[a] || o > bh[a]) return false;
+            if (std::fabs(d) < 1e-10) {
+                dropped = r.hi < o || r.lo > o;
                 continue;
             }
-            double ta = (bl[a] - o) / d, tb = (bh[a] - o) / d;
-            if (ta > tb) std::swap(ta, tb);
-            near = std::max(near, ta);
-            far = std::min(far, tb);
-            if (near > far) return false;
-        }
-        return true;
-    };
-
-    // Newton's method on point(u, v) = origin + t direction, from the
-    // middle of a leaf sector; the root counts when it lies in (or next
-    // to) that sector, inside the rectangle, and nearer than `best`.
-    auto solve = [&](const Sector& s) {
-        const double du = s.u1 - s.u0, dv = s.v1 - s.v0;
-        double u = s.u0 + 0.5 * du, v = s.v0 + 0.5 * dv;
-        const Vec3 c = point(u, v);
-        double t = dot(c - ray.origin, ray.direction) / (speed * speed);
-        bool converged = false;
-        for (int i = 0; i < 24; ++i) {
-            const Vec3 f = point(u, v) - ray.at(t);
-            Vec3 pu, pv;
-            derivatives(u, v, pu, pv);
-            const Vec3 nd = -ray.direction;
-            const Vec3 bxc = cross(pv, nd);
-            const double det = dot(pu, bxc);
-            if (!(std::fabs(det) > 0) || !std::isfinite(det)) return false;
-            const double stepU = -dot(f, bxc) / det;
-            const double stepV = -dot(pu, cross(f, nd)) / det;
-            const double stepT = -dot(pu, cross(pv, f)) / det;
-            u += stepU;
-            v += stepV;
-            t += stepT;
-            if (!std::isfinite(u + v + t)) return false;
-            // Far outside its sector: the root (if any) belongs to another.
-            if (!inRange(u, s.u0, s.u1, 4 * du + 1e-9) || !inRange(v, s.v0, s.v1, 4 * dv + 1e-9))
-                return false;
-            if (std::fabs(stepU) <= 1e-13 * std::max(1.0, std::fabs(u)) &&
-                std::fabs(stepV) <= 1e-13 * std::max(1.0, std::fabs(v))) {
-                converged = true;
+            double tIn = (r.hi - o) / d, tOut = (r.lo - o) / d;
+            if (tIn > tOut) std::swap(tIn, tOut);
+            if (tIn > far || tOut < near) {
+                dropped = true;
                 break;
             }
+            entry = tIn;
+            if (entry > best) {
+                dropped = true;
+                break;
+            }
+            for (int b = 0; b < a; ++b)
+                if (crossed[b] && (tIn > slabOut[b] || tOut < slabIn[b])) dropped = true;
+            crossed[a] = true;
+            slabIn[a] = tIn;
+            slabOut[a] = tOut;
+            stretch = std::max(stretch, tOut - tIn);
         }
-        const double residual = length(point(u, v) - ray.at(t));
-        if (!converged && !(residual <= 1e-10 * scale_)) return false;
-        if (!(residual <= 1e-7 * scale_)) return false;
-        const double eu = 1e-9 * std::max(1.0, std::fabs(s_.uMax - s_.uMin));
-        const double ev = 1e-9 * std::max(1.0, std::fabs(s_.vMax - s_.vMin));
-        if (!inRange(u, s.u0, s.u1, du + eu) || !inRange(v, s.v0, s.v1, dv + ev)) return false;
-        if (!inRange(u, s_.uMin, s_.uMax, eu) || !inRange(v, s_.vMin, s_.vMax, ev)) return false;
-        if (!(t > lo && t < best)) return false;
-        best = t;
-        return true;
-    };
-
-    std::vector<Sector> stack;
-    stack.reserve(64);
-    bool found = false;
-    {
-        Sector root = rootSector(s_.maxGradient);
-        if (!enters(root, root.tNear)) return false;
-        stack.push_back(root);
-    }
-    Sector kids[4];
-    while (!stack.empty()) {
-        const Sector s = stack.back();
-        stack.pop_back();
-        if (s.tNear >= best) continue;
-        const int count = split(s, s_.maxGradient, kids);
-        if (count == 0) {
-            if (solve(s)) found = true;
+        if (dropped) {
+            --top;
             continue;
         }
-        // The children whose boxes the ray crosses, nearest popped first.
-        int n = 0;
-        for (int i = 0; i < count; ++i)
-            if (enters(kids[i], kids[i].tNear)) kids[n++] = kids[i];
-        for (int i = 1; i < n; ++i)
-            for (int j = i; j > 0 && kids[j - 1].tNear < kids[j].tNear; --j)
-                std::swap(kids[j - 1], kids[j]);
-        for (int i = 0; i < n; ++i) stack.push_back(kids[i]);
+        size = std::min(size, stretch);
+        if (size < s_.accuracy || top + 1 >= kStack) {
+            if (best > entry && entry > near) {
+                best = entry;
+                bestU = piece.u0;
+                bestV = piece.v0;
+            }
+            --top;
+            continue;
+        }
+        // Halve the longer side; the lower half is searched first.
+        const std::uint64_t number = std::min(2 * piece.number, kLastNumber);
+        Piece lower = piece, upper = piece;
+        if (alongV) {
+            lower.v1 = upper.v0 = 0.5 * (piece.v0 + piece.v1);
+        } else {
+            lower.u1 = upper.u0 = 0.5 * (piece.u0 + piece.u1);
+        }
+        lower.number = number;
+        upper.number = number + 1;
+        stack[top] = upper;
+        stack[++top] = lower;
     }
-    if (found) tHit = best;
-    return found;
+    if (!(best < far) || !(best > tMin) || !(best < tMax)) return false;
+    tHit = best;
+    RememberedHits& ring = rememberedHits();
+    ring.hits[ring.next] = {this, ray.at(best), bestU, bestV};
+    ring.next = (ring.next + 1) % kRemembered;
+    return true;
+}
+
+bool Parametric::rememberedUv(const Vec3& p, double& u, double& v) const {
+    const RememberedHits& ring = rememberedHits();
+    const double tolerance = 1e-9 * scale_;
+    for (std::size_t k = 0; k < kRemembered; ++k) {
+        // Newest first: a point met twice keeps its latest (u, v).
+        const RememberedHit& h = ring.hits[(ring.next + kRemembered - 1 - k) % kRemembered];
+        if (h.shape != this) continue;
+        const Vec3 d = h.p - p;
+        if (std::fabs(d.x) <= tolerance && std::fabs(d.y) <= tolerance &&
+            std::fabs(d.z) <= tolerance) {
+            u = h.u;
+            v = h.v;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool Parametric::uv(const Vec3& p, double& u, double& v) const {
+    if (rememberedUv(p, u, v)) return true;
+    u = 0.5 * (s_.uMin + s_.uMax);
+    v = 0.5 * (s_.vMin + s_.vMax);
+    parametersOf(p, u, v);
+    return true;
+}
+
+Vec3 Parametric::normalAtParameters(double u, double v) const {
+    const Vec3 at = point(u, v);
+    const Vec3 n = cross(point(u + s_.accuracy, v) - at, point(u, v + s_.accuracy) - at);
+    const double len = length(n);
+    if (!(len > 0) || !std::isfinite(len)) return Vec3(0, 1, 0);
+    return n / len;
 }
 
 bool Parametric::parametersOf(const Vec3& p, double& u, double& v) const {
@@ -328,7 +435,11 @@ bool Parametric::parametersOf(const Vec3& p, double gradient, double& uOut, doub
 }
 
 Vec3 Parametric::normal(const Vec3& p) const {
-    double u = 0.5 * (s_.uMin + s_.uMax), v = 0.5 * (s_.vMin + s_.vMax);
+    double u, v;
+    if (rememberedUv(p, u, v)) return normalAtParameters(u, v);
+    // A point this thread did not find: the nearest surface point's normal.
+    u = 0.5 * (s_.uMin + s_.uMax);
+    v = 0.5 * (s_.vMin + s_.vMax);
     parametersOf(p, u, v);
     Vec3 pu, pv;
     derivatives(u, v, pu, pv);

@@ -3,29 +3,31 @@
 // (x, y, z)(u, v) over a rectangle of (u, v), clipped to a container box or
 // sphere.
 //
-// A ray is met by subdividing the (u, v) rectangle: `max_gradient` bounds
-// how fast each coordinate changes with u and v, so a piece of the
-// rectangle lies in a box around the point at its centre; pieces whose box
-// the ray misses are dropped, nearer boxes are searched first, and pieces
-// smaller than `accuracy` are solved exactly for (u, v, t) by Newton's
-// method. What povray 3.7 does that is matched here (measured):
-//  - a ray reports only its first crossing inside the container, so CSG and
-//    clipped_by see no surface behind a rejected one;
-//  - it encloses nothing: its inside test is false even when inverted
-//    (like a triangle, but without the "Patch objects" warning);
-//  - the container defaults to box { -1, 1 }; precompute only speeds
-//    povray up and changes nothing here.
-// What is not matched: povray reports a point in front of the surface, on
-// the box of its last sector (trace() on the plane function { u }
-// function { v } function { 0 } along z gives z = -(accuracy +
-// max_gradient (du + dv) / 2), du and dv the sector's size once below
-// accuracy). Here hits are exact, so at a coarse accuracy povray's
-// silhouettes and shadows are a little fatter (about 0.96-0.99 match on
-// its Parametric_Surfaces templates at 160x120; 0.998 at the default
-// accuracy 0.001).
+// A ray is met as povray 3.7 meets it (the rule read from its source and
+// checked against its trace() and images; the code is ours): the (u, v)
+// rectangle is halved along its longer side, depth first, lower half
+// first. Each coordinate is bounded over a piece from its values at the
+// piece's four corners, assuming it changes at the rate max_gradient (and,
+// as povray does, shifted down by `accuracy`); a piece whose three slabs
+// the ray does not cross together within the container is dropped. A
+// piece is small enough when its longer side, or the longest stretch of
+// the ray through one of its slabs, is below `accuracy`: the ray then
+// meets the surface where it enters the piece's z slab (the last slab it
+// is not parallel to), nearer than any found before and past the
+// container's entry plus 4 accuracy. Only that first crossing is
+// reported, so CSG and clipped_by see no surface behind it, and the
+// surface encloses nothing (its inside test is false even when inverted).
+// The normal and uv_mapping's (u, v) come from the piece's lower corner,
+// the normal by differences one `accuracy` apart. `precompute D, x, y, z`
+// tabulates the bounds of the first D levels of pieces, as povray does;
+// they are not the same bounds as the ones computed on the way, so it
+// changes the image a little, as in povray.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "scene/shapes.h"
 #include "util/function_vm.h"
@@ -42,6 +44,9 @@ struct ParametricSettings {
     double radius = 1;
     double accuracy = 0.001;
     double maxGradient = 1;
+    // precompute D, x, y, z: D levels (0: none) for the coordinates named.
+    int precomputeDepth = 0;
+    bool precomputeAxis[3] = {false, false, false};
 };
 
 class Parametric final : public Shape {
@@ -63,8 +68,28 @@ class Parametric final : public Shape {
     }
     // The (u, v) of the surface point nearest p; false when none is near.
     bool parametersOf(const Vec3& p, double& u, double& v) const;
+    // uv_mapping: the (u, v) the hit at p was found with.
+    bool uv(const Vec3& p, double& u, double& v) const override;
 
   private:
+    // Lower and upper bounds of one coordinate over a piece of (u, v).
+    struct Range {
+        double lo, hi;
+    };
+    // The bounds of coordinate `axis` over [u0, u1] x [v0, v1] from its
+    // corner values, as povray bounds them.
+    Range coordinateRange(int axis, double u0, double u1, double v0, double v1) const;
+    // Fills precomputed_ for the first `depth` levels of pieces (numbered
+    // from 1, the children of piece n are 2n and 2n + 1).
+    void precompute(int axis, std::uint64_t number, double u0, double u1, double v0, double v1);
+    // The ray's span through the container (povray's rule for a ray
+    // starting inside); false when it misses it.
+    bool containerSpan(const Ray& ray, double& t0, double& t1) const;
+    // (u, v) of the hit at p found by this shape on this thread, if any.
+    bool rememberedUv(const Vec3& p, double& u, double& v) const;
+    // The normal from the differences one `accuracy` apart at (u, v).
+    Vec3 normalAtParameters(double u, double v) const;
+
     // A rectangle of (u, v), the surface points at its corners (p[i + 2 j]
     // at (u_i, v_j)) and middle (p[4], only down to kTreeDepth), its depth in the subdivision, the
     // box holding its piece of surface, its node in tree_ (-1: none) and,
@@ -103,11 +128,11 @@ class Parametric final : public Shape {
     // with its distance in bestResidual.
     bool parametersOf(const Vec3& p, double gradient, double& u, double& v,
                       double& bestResidual) const;
-    bool containerInterval(const Ray& ray, double& t0, double& t1) const;
     // Partial derivatives of the point by central differences.
     void derivatives(double u, double v, Vec3& pu, Vec3& pv) const;
 
     ParametricSettings s_;
+    std::array<std::vector<Range>, 3> precomputed_;  // by piece number; empty: not tabulated
     std::vector<TreeNode> tree_;
     double scale_;  // the container's size, for tolerances
 };

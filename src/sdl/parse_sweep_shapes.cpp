@@ -282,20 +282,23 @@ std::shared_ptr<const scene::Shape> parseParametric(BuildContext& c, const Token
                 s.maxGradient = std::fabs(r.parseFloat());
                 continue;
             case Keyword::kw_precompute: {
-                // povray tabulates the first levels of its subdivision to
-                // go faster; the surface is the same, so only the syntax
-                // is checked: a depth, then some of x, y, z.
+                // A depth, then some of x, y, z: the coordinates whose
+                // bounds povray tabulates for that many levels of pieces.
                 r.next();
                 const Token depthAt = r.peek();
                 const double depth = r.parseFloat();
                 if (depth < 1 || depth > 20) r.fail(depthAt, "Precompute: invalid depth (1 to 20)");
+                s.precomputeDepth = static_cast<int>(depth);
                 for (;;) {
                     r.accept(Sym::Comma);
                     const Token axis = r.peek();
-                    if (axis.is(Keyword::kw_x) || axis.is(Keyword::kw_y) || axis.is(Keyword::kw_z))
-                        r.next();
-                    else
-                        break;
+                    const int index = axis.is(Keyword::kw_x)   ? 0
+                                      : axis.is(Keyword::kw_y) ? 1
+                                      : axis.is(Keyword::kw_z) ? 2
+                                                               : -1;
+                    if (index < 0) break;
+                    r.next();
+                    s.precomputeAxis[index] = true;
                 }
                 continue;
             }

@@ -173,7 +173,10 @@ const char* kSphereFunctions =
     "#declare FY = function { cos(v) }\n"
     "#declare FZ = function { sin(u)*sin(v) }\n";
 
-TEST(Parametric, FindsTheFirstCrossingOfTheSphereExactly) {
+// povray's rule (see parametric.h) reports the ray's entry into the last
+// piece's z slab: a little in front of the surface, never behind it; the
+// exact values are checked against povray in language.parametric_trace.
+TEST(Parametric, FindsTheFirstCrossingOfTheSphereJustInFront) {
     ParsedScene p(kSphereFunctions);
     const Parametric sphere(parametricSphere(p));
     const Ray r{{0.3, -0.2, -5}, {0, 0, 1}};
@@ -181,17 +184,19 @@ TEST(Parametric, FindsTheFirstCrossingOfTheSphereExactly) {
     // Only the first crossing, as povray reports.
     ASSERT_EQ(ts.size(), 1u);
     const double half = std::sqrt(1 - 0.09 - 0.04);
-    EXPECT_NEAR(ts[0], 5 - half, 1e-9);
+    EXPECT_LE(ts[0], 5 - half + 1e-12);
+    EXPECT_GE(ts[0], 5 - half - 0.01);
     const Vec3 n = sphere.normal(r.at(ts[0]));
-    EXPECT_NEAR(std::fabs(n.x), 0.3, 1e-6);
-    EXPECT_NEAR(std::fabs(n.z), half, 1e-6);
+    EXPECT_NEAR(std::fabs(n.x), 0.3, 0.01);
+    EXPECT_NEAR(std::fabs(n.z), half, 0.01);
     // Near a pole, where d/du vanishes: still a unit, finite normal.
     const Vec3 pole = sphere.normal({0, 1, 0});
     EXPECT_NEAR(std::fabs(pole.y), 1, 1e-4);
     // From inside the sphere: the far wall.
     const auto inner = hitsOf(sphere, {{0, 0, 0}, {1, 0, 0}});
     ASSERT_EQ(inner.size(), 1u);
-    EXPECT_NEAR(inner[0], 1, 1e-9);
+    EXPECT_NEAR(inner[0], 1, 0.01);
+    EXPECT_LE(inner[0], 1 + 1e-12);
     // It encloses nothing.
     EXPECT_FALSE(sphere.inside({0, 0, 0}));
     EXPECT_TRUE(sphere.isPatch());
@@ -227,7 +232,8 @@ TEST(Parametric, UnderestimatedMaxGradientStillFindsTheSurface) {
         if (ts.size() != 1) continue;
         ++found;
         const double u = x / 4, v = 0.37 / 4;
-        EXPECT_NEAR(3 - ts[0], 0.2 * std::sin(8 * u) * v, 1e-9);
+        // Within a couple of accuracies (0.001) of the sheet, as in povray.
+        EXPECT_NEAR(3 - ts[0], 0.2 * std::sin(8 * u) * v, 0.002);
     }
     EXPECT_EQ(found, 23);
 }
