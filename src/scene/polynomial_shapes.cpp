@@ -64,6 +64,28 @@ void Torus::allHits(const Ray& ray, double tMin, double tMax, std::vector<double
     const double a2 = u.x * u.x + u.z * u.z;
     const double a1 = 2 * (b.x * u.x + b.z * u.z);
     const double a0 = b.x * b.x + b.z * b.z;
+    // The ray must cross the thick cylinder holding the tube (|y| <= r,
+    // R - r <= distance from the axis <= R + r) within the chord, as povray
+    // tests before solving: rays through the hole or past the rim skip the
+    // quartic. Only a rejection: the roots are sought over the same span.
+    const double slack = 1e-9 * outer;
+    double s0 = sLo, s1 = sHi;
+    if (u.y != 0) {
+        double ya = (-minor_ - slack - b.y) / u.y, yb = (minor_ + slack - b.y) / u.y;
+        if (ya > yb) std::swap(ya, yb);
+        s0 = std::max(s0, ya);
+        s1 = std::min(s1, yb);
+        if (!(s0 <= s1)) return;
+    } else if (std::fabs(b.y) > minor_ + slack) {
+        return;
+    }
+    const auto axisDistance2 = [&](double s) { return (a2 * s + a1) * s + a0; };
+    const double hole = std::max(0.0, major_ - minor_ - slack);
+    if (std::max(axisDistance2(s0), axisDistance2(s1)) < hole * hole) return;
+    const double nearest = a2 > 0 ? std::clamp(-a1 / (2 * a2), s0, s1) : s0;
+    if (std::min({axisDistance2(s0), axisDistance2(s1), axisDistance2(nearest)}) >
+        (outer + slack) * (outer + slack))
+        return;
     const double k = b2 + R2 - minor_ * minor_;
     // (s² + k)² - 4R² (a2 s² + a1 s + a0).
     const double c[5] = {k * k - 4 * R2 * a0, -4 * R2 * a1, 2 * k - 4 * R2 * a2, 0, 1};

@@ -128,6 +128,43 @@ TEST(PolynomialSurface, PovrayCoefficientOrder) {
     EXPECT_NEAR(g.x, 1 / std::sqrt(3.0), 1e-12);
 }
 
+// Rays through the hole, past the rim and grazing the tube: the crossings
+// are those of the inside test marched along the ray (guards the thick
+// cylinder test that skips the quartic).
+TEST(Torus, HitsAreTheCrossingsOfTheInsideTest) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int crossings = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const double major = 1 + 0.5 * (u(rng) + 1), minor = 0.2 + 0.3 * (u(rng) + 1);
+        const Torus torus(major, minor, trial % 2 == 1);
+        Vec3 from(u(rng) * 3, u(rng) * 3, -6);
+        Vec3 to(u(rng) * (major + minor), u(rng) * minor * 1.5, u(rng) * (major + minor));
+        if (trial % 4 >= 2) {
+            // Steeply down past the inner edge of the tube, in and out of the hole.
+            const double angle = u(rng) * 3.2, radius = major - minor * (1 + 0.3 * u(rng));
+            to = Vec3(radius * std::cos(angle), u(rng) * minor, radius * std::sin(angle));
+            from = to + Vec3(u(rng) * 0.3, 6, u(rng) * 0.3);
+        }
+        const Ray ray{from, normalize(to - from)};
+        const auto ts = hits(torus, ray.origin, ray.direction);
+        std::vector<double> marched;
+        constexpr int kSteps = 12000;
+        constexpr double kEnd = 12, kStep = kEnd / kSteps;
+        bool before = torus.inside(ray.at(0));
+        for (int k = 1; k <= kSteps; ++k) {
+            const bool now = torus.inside(ray.at(k * kStep));
+            if (now != before) marched.push_back((k - 0.5) * kStep);
+            before = now;
+        }
+        crossings += static_cast<int>(marched.size());
+        ASSERT_EQ(ts.size(), marched.size()) << "trial " << trial;
+        for (std::size_t i = 0; i < ts.size(); ++i)
+            EXPECT_NEAR(ts[i], marched[i], kStep) << "trial " << trial;
+    }
+    EXPECT_GT(crossings, 200);
+}
+
 TEST(PolynomialSurface, FarAwayRay) {
     const PolynomialSurface sphere(2, {1, 0, 0, 0, 1, 0, 0, 1, 0, -1}, true, "poly");
     const auto ts = hits(sphere, {0, 0.6, -1e8}, {0, 0, 1});
