@@ -422,11 +422,13 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
 }
 
 RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                        const scene::Light* light) const {
+                        const scene::Light* light,
+                        std::span<const scene::Interior* const> startInside) const {
     const bool fogs = light && light->mediaAttenuation && light->mediaInteraction &&
                       !scene_.atmosphere.fogs.empty() && std::isfinite(tMax);
     SolidSpans solid;
-    RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light, fogs ? &solid : nullptr);
+    RGB passed =
+        surfaceFilter(ray, tMin, tMax, selfHit, light, fogs ? &solid : nullptr, startInside);
     if (fogs && !passed.isBlack()) {
         // No fog inside objects that are not hollow (measured: the shadow
         // of interior/media/hollow1.pov's solid glass sphere under fog
@@ -455,7 +457,8 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
 }
 
 RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                         const scene::Light* light, SolidSpans* solid) const {
+                         const scene::Light* light, SolidSpans* solid,
+                         std::span<const scene::Interior* const> startInside) const {
     ThreadState& state = tests_.local();
     // povray stops such shadow rays only once surface photons exist.
     const scene::Light* photonLight = photons_ && !photons_->surfaceMap().empty() ? light : nullptr;
@@ -529,8 +532,30 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     // where the ray enters and leaves, or from its start when it starts
     // inside (a media sample point), or to its end when the light is inside
     // (measured: povray's shadow under a box of absorbing media).
+    //
+    // A media sample's shadow ray (`startInside` given) instead starts in
+    // the containers its camera ray was in, and each surface of a container
+    // it crosses toggles it: out if the ray was in, in otherwise, whatever
+    // way the surface faces. This is povray 3.7's bookkeeping (fact read in
+    // its source, render/trace.cpp: the shadow ray copies the camera ray's
+    // interior list and adds or removes the interior at every crossing). It
+    // differs from the surfaces' normals for a sample lying on the surface
+    // the camera ray entered by (method 3's first point of an interval) when
+    // the way to the light goes back through the container's own hollow:
+    // povray dims that light over the hollow only, then counts the ray
+    // outside for the rest (measured: benchmark.pov's cloud shell lights a
+    // wedge of cloud toward the light; conformance media_shell_sample_edge).
+    // A container entered that way, by a surface facing away, does not dim
+    // the light beyond the last crossing.
     std::array<Inside, 8> inMedia{};
+    std::array<bool, 8> entered{};
     size_t inMediaCount = 0;
+    const bool toggles = !startInside.empty();
+    for (const scene::Interior* in : startInside) {
+        if (!in || in->media.empty() || inMediaCount == inMedia.size()) continue;
+        entered[inMediaCount] = false;
+        inMedia[inMediaCount++] = {in, tMin};
+    }
     auto mediaBetween = [&](const scene::Interior& in, double t0, double t1) {
         MediaSet set;
         set.add(in.media);
@@ -543,11 +568,17 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
         for (size_t i = 0; i < inMediaCount; ++i) {
             if (inMedia[i].interior != in) continue;
             mediaBetween(*in, inMedia[i].from, t);
-            inMedia[i] = inMedia[--inMediaCount];
+            --inMediaCount;
+            inMedia[i] = inMedia[inMediaCount];
+            entered[i] = entered[inMediaCount];
             return;
         }
-        if (dot(outwardNormal(obj, p), ray.direction) < 0) {
-            if (inMediaCount < inMedia.size()) inMedia[inMediaCount++] = {in, t};
+        const bool entering = dot(outwardNormal(obj, p), ray.direction) < 0;
+        if (entering || toggles) {
+            if (inMediaCount < inMedia.size()) {
+                entered[inMediaCount] = entering;
+                inMedia[inMediaCount++] = {in, t};
+            }
         } else {
             mediaBetween(*in, tMin, t);
         }
@@ -589,7 +620,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     }
     if (std::isfinite(tMax)) {
         for (size_t i = 0; i < inMediaCount; ++i)
-            mediaBetween(*inMedia[i].interior, inMedia[i].from, tMax);
+            if (entered[i]) mediaBetween(*inMedia[i].interior, inMedia[i].from, tMax);
         for (size_t i = 0; i < inSolidCount; ++i) solid->add(inSolid[i].from, tMax);
     }
     return passed;
