@@ -177,8 +177,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     // exactly; the light's own plane would tilt them).
     const Vec3 centre =
         planar ? p + path.toLight * length(light.pointAt - light.position) : light.position;
-    const GridSampler sampler{world,  light, p,    selfHit,    centre,
-                              axis1,  axis2, seed, shadowRays, startInside};
+    const GridSampler sampler{world, light, p,    selfHit,    centre,
+                              axis1, axis2, seed, shadowRays, startInside};
     // The grid samples carry the light's colour; attenuation (computed at
     // the centre) scales the mean.
     return subdivideAreaGrid(area.size1, area.size2, area.adaptive, sampler) * att;

@@ -77,8 +77,7 @@ bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path);
 // interiors a media sample's camera ray is in (World::shadowFilter).
 RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
                   const LightPath& path, double selfHit, const LightingQuality& quality,
-                  uint64_t& shadowRays,
-                  std::span<const scene::Interior* const> startInside = {});
+                  uint64_t& shadowRays, std::span<const scene::Interior* const> startInside = {});
 
 // The adaptive subdivision of an area light's grid, apart from the shadow
 // rays: `sample(i, j)` gives the light arriving from grid point (i, j)

@@ -257,9 +257,9 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
     const double speed = length(ray.direction);
     const scene::Ray unit{ray.origin, ray.direction * (1.0 / speed)};
     const double depth = missed ? kMissDepth : t * speed;
-    const MediaResult m =
-        integrateMedia(world_, lighting_, unit, depth, set, true, counts.mediaSamples,
-                       counts.shadow, std::span<const scene::Interior* const>(inside.data(), insideCount));
+    const MediaResult m = integrateMedia(
+        world_, lighting_, unit, depth, set, true, counts.mediaSamples, counts.shadow,
+        std::span<const scene::Interior* const>(inside.data(), insideCount));
     if (state.transmit) {
         const RGB& k = m.transmittance;
         *state.transmit *= grey(k);
