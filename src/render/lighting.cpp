@@ -23,6 +23,7 @@ struct GridSampler {
     Vec3 axis1, axis2;
     uint64_t seed;
     uint64_t& shadowRays;
+    std::span<const scene::Interior* const> startInside;
 
     RGB operator()(int i, int j) const {
         double u = i, v = j;
@@ -42,7 +43,8 @@ struct GridSampler {
         // The ray stops short of the light by the self-hit margin: a light
         // placed on a surface lights the room, as in povray (the Cornell
         // box's lamps sit in the ceiling's plane).
-        return light.color * world.shadowFilter({p, dir}, selfHit, dist - selfHit, selfHit, &light);
+        return light.color *
+               world.shadowFilter({p, dir}, selfHit, dist - selfHit, selfHit, &light, startInside);
     }
 };
 
@@ -117,7 +119,7 @@ bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path) {
 
 RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
                   const LightPath& path, double selfHit, const LightingQuality& quality,
-                  uint64_t& shadowRays) {
+                  uint64_t& shadowRays, std::span<const scene::Interior* const> startInside) {
     // Parallel and cylinder lights fade with the distance from the plane
     // through the light across its axis, on either side of it (measured).
     const bool planar = light.parallel || light.kind == scene::LightKind::Cylinder;
@@ -148,7 +150,7 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     if (!sampleArea) {
         ++shadowRays;
         return color * world.shadowFilter({p, path.toLight}, selfHit, shadowDistance - selfHit,
-                                          selfHit, &light);
+                                          selfHit, &light, startInside);
     }
 
     const scene::AreaLight& area = light.area;
@@ -175,7 +177,8 @@ RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
     // exactly; the light's own plane would tilt them).
     const Vec3 centre =
         planar ? p + path.toLight * length(light.pointAt - light.position) : light.position;
-    const GridSampler sampler{world, light, p, selfHit, centre, axis1, axis2, seed, shadowRays};
+    const GridSampler sampler{world, light, p,    selfHit,    centre,
+                              axis1, axis2, seed, shadowRays, startInside};
     // The grid samples carry the light's colour; attenuation (computed at
     // the centre) scales the mean.
     return subdivideAreaGrid(area.size1, area.size2, area.adaptive, sampler) * att;

@@ -73,10 +73,11 @@ bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path);
 // The colour of `light` arriving at `p` along `path`: attenuated, cut by
 // projected_through, and passed through whatever lies between (shadow
 // rays, counted in `shadowRays`). `selfHit` is the distance below which a
-// shadow ray ignores crossings (its own surface).
+// shadow ray ignores crossings (its own surface). `startInside`: the
+// interiors a media sample's camera ray is in (World::shadowFilter).
 RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
                   const LightPath& path, double selfHit, const LightingQuality& quality,
-                  uint64_t& shadowRays);
+                  uint64_t& shadowRays, std::span<const scene::Interior* const> startInside = {});
 
 // The adaptive subdivision of an area light's grid, apart from the shadow
 // rays: `sample(i, j)` gives the light arriving from grid point (i, j)

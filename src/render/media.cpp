@@ -96,7 +96,8 @@ bool insideLightVolume(const scene::Light& light, const Vec3& p) {
 class Sampler {
   public:
     Sampler(const World* world, const LightingQuality& quality, const scene::Ray& ray,
-            const MediaSet& set, bool lights, uint64_t& samples, uint64_t& shadowRays)
+            const MediaSet& set, bool lights, uint64_t& samples, uint64_t& shadowRays,
+            std::span<const scene::Interior* const> inside = {})
         : world_(world),
           quality_(quality),
           ray_(ray),
@@ -106,7 +107,8 @@ class Sampler {
           primary_(lights && world),
           lights_(primary_ && anyScatters()),
           samples_(samples),
-          shadowRays_(shadowRays) {
+          shadowRays_(shadowRays),
+          inside_(inside) {
         seed_ = fmix64(std::bit_cast<uint64_t>(ray.origin.x) ^
                        fmix64(std::bit_cast<uint64_t>(ray.origin.y + 3.0 * ray.direction.x) ^
                               fmix64(std::bit_cast<uint64_t>(ray.origin.z + 5.0 * ray.direction.y) ^
@@ -212,6 +214,7 @@ class Sampler {
     uint64_t seed_ = 0;
     uint64_t& samples_;
     uint64_t& shadowRays_;
+    std::span<const scene::Interior* const> inside_;  // the ray's containers
     mutable std::vector<PhotonNeighbour> photonScratch_;
 };
 
@@ -229,7 +232,8 @@ RGB Sampler::inScattered(const Vec3& p, double t, const RGB* scattering) const {
             continue;
         LightPath path;
         if (!pathToLight(light, p, path)) continue;
-        const RGB arriving = lightArriving(*world_, light, p, path, selfHit, quality_, shadowRays_);
+        const RGB arriving =
+            lightArriving(*world_, light, p, path, selfHit, quality_, shadowRays_, inside_);
         if (arriving.isBlack()) continue;
         // Light travels along -toLight; the viewer is back along the ray.
         // Several media along the stretch scatter their summed scattering
@@ -556,9 +560,10 @@ void MediaSet::add(const scene::MediaList& list) {
 
 MediaResult integrateMedia(const World& world, const LightingQuality& quality,
                            const scene::Ray& ray, double depth, const MediaSet& set, bool lights,
-                           uint64_t& samples, uint64_t& shadowRays) {
+                           uint64_t& samples, uint64_t& shadowRays,
+                           std::span<const scene::Interior* const> inside) {
     if (set.empty()) return {};
-    Sampler sampler(&world, quality, ray, set, lights, samples, shadowRays);
+    Sampler sampler(&world, quality, ray, set, lights, samples, shadowRays, inside);
     return sampler.run(depth);
 }
 

@@ -75,9 +75,12 @@ struct MediaResult {
 // secondary rays) or not (shadow rays, which only need the extinction).
 // `ray` has a unit direction; the stretch is [0, depth] along it.
 // Counts each sample point in `samples` and shadow rays in `shadowRays`.
+// `inside`: the interiors the ray is in along the stretch; the samples'
+// shadow rays start in them (World::shadowFilter).
 MediaResult integrateMedia(const World& world, const LightingQuality& quality,
                            const scene::Ray& ray, double depth, const MediaSet& set, bool lights,
-                           uint64_t& samples, uint64_t& shadowRays);
+                           uint64_t& samples, uint64_t& shadowRays,
+                           std::span<const scene::Interior* const> inside = {});
 
 // The transmittance of the stretch [0, depth] (shadow rays).
 RGB mediaTransmittance(const scene::Ray& ray, double depth, const MediaSet& set);

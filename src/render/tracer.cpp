@@ -242,17 +242,24 @@ RGB Tracer::throughMedia(const scene::Ray& ray, double t, bool missed, const Sta
     // from its plane sees the background untouched; two media boxes
     // leaving the ray at one coincident face no longer show media to
     // infinity).
+    // The samples' shadow rays start in the same containers (povray copies
+    // the ray's interiors; World::shadowFilter).
+    std::array<const scene::Interior*, InteriorStack::kCapacity> inside{};
+    size_t insideCount = 0;
     for (int i = 0; i < state.inside.size() && !missed; ++i) {
         const InteriorStack::Region& r = state.inside[i];
-        if (r.interior) set.add(r.interior->media);
+        if (!r.interior) continue;
+        set.add(r.interior->media);
+        if (!r.interior->media.empty()) inside[insideCount++] = r.interior;
     }
     set.add(scene_.atmosphere.media);
     if (set.empty()) return color;
     const double speed = length(ray.direction);
     const scene::Ray unit{ray.origin, ray.direction * (1.0 / speed)};
     const double depth = missed ? kMissDepth : t * speed;
-    const MediaResult m = integrateMedia(world_, lighting_, unit, depth, set, true,
-                                         counts.mediaSamples, counts.shadow);
+    const MediaResult m = integrateMedia(
+        world_, lighting_, unit, depth, set, true, counts.mediaSamples, counts.shadow,
+        std::span<const scene::Interior* const>(inside.data(), insideCount));
     if (state.transmit) {
         const RGB& k = m.transmittance;
         *state.transmit *= grey(k);

@@ -58,6 +58,75 @@ void guarded(TraceContext* ctx, Body body) {
     }
 }
 
+// The hollow objects with media a shadow ray is in as it crosses their
+// surfaces (World::surfaceFilter): the light is dimmed by the media between
+// where the ray enters and leaves, or from its start when it starts inside
+// (a media sample point), or to its end when the light is inside (measured:
+// povray's shadow under a box of absorbing media).
+//
+// A media sample's shadow ray (`startInside` given) instead starts in the
+// containers its camera ray was in, and each surface of a container it
+// crosses toggles it: out if the ray was in, in otherwise, whatever way the
+// surface faces. This is povray 3.7's bookkeeping (fact read in its source,
+// render/trace.cpp: the shadow ray copies the camera ray's interior list and
+// adds or removes the interior at every crossing). It differs from the
+// surfaces' normals for a sample lying on the surface the camera ray entered
+// by (method 3's first point of an interval) when the way to the light goes
+// back through the container's own hollow: povray dims that light over the
+// hollow only, then counts the ray outside for the rest (measured:
+// benchmark.pov's cloud shell lights a wedge of cloud toward the light;
+// conformance media_shell_sample_edge). A container entered that way, by a
+// surface facing away, does not dim the light beyond the last crossing.
+class MediaCrossings {
+  public:
+    MediaCrossings(const scene::Ray& ray, double tMin,
+                   std::span<const scene::Interior* const> startInside)
+        : ray_(ray), tMin_(tMin), speed_(length(ray.direction)), toggles_(!startInside.empty()) {
+        for (const scene::Interior* in : startInside)
+            if (in && !in->media.empty() && count_ < kCapacity)
+                inside_[count_++] = {in, tMin, false};
+    }
+    // The ray crosses the surface of a hollow object with media `in` at t;
+    // `entering`: the surface faces against the ray.
+    void cross(const scene::Interior& in, bool entering, double t, RGB& passed) {
+        for (size_t i = 0; i < count_; ++i) {
+            if (inside_[i].interior != &in) continue;
+            passed *= between(in, inside_[i].from, t);
+            inside_[i] = inside_[--count_];
+            return;
+        }
+        if (entering || toggles_) {
+            if (count_ < kCapacity) inside_[count_++] = {&in, t, entering};
+        } else {
+            passed *= between(in, tMin_, t);
+        }
+    }
+    // The ray reaches the light at tMax.
+    void finish(double tMax, RGB& passed) const {
+        for (size_t i = 0; i < count_; ++i)
+            if (inside_[i].entered) passed *= between(*inside_[i].interior, inside_[i].from, tMax);
+    }
+
+  private:
+    RGB between(const scene::Interior& in, double t0, double t1) const {
+        MediaSet set;
+        set.add(in.media);
+        const scene::Ray unit{ray_.at(t0), ray_.direction * (1.0 / speed_)};
+        return mediaTransmittance(unit, (t1 - t0) * speed_, set);
+    }
+    struct Inside {
+        const scene::Interior* interior;
+        double from;
+        bool entered;  // through a surface facing against the ray
+    };
+    static constexpr size_t kCapacity = 8;
+    const scene::Ray& ray_;
+    double tMin_, speed_;
+    bool toggles_;
+    std::array<Inside, kCapacity> inside_{};
+    size_t count_ = 0;
+};
+
 }  // namespace
 
 namespace {
@@ -422,11 +491,13 @@ bool World::occluded(const scene::Ray& ray, double tMin, double tMax) const {
 }
 
 RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                        const scene::Light* light) const {
+                        const scene::Light* light,
+                        std::span<const scene::Interior* const> startInside) const {
     const bool fogs = light && light->mediaAttenuation && light->mediaInteraction &&
                       !scene_.atmosphere.fogs.empty() && std::isfinite(tMax);
     SolidSpans solid;
-    RGB passed = surfaceFilter(ray, tMin, tMax, selfHit, light, fogs ? &solid : nullptr);
+    RGB passed =
+        surfaceFilter(ray, tMin, tMax, selfHit, light, fogs ? &solid : nullptr, startInside);
     if (fogs && !passed.isBlack()) {
         // No fog inside objects that are not hollow (measured: the shadow
         // of interior/media/hollow1.pov's solid glass sphere under fog
@@ -455,7 +526,8 @@ RGB World::shadowFilter(const scene::Ray& ray, double tMin, double tMax, double 
 }
 
 RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                         const scene::Light* light, SolidSpans* solid) const {
+                         const scene::Light* light, SolidSpans* solid,
+                         std::span<const scene::Interior* const> startInside) const {
     ThreadState& state = tests_.local();
     // povray stops such shadow rays only once surface photons exist.
     const scene::Light* photonLight = photons_ && !photons_->surfaceMap().empty() ? light : nullptr;
@@ -525,33 +597,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
             passed *= interiorFade(*in, (t - tMin) * speed);
         }
     };
-    // Hollow objects with media: the light is dimmed by the media between
-    // where the ray enters and leaves, or from its start when it starts
-    // inside (a media sample point), or to its end when the light is inside
-    // (measured: povray's shadow under a box of absorbing media).
-    std::array<Inside, 8> inMedia{};
-    size_t inMediaCount = 0;
-    auto mediaBetween = [&](const scene::Interior& in, double t0, double t1) {
-        MediaSet set;
-        set.add(in.media);
-        const scene::Ray unit{ray.at(t0), ray.direction * (1.0 / speed)};
-        passed *= mediaTransmittance(unit, (t1 - t0) * speed, set);
-    };
-    auto crossMedia = [&](const scene::Object& obj, const Vec3& p, double t) {
-        const scene::Interior* in = obj.interior.get();
-        if (!in || in->media.empty() || !obj.hollow) return;
-        for (size_t i = 0; i < inMediaCount; ++i) {
-            if (inMedia[i].interior != in) continue;
-            mediaBetween(*in, inMedia[i].from, t);
-            inMedia[i] = inMedia[--inMediaCount];
-            return;
-        }
-        if (dot(outwardNormal(obj, p), ray.direction) < 0) {
-            if (inMediaCount < inMedia.size()) inMedia[inMediaCount++] = {in, t};
-        } else {
-            mediaBetween(*in, tMin, t);
-        }
-    };
+    MediaCrossings media(ray, tMin, startInside);
     // Objects that are not hollow: where the ray is inside them (from its
     // start when it leaves one it did not enter).
     struct InSolid {
@@ -578,7 +624,9 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
     while (intersect(ray, from, tMax, hit, scene::RayKind::Shadow)) {
         const Vec3 p = ray.at(hit.t);
         crossFading(*hit.object, p, hit.t);
-        crossMedia(*hit.object, p, hit.t);
+        if (const scene::Interior* in = hit.object->interior.get();
+            in && !in->media.empty() && hit.object->hollow)
+            media.cross(*in, dot(outwardNormal(*hit.object, p), ray.direction) < 0, hit.t, passed);
         crossSolid(*hit.object, p, hit.t);
         const RGB through = passing(*hit.object, p, photonLight);
         if (through.isBlack()) return RGB(0.0);
@@ -588,8 +636,7 @@ RGB World::surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double
         from = hit.t + std::max(selfHit, scale * 1e-9);
     }
     if (std::isfinite(tMax)) {
-        for (size_t i = 0; i < inMediaCount; ++i)
-            mediaBetween(*inMedia[i].interior, inMedia[i].from, tMax);
+        media.finish(tMax, passed);
         for (size_t i = 0; i < inSolidCount; ++i) solid->add(inSolid[i].from, tMax);
     }
     return passed;

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <unordered_set>
 #include <utility>
@@ -64,9 +65,14 @@ class World {
     // margin past one crossing where the search for the next starts.
     // Returns black as soon as nothing passes. `light`, when given, is the
     // light the ray goes to: the object that last blocked it (per thread)
-    // is tried first.
+    // is tried first. `startInside`, when not empty, lists the interiors
+    // the ray starts in as the ray it comes from saw them (a media sample's
+    // shadow ray: the camera ray's containers); their media are then
+    // tracked as povray 3.7 tracks a shadow ray's interiors (see
+    // ShadowInteriors in world.cpp) rather than from the surfaces' normals.
     RGB shadowFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                     const scene::Light* light = nullptr) const;
+                     const scene::Light* light = nullptr,
+                     std::span<const scene::Interior* const> startInside = {}) const;
 
     const scene::Scene& scene() const { return scene_; }
 
@@ -99,7 +105,8 @@ class World {
     // shadowFilter without the scene's media and fogs; `solid`, when given,
     // receives the stretches inside objects that are not hollow.
     RGB surfaceFilter(const scene::Ray& ray, double tMin, double tMax, double selfHit,
-                      const scene::Light* light, SolidSpans* solid = nullptr) const;
+                      const scene::Light* light, SolidSpans* solid,
+                      std::span<const scene::Interior* const> startInside) const;
     // Puts a top-level object (or, for a plain union, its children) into
     // the BVH or the unbounded list.
     void add(const scene::Object* obj);
