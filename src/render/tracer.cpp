@@ -9,6 +9,7 @@
 #include "render/optics.h"
 #include "render/photons.h"
 #include "render/texture_blend.h"
+#include "scene/hit_tolerance.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
@@ -21,20 +22,18 @@ const scene::Texture& defaultTexture() {
 }
 
 // Distance below which a secondary ray leaving the surface point p (found
-// along `ray`) ignores crossings, so it does not re-hit its own surface.
-// p = origin + t * direction is computed in double, so its error is a few
-// ulps of the largest magnitude involved: of p itself and of the ray's
-// origin (a camera far from a surface near the world origin gives |p| ~ 0
-// but an error ~ ulp(|origin|)). 1e-9 of that magnitude is ~10^7 ulps:
-// far above the rounding error, far below any visible detail, and purely
-// relative, so a scene renders the same at any scale
-// (tests/stability/scale_all_primitives.pov checks 1e-4 to 1e5).
+// along `ray`) ignores crossings: povray's minimum depth of a hit
+// (scene/hit_tolerance.h), so a second surface closer than that to the
+// first is not seen, as in povray. p = origin + t * direction is computed in
+// double, so its error is a few ulps of the largest magnitude involved: of
+// p itself and of the ray's origin (a camera far from a surface near the
+// world origin gives |p| ~ 0 but an error ~ ulp(|origin|)); 1e-9 of that
+// magnitude (~10^7 ulps) stays the floor for scenes far from the origin.
+// Secondary rays have unit directions, so t is a distance.
 double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
-    const Vec3& o = ray.origin;
-    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z), std::fabs(o.x),
-                               std::fabs(o.y), std::fabs(o.z)});
-    // The floor only keeps the epsilon positive (a scene at the origin).
-    return std::max(m * 1e-9, 1e-300);
+    const double m = scene::coordinateMagnitude(p, ray.origin);
+    // The last floor only keeps the epsilon positive (a scene at the origin).
+    return std::max({m * 1e-9, scene::scaledTolerance(scene::kMinHitDepth, m), 1e-300});
 }
 
 // The mirror direction of the view ray about the perturbed normal n. A
@@ -151,7 +150,11 @@ RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transm
     state.transmit = transmit;
     state.radiosity.task = radiosity;
     state.radiosity.origin = scene_.camera.location;
-    return trace(ray, 0.0, state, counts);
+    // povray's minimum hit depth applies to camera rays too: a surface
+    // closer than that to the camera is not seen.
+    const double m = scene::coordinateMagnitude(ray.origin, ray.origin);
+    return trace(ray, scene::scaledTolerance(scene::kMinHitDepth, m) / length(ray.direction), state,
+                 counts);
 }
 
 RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const {
