@@ -52,6 +52,13 @@ Vec3 mirrorDirection(const Vec3& viewDir, const Vec3& n, const Vec3& geometric) 
     return reflected;
 }
 
+// Whether two layers' normals are the same (povray's test, 1e-10 per
+// component).
+bool sameNormal(const Vec3& a, const Vec3& b) {
+    return std::fabs(a.x - b.x) <= 1e-10 && std::fabs(a.y - b.y) <= 1e-10 &&
+           std::fabs(a.z - b.z) <= 1e-10;
+}
+
 // What a reflection of `reflectivity` leaves of the light, per channel.
 RGB unreflected(const RGB& reflectivity) {
     return RGB(std::max(0.0, 1.0 - reflectivity.r), std::max(0.0, 1.0 - reflectivity.g),
@@ -197,9 +204,16 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
         return quickColour(tex, p, tex.usesUv() ? obj.surfaceUv(p) : p);
     }
     RGB color;
-    if (fades) {
+    // The fade is that of the hit object's own interior, and only when the
+    // ray is inside it: a surface of another object met inside a fading
+    // glass (a cavity cut by an object with no interior of its own, which
+    // gets a plain one) does not fade what it lets through (fact from
+    // povray 3.7's backend/render/trace.cpp and parser/parse.cpp;
+    // advanced/glasschess's carved pieces).
+    const InteriorStack::Region own = InteriorStack::of(*hit.object);
+    if (own.interior && own.interior->fades() && state.inside.contains(own.key)) {
         State faded = state;
-        faded.fade = interiorFade(*medium->interior, hit.t * length(ray.direction));
+        faded.fade = interiorFade(*own.interior, hit.t * length(ray.direction));
         color = shade(ray, hit, faded, counts);
     } else {
         color = shade(ray, hit, state, counts);
@@ -563,6 +577,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
         const scene::SurfaceInfo unperturbed{at.geometric, at.viewDir, at.uv};
         const Vec3 n = tex.perturbNormal(layerP, at.geometric, at.uv, &unperturbed);
         out.n = n;
+        if (i == 0) out.topN = n;
         out.perturbed = out.perturbed || tex.normal;
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
@@ -599,24 +614,19 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             out.reflectivity =
                 reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment);
             out.reflectedSum += out.reflectivity;
-            // Inside a fading interior the part of the reflection that
-            // varies with the angle fades as the light here does, its
-            // minimum does not, unless the finish conserves energy: then
-            // the reflection stays whole (measured with povray 3.7 on a
-            // glass block: reflection {0, 1 fresnel} and {0.2, 0.8} faded,
-            // constant reflection whole; {0.2, 1 fresnel} conserve_energy
-            // whole, incdemo/glasses/glass.pov).
-            const bool fades = !fin.conserveEnergy &&
-                               (state.fade.r != 1 || state.fade.g != 1 || state.fade.b != 1);
-            const RGB shown = fades ? reflectance(fin.reflection, cosView, crossing->fresnelRatio,
-                                                  pigment, state.fade)
-                                    : out.reflectivity;
+            // The reflection is not faded by the interior the ray came
+            // through: povray fades only what crosses (or is totally
+            // reflected at) the surface that ends the faded stretch (fact
+            // from povray 3.7's backend/render/trace.cpp).
             if (!out.reflectivity.isBlack()) {
                 const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-                out.color +=
-                    shown * reflectionExponent(
-                                spawnReflection(at, reflected, out.reflectivity, state, counts),
-                                fin.reflection.exponent);
+                const RGB shown =
+                    out.reflectivity *
+                    reflectionExponent(
+                        spawnReflection(at, reflected, out.reflectivity, state, counts),
+                        fin.reflection.exponent);
+                out.color += shown;
+                if (sameNormal(n, out.topN)) out.topReflection += shown;
             }
         } else {
             out.reflectivity = RGB(0.0);
@@ -679,24 +689,23 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
         color += through * trace({at.p, *bent}, at.eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else {
-        // Total internal reflection: the ray is mirrored back inside with
-        // what the reflection term did not already take, so the surface
-        // mirrors 100 % (measured: a prism of transmit 0.5 passes 0.5 * 0.5
-        // of the light whatever its reflection value).
-        const RGB rest = unreflected(layers.reflectedSum);
-        // The mirrored ray keeps the incoming ray's adc weight (measured:
-        // scaling it by `rest` cuts rays povray traces).
-        if (!rest.isBlack()) {
-            // Mirrored as a reflection is, back above the surface when a
-            // perturbed normal sends it through (measured: bumps on a water
-            // surface seen from below, interior/caustic2.pov).
-            const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-            // Faded on the way here as the refracted ray is (measured: a
-            // fading glass cone with no reflection at all; a glass block
-            // with fade_distance shows its totally reflected edges as dim
-            // as its face), where the reflection term stays whole.
-            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts) * state.fade;
-        }
+        // Total internal reflection: the ray is mirrored back inside in
+        // full, in place of the reflection of the layers that share the
+        // top layer's normal (povray skips those then; fact from povray
+        // 3.7's backend/render/trace.cpp), so the surface mirrors 100 %
+        // (measured: a prism of transmit 0.5 passes 0.5 * 0.5 of the
+        // light whatever its reflection value). The mirrored ray's adc
+        // weight is the refracted ray's (povray's source).
+        color -= layers.topReflection;
+        // Mirrored as a reflection is, back above the surface when a
+        // perturbed normal sends it through (measured: bumps on a water
+        // surface seen from below, interior/caustic2.pov).
+        const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
+        // Faded on the way here as the refracted ray is (measured: a
+        // fading glass cone with no reflection at all; a glass block with
+        // fade_distance shows its totally reflected edges as dim as its
+        // face).
+        color += spawnReflection(at, reflected, RGB(throughWeight), state, counts) * state.fade;
     }
     return color;
 }
