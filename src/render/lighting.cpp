@@ -1,9 +1,11 @@
 #include "render/lighting.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <vector>
 
+#include "scene/hit_tolerance.h"
 #include "scene/object.h"
 #include "util/hash.h"
 
@@ -120,6 +122,11 @@ bool pathToLight(const scene::Light& light, const Vec3& p, LightPath& path) {
 RGB lightArriving(const World& world, const scene::Light& light, const Vec3& p,
                   const LightPath& path, double selfHit, const LightingQuality& quality,
                   uint64_t& shadowRays, std::span<const scene::Interior* const> startInside) {
+    // Shadow rays ignore crossings nearer than povray's shadow tolerance to
+    // p or to the light, and that far past each translucent surface
+    // (scene/hit_tolerance.h).
+    selfHit = std::max(
+        selfHit, scene::scaledTolerance(scene::kShadowTolerance, scene::coordinateMagnitude(p, p)));
     // Parallel and cylinder lights fade with the distance from the plane
     // through the light across its axis, on either side of it (measured).
     const bool planar = light.parallel || light.kind == scene::LightKind::Cylinder;

@@ -14,6 +14,7 @@
 #include "render/photon_file.h"
 #include "render/tracer.h"
 #include "render/world.h"
+#include "scene/hit_tolerance.h"
 #include "util/hash.h"
 
 namespace frameray::render {
@@ -228,9 +229,12 @@ struct Tracing {
                  const InteriorStack& beyond, double iorHere, double eps) const;
 };
 
+// Where a photon leaving p starts seeing surfaces: povray's minimum hit
+// depth (scene/hit_tolerance.h), or 1e-9 of the coordinates far from the
+// origin.
 double photonEpsilon(const Vec3& p) {
-    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z), 1.0});
-    return m * 1e-9;
+    const double m = scene::coordinateMagnitude(p, p);
+    return std::max({m * 1e-9, scene::scaledTolerance(scene::kMinHitDepth, m), 1e-300});
 }
 
 Photon makePhoton(const Vec3& p, const RGB& power, const Vec3& direction) {

@@ -9,6 +9,7 @@
 #include "render/optics.h"
 #include "render/photons.h"
 #include "render/texture_blend.h"
+#include "scene/hit_tolerance.h"
 #include "util/sample_random.h"
 
 namespace frameray::render {
@@ -21,20 +22,18 @@ const scene::Texture& defaultTexture() {
 }
 
 // Distance below which a secondary ray leaving the surface point p (found
-// along `ray`) ignores crossings, so it does not re-hit its own surface.
-// p = origin + t * direction is computed in double, so its error is a few
-// ulps of the largest magnitude involved: of p itself and of the ray's
-// origin (a camera far from a surface near the world origin gives |p| ~ 0
-// but an error ~ ulp(|origin|)). 1e-9 of that magnitude is ~10^7 ulps:
-// far above the rounding error, far below any visible detail, and purely
-// relative, so a scene renders the same at any scale
-// (tests/stability/scale_all_primitives.pov checks 1e-4 to 1e5).
+// along `ray`) ignores crossings: povray's minimum depth of a hit
+// (scene/hit_tolerance.h), so a second surface closer than that to the
+// first is not seen, as in povray. p = origin + t * direction is computed in
+// double, so its error is a few ulps of the largest magnitude involved: of
+// p itself and of the ray's origin (a camera far from a surface near the
+// world origin gives |p| ~ 0 but an error ~ ulp(|origin|)); 1e-9 of that
+// magnitude (~10^7 ulps) stays the floor for scenes far from the origin.
+// Secondary rays have unit directions, so t is a distance.
 double selfHitEpsilon(const Vec3& p, const scene::Ray& ray) {
-    const Vec3& o = ray.origin;
-    const double m = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z), std::fabs(o.x),
-                               std::fabs(o.y), std::fabs(o.z)});
-    // The floor only keeps the epsilon positive (a scene at the origin).
-    return std::max(m * 1e-9, 1e-300);
+    const double m = scene::coordinateMagnitude(p, ray.origin);
+    // The last floor only keeps the epsilon positive (a scene at the origin).
+    return std::max({m * 1e-9, scene::scaledTolerance(scene::kMinHitDepth, m), 1e-300});
 }
 
 // The mirror direction of the view ray about the perturbed normal n. A
@@ -51,6 +50,13 @@ Vec3 mirrorDirection(const Vec3& viewDir, const Vec3& n, const Vec3& geometric) 
             reflected = reflected - geometric * (2 * under);
     }
     return reflected;
+}
+
+// Whether two layers' normals are the same (povray's test, 1e-10 per
+// component).
+bool sameNormal(const Vec3& a, const Vec3& b) {
+    return std::fabs(a.x - b.x) <= 1e-10 && std::fabs(a.y - b.y) <= 1e-10 &&
+           std::fabs(a.z - b.z) <= 1e-10;
 }
 
 // What a reflection of `reflectivity` leaves of the light, per channel.
@@ -151,7 +157,11 @@ RGB Tracer::traceCamera(const scene::Ray& ray, RayCounts& counts, double* transm
     state.transmit = transmit;
     state.radiosity.task = radiosity;
     state.radiosity.origin = scene_.camera.location;
-    return trace(ray, 0.0, state, counts);
+    // povray's minimum hit depth applies to camera rays too: a surface
+    // closer than that to the camera is not seen.
+    const double m = scene::coordinateMagnitude(ray.origin, ray.origin);
+    return trace(ray, scene::scaledTolerance(scene::kMinHitDepth, m) / length(ray.direction), state,
+                 counts);
 }
 
 RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const {
@@ -194,9 +204,16 @@ RGB Tracer::trace(const scene::Ray& ray, double tMin, const State& state, RayCou
         return quickColour(tex, p, tex.usesUv() ? obj.surfaceUv(p) : p);
     }
     RGB color;
-    if (fades) {
+    // The fade is that of the hit object's own interior, and only when the
+    // ray is inside it: a surface of another object met inside a fading
+    // glass (a cavity cut by an object with no interior of its own, which
+    // gets a plain one) does not fade what it lets through (fact from
+    // povray 3.7's backend/render/trace.cpp and parser/parse.cpp;
+    // advanced/glasschess's carved pieces).
+    const InteriorStack::Region own = InteriorStack::of(*hit.object);
+    if (own.interior && own.interior->fades() && state.inside.contains(own.key)) {
         State faded = state;
-        faded.fade = interiorFade(*medium->interior, hit.t * length(ray.direction));
+        faded.fade = interiorFade(*own.interior, hit.t * length(ray.direction));
         color = shade(ray, hit, faded, counts);
     } else {
         color = shade(ray, hit, state, counts);
@@ -567,6 +584,7 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
         const scene::SurfaceInfo unperturbed{at.geometric, at.viewDir, at.uv};
         const Vec3 n = tex.perturbNormal(layerP, at.geometric, at.uv, &unperturbed);
         out.n = n;
+        if (i == 0) out.topN = n;
         out.perturbed = out.perturbed || tex.normal;
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
@@ -603,24 +621,19 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             out.reflectivity =
                 reflectance(fin.reflection, cosView, crossing->fresnelRatio, pigment);
             out.reflectedSum += out.reflectivity;
-            // Inside a fading interior the part of the reflection that
-            // varies with the angle fades as the light here does, its
-            // minimum does not, unless the finish conserves energy: then
-            // the reflection stays whole (measured with povray 3.7 on a
-            // glass block: reflection {0, 1 fresnel} and {0.2, 0.8} faded,
-            // constant reflection whole; {0.2, 1 fresnel} conserve_energy
-            // whole, incdemo/glasses/glass.pov).
-            const bool fades = !fin.conserveEnergy &&
-                               (state.fade.r != 1 || state.fade.g != 1 || state.fade.b != 1);
-            const RGB shown = fades ? reflectance(fin.reflection, cosView, crossing->fresnelRatio,
-                                                  pigment, state.fade)
-                                    : out.reflectivity;
+            // The reflection is not faded by the interior the ray came
+            // through: povray fades only what crosses (or is totally
+            // reflected at) the surface that ends the faded stretch (fact
+            // from povray 3.7's backend/render/trace.cpp).
             if (!out.reflectivity.isBlack()) {
                 const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-                out.color +=
-                    shown * reflectionExponent(
-                                spawnReflection(at, reflected, out.reflectivity, state, counts),
-                                fin.reflection.exponent);
+                const RGB shown =
+                    out.reflectivity *
+                    reflectionExponent(
+                        spawnReflection(at, reflected, out.reflectivity, state, counts),
+                        fin.reflection.exponent);
+                out.color += shown;
+                if (sameNormal(n, out.topN)) out.topReflection += shown;
             }
         } else {
             out.reflectivity = RGB(0.0);
@@ -683,24 +696,23 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
         color += through * trace({at.p, *bent}, at.eps, child, counts) * state.fade;
         passTransmit(childTransmit);
     } else {
-        // Total internal reflection: the ray is mirrored back inside with
-        // what the reflection term did not already take, so the surface
-        // mirrors 100 % (measured: a prism of transmit 0.5 passes 0.5 * 0.5
-        // of the light whatever its reflection value).
-        const RGB rest = unreflected(layers.reflectedSum);
-        // The mirrored ray keeps the incoming ray's adc weight (measured:
-        // scaling it by `rest` cuts rays povray traces).
-        if (!rest.isBlack()) {
-            // Mirrored as a reflection is, back above the surface when a
-            // perturbed normal sends it through (measured: bumps on a water
-            // surface seen from below, interior/caustic2.pov).
-            const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
-            // Faded on the way here as the refracted ray is (measured: a
-            // fading glass cone with no reflection at all; a glass block
-            // with fade_distance shows its totally reflected edges as dim
-            // as its face), where the reflection term stays whole.
-            color += rest * spawnReflection(at, reflected, RGB(1.0), state, counts) * state.fade;
-        }
+        // Total internal reflection: the ray is mirrored back inside in
+        // full, in place of the reflection of the layers that share the
+        // top layer's normal (povray skips those then; fact from povray
+        // 3.7's backend/render/trace.cpp), so the surface mirrors 100 %
+        // (measured: a prism of transmit 0.5 passes 0.5 * 0.5 of the
+        // light whatever its reflection value). The mirrored ray's adc
+        // weight is the refracted ray's (povray's source).
+        color -= layers.topReflection;
+        // Mirrored as a reflection is, back above the surface when a
+        // perturbed normal sends it through (measured: bumps on a water
+        // surface seen from below, interior/caustic2.pov).
+        const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
+        // Faded on the way here as the refracted ray is (measured: a
+        // fading glass cone with no reflection at all; a glass block with
+        // fade_distance shows its totally reflected edges as dim as its
+        // face).
+        color += spawnReflection(at, reflected, RGB(throughWeight), state, counts) * state.fade;
     }
     return color;
 }

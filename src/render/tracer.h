@@ -189,6 +189,11 @@ class Tracer {
         RGB reflectivity{0.0};
         RGB reflectedSum{0.0};
         Vec3 n;
+        // The top layer's normal, and the reflections of the layers that
+        // share it: povray drops those when the ray is totally reflected
+        // inside (continueThrough).
+        Vec3 topN;
+        RGB topReflection{0.0};
         bool perturbed = false;  // some layer has a normal pattern
     };
     RGB shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,

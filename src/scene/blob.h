@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "scene/hit_tolerance.h"
 #include "scene/shapes.h"
 
 namespace frameray::scene {
@@ -43,6 +44,7 @@ class Blob final : public Shape {
     Blob(std::vector<Component> components, double threshold, bool sturm);
 
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
+    double depthTolerance() const override { return kBlobDepthTolerance; }
     Vec3 normal(const Vec3& p) const override;
     bool inside(const Vec3& p) const override { return density(p) > threshold_; }
     Bounds bounds() const override { return bounds_; }

@@ -5,6 +5,7 @@
 
 #include "scene/blob.h"
 #include "scene/csg.h"
+#include "scene/hit_tolerance.h"
 #include "scene/quadric.h"
 #include "scene/scratch.h"
 
@@ -124,6 +125,15 @@ bool insideAllClips(const Object& obj, const Vec3& p) {
                        [&](const ObjectRef& c) { return c->inside(p); });
 }
 
+// The ray parameter below which `shape` sees no crossing: its own povray
+// depth tolerance, a distance along the world ray (scene/hit_tolerance.h).
+double shapeTolerance(const Shape& shape, const Ray& ray) {
+    const double tolerance = shape.depthTolerance();
+    if (tolerance <= 0) return 0;
+    return scaledTolerance(tolerance, coordinateMagnitude(ray.origin, ray.origin)) /
+           length(ray.direction);
+}
+
 }  // namespace
 
 void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
@@ -141,7 +151,7 @@ void Object::allHits(const Ray& ray, double tMin, double tMax, RayKind kind,
         // Object space without renormalising keeps t the same in every space.
         const Ray local{transform.inversePoint(ray.origin),
                         transform.inverseDirection(ray.direction)};
-        shape->allHits(local, tMin, tMax, ts);
+        shape->allHits(local, std::max(tMin, shapeTolerance(*shape, ray)), tMax, ts);
         for (const double t : ts) hits.push_back({t, this});
     } else {
         csg::allHits(*this, ray, tMin, tMax, kind, hits, inverted != inverse);
@@ -161,7 +171,8 @@ bool Object::firstHit(const Ray& ray, double tMin, double tMax, RayKind kind,
         const Ray local{transform.inversePoint(ray.origin),
                         transform.inverseDirection(ray.direction)};
         double t;
-        if (!shape->firstHit(local, tMin, tMax, t)) return false;
+        if (!shape->firstHit(local, std::max(tMin, shapeTolerance(*shape, ray)), tMax, t))
+            return false;
         hit = {t, this};
         return true;
     }

@@ -24,6 +24,10 @@ class Shape {
     virtual bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const;
     // Outward unit normal at a point on the surface.
     virtual Vec3 normal(const Vec3& p) const = 0;
+    // povray's depth tolerance of this kind of shape, in world units along
+    // a unit ray: crossings nearer the ray's origin are not seen (0: only
+    // the tracer's common minimum applies). See scene/hit_tolerance.h.
+    virtual double depthTolerance() const { return 0; }
     // The unit world-space normal at object-space point p of this shape
     // placed by `toWorld`. Shapes that blend normals after the transform
     // (povray's smooth height fields) override it.
