@@ -42,8 +42,8 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     const Tracer tracer(world, settings.quality, radiosity.get());
     const CameraRays camera(world.scene().camera, settings.width, settings.height);
     if (radiosity)
-        pretraceRadiosity(tracer, camera, *radiosity, window, settings.width, stats.rays,
-                          stats.radiosity);
+        pretraceRadiosity(tracer, camera, *radiosity, window, settings.width, settings.height,
+                          stats.rays, stats.radiosity);
     tbb::combinable<RadiosityCounts> radiosityCounts;
     // Each final-pass block's own samples, kept by block for the cache.
     std::vector<std::vector<RadiositySample>> blockSamples;

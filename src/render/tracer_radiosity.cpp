@@ -82,8 +82,13 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     RGB sum(0.0);
     double inverseDistances = 0;
     double qualitySum = 0;
-    double nearest = scene::kInfinity;
-    Vec3 toNearest(0, 0, 1);
+    // Where no ray meets a surface, povray 3.7 keeps its "nothing found"
+    // distance (2e10) and no direction toward the nearest surface (a zero
+    // vector), so such a sample's reach is not stretched along any
+    // direction.
+    constexpr double kNothingNear = 2e10;
+    double nearest = kNothingNear;
+    Vec3 toNearest(0, 0, 0);
     for (int i = 0; i < count; ++i) {
         const Vec3 d =
             Radiosity::direction((first + static_cast<size_t>(i)) % radiosity_->poolSize());

@@ -247,11 +247,12 @@ TEST(Radiosity, LookupsWeighSamplesByTheirQuality) {
 namespace {
 
 render::FrameImage renderText(const std::string& text, int threads, render::FrameStats& stats,
-                              render::FrameSettings settings = {}) {
+                              render::FrameSettings settings = {}, int width = 48,
+                              int height = 36) {
     test_support::ParsedScene parsed(text);
     render::World world(parsed.scene);
-    settings.width = 48;
-    settings.height = 36;
+    settings.width = width;
+    settings.height = height;
     settings.blockSize = 8;
     tbb::task_arena arena(threads);
     render::FrameImage image;
@@ -312,6 +313,27 @@ plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
     EXPECT_EQ(pretrace, 9);  // 3 x 3 spots
     EXPECT_LT(lowest, -2.05);
     EXPECT_GT(lowest, -2.35);
+}
+
+// povray 3.7 sizes the pretrace cells from the image's longer side: a
+// portrait image 36 x 48 with pretrace 0.3334 has cells of 16 pixels, 3 x 3
+// spots (from the width, 12 pixels: 3 x 4).
+TEST(Radiosity, PretraceCellsFollowTheLongerSide) {
+    const std::string scene = R"(#version 3.7;
+global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
+  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
+camera { orthographic location <0, 0, -10> direction z right x * 3.6 up y * 4.8 }
+sky_sphere { pigment { rgb 1 } }
+plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+)";
+    render::FrameSettings keep;
+    keep.keepRadiosity = true;
+    render::FrameStats stats;
+    const render::FrameImage image = renderText(scene, 1, stats, keep, 36, 48);
+    int pretrace = 0;
+    for (const render::RadiositySample& s : image.radiosityCache)
+        if (s.pass != 0) ++pretrace;
+    EXPECT_EQ(pretrace, 9);
 }
 
 TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
