@@ -164,6 +164,14 @@ RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, i
     if (weight < 0.25) bound += 0.25 - weight;
     bound *= radiosity_.depth(depth).boundFactor;
     const bool smooth = !pretrace_ && depth == 0;
+    if (lookups_.empty) {
+        lookups_ = {p, p, false};
+    } else {
+        lookups_.lo = Vec3(std::min(lookups_.lo.x, p.x), std::min(lookups_.lo.y, p.y),
+                           std::min(lookups_.lo.z, p.z));
+        lookups_.hi = Vec3(std::max(lookups_.hi.x, p.x), std::max(lookups_.hi.y, p.y),
+                           std::max(lookups_.hi.z, p.z));
+    }
     Lookup out;
     RGB sum(0.0);
     auto consider = [&](const RadiositySample& s, const RadiosityCell& cell) {
@@ -197,6 +205,7 @@ bool RadiosityTask::wantsSample(const Lookup& found, int depth) const {
 size_t RadiosityTask::takeDirections(int depth, size_t count) {
     if (cursor_.size() <= static_cast<size_t>(depth))
         cursor_.resize(static_cast<size_t>(depth) + 1);
+    gathered_ = true;
     const size_t start = cursor_[static_cast<size_t>(depth)];
     cursor_[static_cast<size_t>(depth)] = (start + count) % radiosity_.poolSize();
     return start;

@@ -160,6 +160,18 @@ class RadiosityTask {
     // Where in the pool the next sample `depth` deep starts, taking
     // `count` directions (each depth takes its own turn through the pool).
     size_t takeDirections(int depth, size_t count);
+    // Where each depth's turn through the pool stands, and whether this
+    // task took any directions (gathered any sample, kept or not).
+    const std::vector<size_t>& cursor() const { return cursor_; }
+    void setCursor(std::vector<size_t> cursor) { cursor_ = std::move(cursor); }
+    bool gathered() const { return gathered_; }
+    // The box around every point this task looked the light up at (any
+    // depth); empty() when it looked nothing up.
+    struct Box {
+        Vec3 lo, hi;
+        bool empty = true;
+    };
+    const Box& lookups() const { return lookups_; }
 
     RadiosityCounts counts;
     // Top-level lookups since the counters were last reset, and the
@@ -177,6 +189,8 @@ class RadiosityTask {
     std::vector<RadiositySample> own_;  // samples of a final-pass block
     std::vector<RadiosityCell> ownCells_;
     std::vector<size_t> cursor_;  // per depth: where in the pool the next sample starts
+    bool gathered_ = false;
+    mutable Box lookups_;
 };
 
 }  // namespace frameray::render
