@@ -69,10 +69,19 @@ Vec3 Radiosity::direction(size_t index) {
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r2))};
 }
 
-void Radiosity::sampleFrame(const Vec3& n, Vec3& u, Vec3& v) {
+void Radiosity::sampleFrame(const Vec3& n, Vec3& u, Vec3& v, Vec3& w) {
+    constexpr double kNearY = 0.001;
+    if (n.y > 1 - kNearY || n.y < -1 + kNearY) {
+        const double s = n.y > 0 ? 1.0 : -1.0;
+        u = Vec3(s, 0, 0);
+        v = Vec3(0, 0, s);
+        w = Vec3(0, s, 0);
+        return;
+    }
     const Vec3 axis = std::fabs(n.z) >= 0.9 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
     u = normalize(cross(n, axis));
     v = cross(u, n);
+    w = n;
 }
 
 RadiosityCell Radiosity::cellOf(const RadiositySample& sample) const {

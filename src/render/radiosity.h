@@ -106,8 +106,10 @@ class Radiosity {
     static Vec3 direction(size_t index);
     // The frame povray 3.7 turns pool entries into for unit normal n
     // (measured as above): u = n x z normalized, or n x y where |n.z| is
-    // 0.9 or more; v = u x n. World direction = u*x + v*y + n*z.
-    static void sampleFrame(const Vec3& n, Vec3& u, Vec3& v);
+    // 0.9 or more; v = u x n; w = n. World direction = u*x + v*y + w*z.
+    // Within 0.001 of +y or -y (n.y beyond 1 - 0.001) povray takes the
+    // entries as they are, (x, z, y), or negated (its source).
+    static void sampleFrame(const Vec3& n, Vec3& u, Vec3& v, Vec3& w);
     const std::vector<RadiositySample>& samples() const { return samples_; }
     const std::vector<RadiosityCell>& cells() const { return cells_; }
     const RadiosityOctree& octree() const { return octree_; }
