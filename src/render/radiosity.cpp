@@ -69,10 +69,19 @@ Vec3 Radiosity::direction(size_t index) {
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r2))};
 }
 
-void Radiosity::sampleFrame(const Vec3& n, Vec3& u, Vec3& v) {
+void Radiosity::sampleFrame(const Vec3& n, Vec3& u, Vec3& v, Vec3& w) {
+    constexpr double kNearY = 0.001;
+    if (n.y > 1 - kNearY || n.y < -1 + kNearY) {
+        const double s = n.y > 0 ? 1.0 : -1.0;
+        u = Vec3(s, 0, 0);
+        v = Vec3(0, 0, s);
+        w = Vec3(0, s, 0);
+        return;
+    }
     const Vec3 axis = std::fabs(n.z) >= 0.9 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
     u = normalize(cross(n, axis));
     v = cross(u, n);
+    w = n;
 }
 
 RadiosityCell Radiosity::cellOf(const RadiositySample& sample) const {
@@ -164,6 +173,14 @@ RadiosityTask::Lookup RadiosityTask::interpolate(const Vec3& p, const Vec3& n, i
     if (weight < 0.25) bound += 0.25 - weight;
     bound *= radiosity_.depth(depth).boundFactor;
     const bool smooth = !pretrace_ && depth == 0;
+    if (lookups_.empty) {
+        lookups_ = {p, p, false};
+    } else {
+        lookups_.lo = Vec3(std::min(lookups_.lo.x, p.x), std::min(lookups_.lo.y, p.y),
+                           std::min(lookups_.lo.z, p.z));
+        lookups_.hi = Vec3(std::max(lookups_.hi.x, p.x), std::max(lookups_.hi.y, p.y),
+                           std::max(lookups_.hi.z, p.z));
+    }
     Lookup out;
     RGB sum(0.0);
     auto consider = [&](const RadiositySample& s, const RadiosityCell& cell) {
@@ -197,6 +214,7 @@ bool RadiosityTask::wantsSample(const Lookup& found, int depth) const {
 size_t RadiosityTask::takeDirections(int depth, size_t count) {
     if (cursor_.size() <= static_cast<size_t>(depth))
         cursor_.resize(static_cast<size_t>(depth) + 1);
+    gathered_ = true;
     const size_t start = cursor_[static_cast<size_t>(depth)];
     cursor_[static_cast<size_t>(depth)] = (start + count) % radiosity_.poolSize();
     return start;

@@ -106,8 +106,10 @@ class Radiosity {
     static Vec3 direction(size_t index);
     // The frame povray 3.7 turns pool entries into for unit normal n
     // (measured as above): u = n x z normalized, or n x y where |n.z| is
-    // 0.9 or more; v = u x n. World direction = u*x + v*y + n*z.
-    static void sampleFrame(const Vec3& n, Vec3& u, Vec3& v);
+    // 0.9 or more; v = u x n; w = n. World direction = u*x + v*y + w*z.
+    // Within 0.001 of +y or -y (n.y beyond 1 - 0.001) povray takes the
+    // entries as they are, (x, z, y), or negated (its source).
+    static void sampleFrame(const Vec3& n, Vec3& u, Vec3& v, Vec3& w);
     const std::vector<RadiositySample>& samples() const { return samples_; }
     const std::vector<RadiosityCell>& cells() const { return cells_; }
     const RadiosityOctree& octree() const { return octree_; }
@@ -160,6 +162,18 @@ class RadiosityTask {
     // Where in the pool the next sample `depth` deep starts, taking
     // `count` directions (each depth takes its own turn through the pool).
     size_t takeDirections(int depth, size_t count);
+    // Where each depth's turn through the pool stands, and whether this
+    // task took any directions (gathered any sample, kept or not).
+    const std::vector<size_t>& cursor() const { return cursor_; }
+    void setCursor(std::vector<size_t> cursor) { cursor_ = std::move(cursor); }
+    bool gathered() const { return gathered_; }
+    // The box around every point this task looked the light up at (any
+    // depth); empty() when it looked nothing up.
+    struct Box {
+        Vec3 lo, hi;
+        bool empty = true;
+    };
+    const Box& lookups() const { return lookups_; }
 
     RadiosityCounts counts;
     // Top-level lookups since the counters were last reset, and the
@@ -177,6 +191,8 @@ class RadiosityTask {
     std::vector<RadiositySample> own_;  // samples of a final-pass block
     std::vector<RadiosityCell> ownCells_;
     std::vector<size_t> cursor_;  // per depth: where in the pool the next sample starts
+    bool gathered_ = false;
+    mutable Box lookups_;
 };
 
 }  // namespace frameray::render

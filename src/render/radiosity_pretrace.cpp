@@ -6,12 +6,12 @@
 #include <utility>
 #include <vector>
 
-#include "util/sample_random.h"
+#include "render/pretrace_jitter.h"
 
 namespace frameray::render {
 
 void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity& radiosity,
-                       const PixelBlock& window, int width, RayCounts& rays,
+                       const PixelBlock& window, int width, int height, RayCounts& rays,
                        RadiosityCounts& counts) {
     const scene::RadiositySettings& set = radiosity.settings();
     RadiosityTask task(radiosity, true, true);
@@ -20,7 +20,7 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
     // Each pass goes tile by tile (povray's 32-pixel render blocks, in
     // rows). Within a tile the spots lie on a grid of the pass's step,
     // aligned across the image, each at its cell's centre moved by up to a
-    // pixel (hashed from the pass and the spot), even where that lies past
+    // pixel (povray's jitter cycle, render/pretrace_jitter.h), even where that lies past
     // the image's edge. At +WT1 povray lets every
     // lookup see every sample gathered so far, whichever tile gathered it.
     //
@@ -38,12 +38,16 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
         std::deque<std::pair<int, int>> open{{0, 0}};  // parts still refining
     };
     std::vector<TileState> tiles(static_cast<size_t>(tilesX * tilesY));
+    // Block sizes are fractions of the image's longer side (povray 3.7).
+    const double longer = std::max(width, height);
+    const double startSize = longer * set.pretraceStart;
+    const double endSize = std::max(1.0, longer * set.pretraceEnd);
     std::vector<double> sizes;
-    for (double fraction = set.pretraceStart;; fraction *= 0.5) {
-        const double step = std::max(1.0, std::max(fraction, set.pretraceEnd) * width);
-        sizes.push_back(step);
-        if (fraction <= set.pretraceEnd * (1 + 1e-9) || step <= 1.0) break;
+    for (double size = startSize;; size *= 0.5) {
+        sizes.push_back(std::max(size, endSize));
+        if (size <= endSize * (1 + 1e-9)) break;
     }
+    const PretraceJitter jitterCycle;
     for (size_t pass = 0; pass < sizes.size(); ++pass) {
         const double step = sizes[pass];
         const double nextStep = pass + 1 < sizes.size() ? sizes[pass + 1] : step;
@@ -53,6 +57,7 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
         for (int tile = 0; tile < tilesX * tilesY; ++tile) {
             TileState& state = tiles[static_cast<size_t>(tile)];
             if (state.open.empty()) continue;
+            PretraceJitter::Walk walk(jitterCycle, static_cast<int>(pass) + 1, tile);
             const int tx0 = window.x0 + (tile % tilesX) * kTile;
             const int ty0 = window.y0 + (tile / tilesX) * kTile;
             const int tw = std::min(tx0 + kTile, window.x1) - tx0;
@@ -81,13 +86,16 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
                     if (gy < y0) continue;
                     for (double gx = startX; gx < x1; gx += step) {
                         if (gx < x0) continue;
-                        SampleRandom r(gx, gy, static_cast<std::uint64_t>(pass) + 0x5ad105ULL);
+                        // Each spot takes the walk's next two numbers, the
+                        // first for y, the second for x (povray 3.7 at +WT1).
                         // Not kept within the image: povray's spots of the last
                         // row and column lie at their cells' centres, beyond
                         // the edge when the cell reaches past it (measured from
                         // its cache file).
-                        const double x = gx + offset + jitter * (2 * r.next() - 1) + 0.5;
-                        const double y = gy + offset + jitter * (2 * r.next() - 1) + 0.5;
+                        const double jy = walk.next();
+                        const double jx = walk.next();
+                        const double x = gx + offset + jitter * jx + 0.5;
+                        const double y = gy + offset + jitter * jy + 0.5;
                         ++traced;
                         // A mesh_camera's pixel has its own rays (none, one
                         // or several); every other projection one.

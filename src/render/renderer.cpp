@@ -5,9 +5,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 #include "render/camera_rays.h"
 #include "render/focal_blur.h"
+#include "render/radiosity_final_pass.h"
 #include "render/radiosity_pretrace.h"
 
 namespace frameray::render {
@@ -42,110 +45,104 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
     const Tracer tracer(world, settings.quality, radiosity.get());
     const CameraRays camera(world.scene().camera, settings.width, settings.height);
     if (radiosity)
-        pretraceRadiosity(tracer, camera, *radiosity, window, settings.width, stats.rays,
-                          stats.radiosity);
-    tbb::combinable<RadiosityCounts> radiosityCounts;
-    // Each final-pass block's own samples, kept by block for the cache.
-    std::vector<std::vector<RadiositySample>> blockSamples;
-    if (radiosity && settings.keepRadiosity)
-        blockSamples.resize(static_cast<size_t>(blocksX) * blocksY);
+        pretraceRadiosity(tracer, camera, *radiosity, window, settings.width, settings.height,
+                          stats.rays, stats.radiosity);
     std::optional<FocalBlurSampler> focalBlur;
     if (camera.camera().blur.enabled()) focalBlur.emplace(camera);
     tbb::combinable<RayCounts> rayCounts;
     tbb::combinable<AntialiasCounts> aaCounts;
 
+    // Renders block `index` into the image, its radiosity lookups and new
+    // samples going through `blockRadiosity` (none without radiosity).
+    const auto renderBlock = [&](int index, RadiosityTask* blockRadiosity, RayCounts& rays,
+                                 AntialiasCounts& aa) {
+        const SampleFunction sample = [&](double x, double y) {
+            // (x, y) = (i, j) is the centre of pixel column i, row j.
+            if (focalBlur) {
+                // Several rays per sample, each at a random spot of the pixel.
+                if (settings.alpha)
+                    return focalBlur->sample(
+                        x + 0.5, y + 0.5,
+                        std::function<PixelSample(const scene::Ray&)>([&](const scene::Ray& r) {
+                            double transmit = 0;
+                            const RGB c = tracer.traceCamera(r, rays, &transmit, blockRadiosity);
+                            return PixelSample{c, transmit};
+                        }));
+                return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
+                    return tracer.traceCamera(r, rays, nullptr, blockRadiosity);
+                });
+            }
+            if (std::vector<scene::Ray> meshRays; camera.meshRays(x + 0.5, y + 0.5, meshRays)) {
+                // mesh_camera: the mean of the pixel's rays; black
+                // where it has none (povray).
+                PixelSample mean{RGB{}, 0.0};
+                if (meshRays.empty()) return mean;
+                for (const scene::Ray& r : meshRays) {
+                    double transmit = 0;
+                    mean.rgb += tracer.traceCamera(r, rays, settings.alpha ? &transmit : nullptr,
+                                                   blockRadiosity);
+                    mean.transmit += transmit;
+                }
+                const double n = static_cast<double>(meshRays.size());
+                return PixelSample{mean.rgb * (1.0 / n), mean.transmit / n};
+            }
+            const std::optional<scene::Ray> ray = camera.generate(x + 0.5, y + 0.5);
+            // Where the projection traces nothing povray writes transparent black.
+            if (!ray) return PixelSample{RGB{}, 1.0};
+            if (settings.alpha) {
+                double transmit = 0;
+                const RGB c = tracer.traceCamera(*ray, rays, &transmit, blockRadiosity);
+                return PixelSample{c, transmit};
+            }
+            return PixelSample{tracer.traceCamera(*ray, rays, nullptr, blockRadiosity), 0.0};
+        };
+        const int bx = window.x0 + (index % blocksX) * blockSize;
+        const int by = window.y0 + (index / blocksX) * blockSize;
+        const PixelBlock block{bx, by, std::min(bx + blockSize, window.x1),
+                               std::min(by + blockSize, window.y1)};
+        const std::vector<PixelSample> pixels = sampleBlock(block, settings.antialias, sample, aa);
+        size_t i = 0;
+        for (int y = block.y0; y < block.y1; ++y)
+            for (int x = block.x0; x < block.x1; ++x, ++i) {
+                const RGB& c = pixels[i].rgb;
+                float* out = &image.rgb[(static_cast<size_t>(y) * settings.width + x) * 3];
+                out[0] = static_cast<float>(std::clamp(c.r, 0.0, 1.0));
+                out[1] = static_cast<float>(std::clamp(c.g, 0.0, 1.0));
+                out[2] = static_cast<float>(std::clamp(c.b, 0.0, 1.0));
+                if (settings.alpha)
+                    image.alpha[static_cast<size_t>(y) * settings.width + x] =
+                        static_cast<float>(std::clamp(1.0 - pixels[i].transmit, 0.0, 1.0));
+            }
+    };
+
+    // The final pass: every block at once, then settled in block order as
+    // povray's +WT1 render makes it (render/radiosity_final_pass.h).
+    const int blockCount = blocksX * blocksY;
+    std::vector<std::optional<RadiosityTask>> tasks(static_cast<size_t>(blockCount));
     // One block per task, handed out in order: blocks differ widely in cost
     // (glass, area-light penumbrae), and larger chunks left one thread
     // finishing a long tail while the other waited (measured: ~10 % of a
     // still frame's time).
     tbb::parallel_for(
-        tbb::blocked_range<int>(0, blocksX * blocksY, 1),
+        tbb::blocked_range<int>(0, blockCount, 1),
         [&](const tbb::blocked_range<int>& range) {
-            RayCounts& rays = rayCounts.local();
-            AntialiasCounts& aa = aaCounts.local();
-            RadiosityTask* blockRadiosity = nullptr;  // this block's access to the cache
-            const SampleFunction sample = [&](double x, double y) {
-                // (x, y) = (i, j) is the centre of pixel column i, row j.
-                if (focalBlur) {
-                    // Several rays per sample, each at a random spot of the pixel.
-                    if (settings.alpha)
-                        return focalBlur->sample(
-                            x + 0.5, y + 0.5,
-                            std::function<PixelSample(const scene::Ray&)>([&](const scene::Ray& r) {
-                                double transmit = 0;
-                                const RGB c =
-                                    tracer.traceCamera(r, rays, &transmit, blockRadiosity);
-                                return PixelSample{c, transmit};
-                            }));
-                    return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
-                        return tracer.traceCamera(r, rays, nullptr, blockRadiosity);
-                    });
-                }
-                if (std::vector<scene::Ray> meshRays; camera.meshRays(x + 0.5, y + 0.5, meshRays)) {
-                    // mesh_camera: the mean of the pixel's rays; black
-                    // where it has none (povray).
-                    PixelSample mean{RGB{}, 0.0};
-                    if (meshRays.empty()) return mean;
-                    for (const scene::Ray& r : meshRays) {
-                        double transmit = 0;
-                        mean.rgb += tracer.traceCamera(
-                            r, rays, settings.alpha ? &transmit : nullptr, blockRadiosity);
-                        mean.transmit += transmit;
-                    }
-                    const double n = static_cast<double>(meshRays.size());
-                    return PixelSample{mean.rgb * (1.0 / n), mean.transmit / n};
-                }
-                const std::optional<scene::Ray> ray = camera.generate(x + 0.5, y + 0.5);
-                // Where the projection traces nothing povray writes transparent black.
-                if (!ray) return PixelSample{RGB{}, 1.0};
-                if (settings.alpha) {
-                    double transmit = 0;
-                    const RGB c = tracer.traceCamera(*ray, rays, &transmit, blockRadiosity);
-                    return PixelSample{c, transmit};
-                }
-                return PixelSample{tracer.traceCamera(*ray, rays, nullptr, blockRadiosity), 0.0};
-            };
             for (int index = range.begin(); index < range.end(); ++index) {
-                const int bx = window.x0 + (index % blocksX) * blockSize;
-                const int by = window.y0 + (index / blocksX) * blockSize;
-                const PixelBlock block{bx, by, std::min(bx + blockSize, window.x1),
-                                       std::min(by + blockSize, window.y1)};
-                // A block sees the pretrace's samples and its own, never
-                // another block's: the image does not depend on the threads.
-                std::optional<RadiosityTask> task;
+                std::optional<RadiosityTask>& task = tasks[static_cast<size_t>(index)];
                 if (radiosity) task.emplace(*radiosity, false, false);
-                blockRadiosity = task ? &*task : nullptr;
-                const std::vector<PixelSample> pixels =
-                    sampleBlock(block, settings.antialias, sample, aa);
-                size_t i = 0;
-                for (int y = block.y0; y < block.y1; ++y)
-                    for (int x = block.x0; x < block.x1; ++x, ++i) {
-                        const RGB& c = pixels[i].rgb;
-                        float* out = &image.rgb[(static_cast<size_t>(y) * settings.width + x) * 3];
-                        out[0] = static_cast<float>(std::clamp(c.r, 0.0, 1.0));
-                        out[1] = static_cast<float>(std::clamp(c.g, 0.0, 1.0));
-                        out[2] = static_cast<float>(std::clamp(c.b, 0.0, 1.0));
-                        if (settings.alpha)
-                            image.alpha[static_cast<size_t>(y) * settings.width + x] =
-                                static_cast<float>(std::clamp(1.0 - pixels[i].transmit, 0.0, 1.0));
-                    }
-                if (task) radiosityCounts.local() += task->counts;
-                if (task && !blockSamples.empty())
-                    blockSamples[static_cast<size_t>(index)] = task->takeOwn();
+                renderBlock(index, task ? &*task : nullptr, rayCounts.local(), aaCounts.local());
             }
         },
         tbb::simple_partitioner());
+    if (radiosity)
+        stats.radiosity += settleFinalPass(*radiosity, tasks, [&](int index, RadiosityTask& task) {
+            renderBlock(index, &task, rayCounts.local(), aaCounts.local());
+        });
     rayCounts.combine_each([&](const RayCounts& c) { stats.rays += c; });
-    radiosityCounts.combine_each([&](const RadiosityCounts& c) { stats.radiosity += c; });
     aaCounts.combine_each([&](const AntialiasCounts& c) {
         stats.antialias.supersampledPixels += c.supersampledPixels;
         stats.antialias.samples += c.samples;
     });
-    if (radiosity && settings.keepRadiosity) {
-        image.radiosityCache = radiosity->samples();
-        for (const std::vector<RadiositySample>& own : blockSamples)
-            image.radiosityCache.insert(image.radiosityCache.end(), own.begin(), own.end());
-    }
+    if (radiosity && settings.keepRadiosity) image.radiosityCache = radiosity->samples();
     return image;
 }
 

@@ -62,8 +62,8 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
         count = std::max(1, static_cast<int>(std::ceil(count * obj.radiosityImportance)));
     count = std::min(count, static_cast<int>(radiosity_->poolSize()));
     const size_t first = state.radiosity.task->takeDirections(depth, static_cast<size_t>(count));
-    Vec3 u, v;
-    Radiosity::sampleFrame(n, u, v);
+    Vec3 u, v, w;
+    Radiosity::sampleFrame(n, u, v, w);
     const double pathLength = state.radiosity.length + length(p - state.radiosity.origin);
 
     State child;
@@ -82,12 +82,17 @@ RadiositySample Tracer::gatherSample(const Vec3& p, const Vec3& n, const scene::
     RGB sum(0.0);
     double inverseDistances = 0;
     double qualitySum = 0;
-    double nearest = scene::kInfinity;
-    Vec3 toNearest(0, 0, 1);
+    // Where no ray meets a surface, povray 3.7 keeps its "nothing found"
+    // distance (2e10) and no direction toward the nearest surface (a zero
+    // vector), so such a sample's reach is not stretched along any
+    // direction.
+    constexpr double kNothingNear = 2e10;
+    double nearest = kNothingNear;
+    Vec3 toNearest(0, 0, 0);
     for (int i = 0; i < count; ++i) {
         const Vec3 d =
             Radiosity::direction((first + static_cast<size_t>(i)) % radiosity_->poolSize());
-        const Vec3 dir = u * d.x + v * d.y + n * d.z;
+        const Vec3 dir = u * d.x + v * d.y + w * d.z;
         ++counts.radiosity;
         quality = 1;
         RGB c = trace({p, dir}, eps, child, counts);

@@ -107,10 +107,10 @@ TEST(Radiosity, EverySampleShootsAStratifiedCosineWeightedRun) {
 // (residual 6e-5). Pool entry j is Halton point j+1 (bases 2, 3).
 TEST(Radiosity, SamplesShootPovraysDirections) {
     const auto world = [](const Vec3& n, size_t index) {
-        Vec3 u, v;
-        render::Radiosity::sampleFrame(n, u, v);
+        Vec3 u, v, w;
+        render::Radiosity::sampleFrame(n, u, v, w);
         const Vec3 d = render::Radiosity::direction(index);
-        return u * d.x + v * d.y + n * d.z;
+        return u * d.x + v * d.y + w * d.z;
     };
     const auto near = [](const Vec3& a, const Vec3& b, double tolerance) {
         return length(a - b) < tolerance;
@@ -140,12 +140,18 @@ TEST(Radiosity, SamplesShootPovraysDirections) {
     EXPECT_TRUE(near(mean5(down, 77), Vec3(0.22594, 0.01741, -0.73669), 1e-3));
     // The frame switches from n x z to n x y at |n.z| = 0.9 (measured
     // between 0.89 and 0.9).
-    Vec3 u, v;
-    render::Radiosity::sampleFrame(normalize(Vec3(0.456, 0, 0.89)), u, v);
+    Vec3 u, v, w;
+    render::Radiosity::sampleFrame(normalize(Vec3(0.456, 0, 0.89)), u, v, w);
     EXPECT_TRUE(near(u, Vec3(0, -1, 0), 1e-3));
-    render::Radiosity::sampleFrame(normalize(Vec3(0.4146, 0, 0.91)), u, v);
+    render::Radiosity::sampleFrame(normalize(Vec3(0.4146, 0, 0.91)), u, v, w);
     EXPECT_TRUE(near(u, Vec3(-0.91, 0, 0.4146), 1e-3));
     EXPECT_TRUE(near(v, Vec3(0, 1, 0), 1e-3));
+    // Facing +y or -y (within 0.001) povray takes the entries as they are,
+    // or negated (read from its source; radiosity_down_facing measures it).
+    const Vec3 d = render::Radiosity::direction(5);
+    EXPECT_TRUE(near(world(Vec3(0, 1, 0), 5), Vec3(d.x, d.z, d.y), 1e-12));
+    EXPECT_TRUE(near(world(Vec3(0, -1, 0), 5), Vec3(-d.x, -d.z, -d.y), 1e-12));
+    EXPECT_TRUE(near(world(normalize(Vec3(0.01, -1, 0.02)), 5), Vec3(-d.x, -d.z, -d.y), 1e-12));
 }
 
 // povray 3.7's settings per bounce: rays halve (at least 5), the error
@@ -247,11 +253,12 @@ TEST(Radiosity, LookupsWeighSamplesByTheirQuality) {
 namespace {
 
 render::FrameImage renderText(const std::string& text, int threads, render::FrameStats& stats,
-                              render::FrameSettings settings = {}) {
+                              render::FrameSettings settings = {}, int width = 48,
+                              int height = 36) {
     test_support::ParsedScene parsed(text);
     render::World world(parsed.scene);
-    settings.width = 48;
-    settings.height = 36;
+    settings.width = width;
+    settings.height = height;
     settings.blockSize = 8;
     tbb::task_arena arena(threads);
     render::FrameImage image;
@@ -312,6 +319,27 @@ plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
     EXPECT_EQ(pretrace, 9);  // 3 x 3 spots
     EXPECT_LT(lowest, -2.05);
     EXPECT_GT(lowest, -2.35);
+}
+
+// povray 3.7 sizes the pretrace cells from the image's longer side: a
+// portrait image 36 x 48 with pretrace 0.3334 has cells of 16 pixels, 3 x 3
+// spots (from the width, 12 pixels: 3 x 4).
+TEST(Radiosity, PretraceCellsFollowTheLongerSide) {
+    const std::string scene = R"(#version 3.7;
+global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
+  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
+camera { orthographic location <0, 0, -10> direction z right x * 3.6 up y * 4.8 }
+sky_sphere { pigment { rgb 1 } }
+plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+)";
+    render::FrameSettings keep;
+    keep.keepRadiosity = true;
+    render::FrameStats stats;
+    const render::FrameImage image = renderText(scene, 1, stats, keep, 36, 48);
+    int pretrace = 0;
+    for (const render::RadiositySample& s : image.radiosityCache)
+        if (s.pass != 0) ++pretrace;
+    EXPECT_EQ(pretrace, 9);
 }
 
 TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
