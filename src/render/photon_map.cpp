@@ -1,6 +1,7 @@
 #include "render/photon_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace frameray::render {
@@ -50,7 +51,7 @@ void PhotonMap::build(size_t begin, size_t end) {
     build(mid + 1, end);
 }
 
-void PhotonMap::nearest(const Vec3& p, double maxRadius, int k,
+void PhotonMap::nearest(const Vec3& p, double maxRadius, int k, const Vec3* flatten,
                         std::vector<PhotonNeighbour>& out) const {
     out.clear();
     if (photons_.empty() || k <= 0) return;
@@ -79,7 +80,11 @@ void PhotonMap::nearest(const Vec3& p, double maxRadius, int k,
         const double d = q[axis] - node.position[axis];
         const double dx = q[0] - node.position[0], dy = q[1] - node.position[1],
                      dz = q[2] - node.position[2];
-        const double dist2 = dx * dx + dy * dy + dz * dz;
+        double dist2 = dx * dx + dy * dy + dz * dz;
+        // The flattened distance is never shorter, so the planes still
+        // bound it.
+        if (flatten)
+            dist2 *= 1.0 + 16.0 * std::fabs(flatten->x * dx + flatten->y * dy + flatten->z * dz);
         if (dist2 < limit2) {
             if (out.size() < wanted) {
                 out.push_back({&node, dist2});
