@@ -66,8 +66,16 @@ class PhotonMap {
 
   private:
     void build(size_t begin, size_t end);
+    void pack();
     std::vector<Photon> photons_;
     std::vector<std::uint8_t> axis_;  // split axis of the node at each index
+    // The nodes' positions and split axes packed together (what a search
+    // reads), in the order of photons_.
+    struct Node {
+        float at[3];
+        std::uint8_t axis;
+    };
+    std::vector<Node> nodes_;
 };
 
 }  // namespace frameray::render
