@@ -1,6 +1,7 @@
 #include "render/photon_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace frameray::render {
@@ -8,6 +9,14 @@ namespace frameray::render {
 PhotonMap::PhotonMap(std::vector<Photon> photons) : photons_(std::move(photons)) {
     axis_.assign(photons_.size(), 0);
     build(0, photons_.size());
+    pack();
+}
+
+void PhotonMap::pack() {
+    nodes_.resize(photons_.size());
+    for (size_t i = 0; i < photons_.size(); ++i)
+        nodes_[i] = {{photons_[i].position[0], photons_[i].position[1], photons_[i].position[2]},
+                     axis_[i]};
 }
 
 PhotonMap PhotonMap::fromTree(std::vector<Photon> photons, std::vector<std::uint8_t> axes) {
@@ -18,11 +27,13 @@ PhotonMap PhotonMap::fromTree(std::vector<Photon> photons, std::vector<std::uint
     PhotonMap map;
     map.photons_ = std::move(photons);
     map.axis_ = std::move(axes);
+    map.pack();
     return map;
 }
 
 size_t PhotonMap::memoryBytes() const {
-    return photons_.capacity() * sizeof(Photon) + axis_.capacity();
+    return photons_.capacity() * sizeof(Photon) + axis_.capacity() +
+           nodes_.capacity() * sizeof(Node);
 }
 
 void PhotonMap::build(size_t begin, size_t end) {
@@ -50,7 +61,7 @@ void PhotonMap::build(size_t begin, size_t end) {
     build(mid + 1, end);
 }
 
-void PhotonMap::nearest(const Vec3& p, double maxRadius, int k,
+void PhotonMap::nearest(const Vec3& p, double maxRadius, int k, const Vec3* flatten,
                         std::vector<PhotonNeighbour>& out) const {
     out.clear();
     if (photons_.empty() || k <= 0) return;
@@ -70,30 +81,56 @@ void PhotonMap::nearest(const Vec3& p, double maxRadius, int k,
     int top = 0;
     stack[top++] = {0, photons_.size(), 0.0};
     const size_t wanted = static_cast<size_t>(k);
+    // For a flattened search: each axis' share of the normal, and of the
+    // rest of it.
+    double normalPart[3] = {0, 0, 0}, restPart[3] = {1, 1, 1};
+    if (flatten) {
+        const double n[3] = {flatten->x, flatten->y, flatten->z};
+        for (int a = 0; a < 3; ++a) {
+            normalPart[a] = std::fabs(n[a]);
+            restPart[a] = std::sqrt(std::max(0.0, 1.0 - n[a] * n[a])) + 1e-12;
+        }
+    }
     while (top > 0) {
         const Range r = stack[--top];
         if (r.begin >= r.end || r.plane2 >= limit2) continue;
         const size_t mid = r.begin + (r.end - r.begin) / 2;
-        const Photon& node = photons_[mid];
-        const int axis = axis_[mid];
-        const double d = q[axis] - node.position[axis];
-        const double dx = q[0] - node.position[0], dy = q[1] - node.position[1],
-                     dz = q[2] - node.position[2];
-        const double dist2 = dx * dx + dy * dy + dz * dz;
-        if (dist2 < limit2) {
-            if (out.size() < wanted) {
-                out.push_back({&node, dist2});
-                std::push_heap(out.begin(), out.end(), farther);
-            } else {
-                std::pop_heap(out.begin(), out.end(), farther);
-                out.back() = {&node, dist2};
-                std::push_heap(out.begin(), out.end(), farther);
+        const Node& node = nodes_[mid];
+        const int axis = node.axis;
+        const double d = q[axis] - node.at[axis];
+        // A node as far as the limit along its axis alone is out.
+        if (d * d < limit2) {
+            const double dx = q[0] - node.at[0], dy = q[1] - node.at[1], dz = q[2] - node.at[2];
+            double dist2 = dx * dx + dy * dy + dz * dz;
+            // The flattened distance is never shorter, so the planes still
+            // bound it.
+            if (flatten)
+                dist2 *=
+                    1.0 + 16.0 * std::fabs(flatten->x * dx + flatten->y * dy + flatten->z * dz);
+            if (dist2 < limit2) {
+                const Photon* photon = &photons_[mid];
+                if (out.size() < wanted) {
+                    out.push_back({photon, dist2});
+                    std::push_heap(out.begin(), out.end(), farther);
+                } else {
+                    std::pop_heap(out.begin(), out.end(), farther);
+                    out.back() = {photon, dist2};
+                    std::push_heap(out.begin(), out.end(), farther);
+                }
+                if (out.size() == wanted) limit2 = out.front().distance2;
             }
-            if (out.size() == wanted) limit2 = out.front().distance2;
         }
         // Visit the near side last (it is popped first); the far side only
-        // while the splitting plane is within the search radius.
-        const double plane2 = d * d;
+        // while the splitting plane is within the search radius. A
+        // flattened search bounds the far side better: its photons lie at
+        // least |d| along the axis, so at least |n_a| |d| - |n_rest| R off
+        // the surface's plane (R: the search radius now, which only
+        // shrinks), which stretches their distance as nearest() does.
+        double plane2 = d * d;
+        if (flatten) {
+            const double off = normalPart[axis] * std::fabs(d) - restPart[axis] * std::sqrt(limit2);
+            if (off > 0) plane2 *= 1.0 + 16.0 * off * (1.0 - 1e-12);
+        }
         const Range nearSide =
             d < 0 ? Range{r.begin, mid, r.plane2} : Range{mid + 1, r.end, r.plane2};
         const Range farSide = d < 0 ? Range{mid + 1, r.end, plane2} : Range{r.begin, mid, plane2};

@@ -54,12 +54,28 @@ class PhotonMap {
 
     // The `k` photons nearest to p within `maxRadius`, nearest first, into
     // `out` (cleared first). Fewer when fewer lie that close.
-    void nearest(const Vec3& p, double maxRadius, int k, std::vector<PhotonNeighbour>& out) const;
+    void nearest(const Vec3& p, double maxRadius, int k, std::vector<PhotonNeighbour>& out) const {
+        nearest(p, maxRadius, k, nullptr, out);
+    }
+    // The same with a flattened sphere when `flatten` (a unit normal) is
+    // given, as povray 3.7 gathers at surfaces: a photon's squared
+    // distance d counts as d (1 + 16 |n . (photon - p)|), so photons off
+    // the surface's plane (a wall meeting a floor) count as farther.
+    void nearest(const Vec3& p, double maxRadius, int k, const Vec3* flatten,
+                 std::vector<PhotonNeighbour>& out) const;
 
   private:
     void build(size_t begin, size_t end);
+    void pack();
     std::vector<Photon> photons_;
     std::vector<std::uint8_t> axis_;  // split axis of the node at each index
+    // The nodes' positions and split axes packed together (what a search
+    // reads), in the order of photons_.
+    struct Node {
+        float at[3];
+        std::uint8_t axis;
+    };
+    std::vector<Node> nodes_;
 };
 
 }  // namespace frameray::render

@@ -22,6 +22,8 @@ namespace frameray::render {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// The least cosine at which a stored photon lights a surface.
+constexpr double kPhotonFacing = 1e-10;
 
 // povray 3.7 gathers surface photons and media photons alike (measured
 // on a patch of evenly spaced photons, tests/conformance/scenes/
@@ -33,12 +35,14 @@ constexpr double kPi = std::numbers::pi;
 // it found some but fewer than expand_thresholds' minimum; else the first
 // search stands, even when it found nothing (so a dark ring surrounds a
 // caustic there). Returns the radius of the disc (sphere) the photons in
-// `found` stand for.
-double adaptiveGather(const PhotonMap& map, const Vec3& p, double radius, int gatherMin,
-                      int gatherMax, double expandIncrease, int expandMin,
+// `found` stand for. At a surface (`flatten`, its normal) the searches
+// use povray's flattened distance (PhotonMap::nearest; fact from povray's
+// source, lighting/photons.cpp), media searches a plain sphere.
+double adaptiveGather(const PhotonMap& map, const Vec3& p, const Vec3* flatten, double radius,
+                      int gatherMin, int gatherMax, double expandIncrease, int expandMin,
                       std::vector<PhotonNeighbour>& found) {
     auto gather = [&](double size, std::vector<PhotonNeighbour>& out) {
-        map.nearest(p, size, gatherMax, out);
+        map.nearest(p, size, gatherMax, flatten, out);
         return static_cast<int>(out.size()) == gatherMax ? std::sqrt(out.back().distance2) : size;
     };
     const double first = gather(radius, found);
@@ -55,7 +59,7 @@ double adaptiveGather(const PhotonMap& map, const Vec3& p, double radius, int ga
         const double leastAfter = expandMin / (9.0 * radius * radius);
         if (expandMin > 0 && expandMin <= gatherMax &&
             (leastAfter - before) / before >= expandIncrease) {
-            map.nearest(p, 3.0 * radius, expandMin, wider);
+            map.nearest(p, 3.0 * radius, expandMin, flatten, wider);
             if (static_cast<int>(wider.size()) == expandMin) return first;  // dark
             found.swap(wider);
             return 3.0 * radius;
@@ -237,7 +241,29 @@ double photonEpsilon(const Vec3& p) {
     return std::max({m * 1e-9, scene::scaledTolerance(scene::kMinHitDepth, m), 1e-300});
 }
 
-Photon makePhoton(const Vec3& p, const RGB& power, const Vec3& direction) {
+// povray keeps a photon's direction in two signed bytes (facts from its
+// source, lighting/photons.cpp): towards where the photon came from, its
+// elevation and its azimuth about y, each cut toward zero to a whole
+// multiple of pi/127. Frameray keeps the direction that gives, so that
+// grazing photons (within 1.4 degrees of a surface) and the phase
+// functions of media see what povray's see. Returns the travel direction.
+Vec3 coarseDirection(const Vec3& travel) {
+    const double len = length(travel);
+    if (!(len > 0)) return travel;
+    const Vec3 back = travel * (-1.0 / len);
+    const double flat = std::sqrt(back.x * back.x + back.z * back.z);
+    double elevation = std::acos(std::min(1.0, flat));
+    if (back.y < 0) elevation = -elevation;
+    double azimuth = flat > 0 ? std::acos(std::clamp(back.x / flat, -1.0, 1.0)) : 0.0;
+    if (back.z < 0) azimuth = -azimuth;
+    constexpr double step = kPi / 127.0;
+    const double e = std::trunc(elevation * 127.0 / kPi) * step;
+    const double a = std::trunc(azimuth * 127.0 / kPi) * step;
+    return -Vec3(std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a));
+}
+
+Photon makePhoton(const Vec3& p, const RGB& power, const Vec3& travel) {
+    const Vec3 direction = coarseDirection(travel);
     Photon ph{};
     ph.position[0] = static_cast<float>(p.x);
     ph.position[1] = static_cast<float>(p.y);
@@ -873,14 +899,27 @@ std::unique_ptr<const Photons> Photons::build(const World& world) {
     return built;
 }
 
-RGB Photons::irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const {
+RGB Photons::irradiance(const Vec3& p, const Vec3& n, double brilliance, bool bothSides,
+                        std::vector<PhotonNeighbour>& scratch) const {
     if (surface_.empty() || radius_ <= 0) return RGB(0.0);
-    const double radius = adaptiveGather(surface_, p, radius_, gatherMin_, gatherMax_,
+    const double radius = adaptiveGather(surface_, p, &n, radius_, gatherMin_, gatherMax_,
                                          expandIncrease_, expandMin_, scratch);
     if (scratch.empty() || !(radius > 0)) return RGB(0.0);
     RGB sum(0.0);
-    for (const PhotonNeighbour& f : scratch)
-        if (dot(f.photon->travel(), n) < 0) sum += f.photon->light();
+    for (const PhotonNeighbour& f : scratch) {
+        // The cosine towards where the photon came from (its stored,
+        // coarse direction): a photon lights the side it arrived on only,
+        // both sides of a double_illuminate surface.
+        const double c = -dot(f.photon->travel(), n);
+        if (!bothSides && c < kPhotonFacing) continue;
+        // povray divides the photon's light by that cosine (at least 0.1)
+        // and diffuses it with the cosine to the brilliance: a grazing
+        // photon gives less, and brilliance counts (facts from povray's
+        // source, render/trace.cpp).
+        const double a = std::fabs(c);
+        const double shaded = brilliance == 1.0 ? a : std::pow(a, brilliance);
+        sum += f.photon->light() * (shaded / std::clamp(c, 0.1, 1.0));
+    }
     return sum * (1.0 / (kPi * radius * radius));
 }
 
@@ -888,7 +927,7 @@ RGB Photons::irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbou
 double Photons::mediaPhotons(const Vec3& p, std::vector<PhotonNeighbour>& found) const {
     found.clear();
     if (media_.empty() || !(mediaRadius_ > 0)) return 0;
-    return adaptiveGather(media_, p, mediaRadius_, gatherMin_, gatherMax_, expandIncrease_,
+    return adaptiveGather(media_, p, nullptr, mediaRadius_, gatherMin_, gatherMax_, expandIncrease_,
                           expandMin_, found);
 }
 

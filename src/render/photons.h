@@ -37,13 +37,17 @@
 // within the gather radius, at most `gather` max of them, and their light
 // summed over the disc they cover (radius: the farthest one's distance
 // when max were found, else the gather radius; a box filter, measured on
-// the edge of a mirror's caustic). Only photons arriving on the side
-// facing the viewer count. With fewer than `gather` min the search widens
-// to three times the radius, kept or not by expand_thresholds as povray
-// 3.7 does (adaptiveGather in photons.cpp: a dark ring around an isolated
-// caustic). The radius is povray's `radius`, or estimated from the
-// photons' mean density as povray does it (estimateRadius in
-// photons.cpp).
+// the edge of a mirror's caustic). As povray 3.7 does it (facts from its
+// source): the search is a sphere flattened along the normal; a photon's
+// direction is kept to pi/127 in elevation and azimuth; only photons
+// arriving on the side facing the viewer count (both sides when
+// double_illuminate), each divided by its cosine of arrival (at least
+// 0.1) and diffused with that cosine to the finish's brilliance. With
+// fewer than `gather` min the search widens to three times the radius,
+// kept or not by expand_thresholds as povray 3.7 does (adaptiveGather
+// in photons.cpp: a dark ring around an isolated caustic). The radius is
+// povray's `radius`, or estimated from the photons' mean density as
+// povray does it (estimateRadius in photons.cpp).
 //
 // Media. With `media max_steps [, factor]` a photon that has bounced
 // leaves photons along its path through scattering media (depositInMedia
@@ -104,7 +108,13 @@ class Photons {
     // The light photons bring to point p of a surface whose unit normal n
     // faces the viewer (irradiance: still to be scaled by the diffuse
     // coefficient and the pigment). `scratch` is the caller's buffer.
-    RGB irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const;
+    // With a finish's brilliance (povray diffuses each photon's light with
+    // it) and `bothSides` for double_illuminate surfaces.
+    RGB irradiance(const Vec3& p, const Vec3& n, double brilliance, bool bothSides,
+                   std::vector<PhotonNeighbour>& scratch) const;
+    RGB irradiance(const Vec3& p, const Vec3& n, std::vector<PhotonNeighbour>& scratch) const {
+        return irradiance(p, n, 1.0, false, scratch);
+    }
 
     // The media photons around p of a medium (into `found`, cleared
     // first) and the radius of the sphere they were gathered from: the

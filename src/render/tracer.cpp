@@ -354,10 +354,11 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
     if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
-        // Caustics: the photons' light, diffused like a light's head-on
+        // Caustics: the photons' light, diffused as povray does
         // (render/photons.h).
         thread_local std::vector<PhotonNeighbour> scratch;
-        color += photons->irradiance(p, n, scratch) * lit * (fin.diffuse) * fade;
+        color += photons->irradiance(p, n, fin.brilliance, obj.doubleIlluminate, scratch) * lit *
+                 (fin.diffuse) * fade;
     }
     for (const scene::Light& light : LightsFor(scene_.lights, obj)) {
         const size_t index = lightIndex++;

@@ -601,3 +601,72 @@ TEST(Photons, NoImageAndNoShadowSurfacesAreInvisibleToPhotons) {
     EXPECT_EQ(stored("", "no_shadow"), 0u);
     EXPECT_EQ(stored("", "no_reflection"), all);
 }
+
+// povray 3.7 gathers at a surface in a sphere flattened along the normal
+// (facts from its source, lighting/photons.cpp): a photon's squared
+// distance d counts as d (1 + 16 |n . offset|). Photons on a wall above a
+// floor then count as farther than photons on the floor itself.
+TEST(PhotonMap, FlattenedSearchAlongTheNormal) {
+    std::vector<render::Photon> photons(2);
+    photons[0].position[1] = 0.3f;  // 0.3 above the floor point
+    photons[1].position[0] = 0.5f;  // 0.5 away on the floor
+    const render::PhotonMap map(photons);
+    std::vector<render::PhotonNeighbour> found;
+    map.nearest({0, 0, 0}, 10.0, 1, found);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_FLOAT_EQ(found[0].photon->position[1], 0.3f);
+    const Vec3 up(0, 1, 0);
+    map.nearest({0, 0, 0}, 10.0, 2, &up, found);
+    ASSERT_EQ(found.size(), 2u);
+    EXPECT_FLOAT_EQ(found[0].photon->position[0], 0.5f);
+    EXPECT_NEAR(found[0].distance2, 0.25, 1e-7);
+    EXPECT_NEAR(found[1].distance2, 0.09 * (1 + 16 * 0.3), 1e-6);
+    // Against brute force on scattered photons.
+    const std::vector<render::Photon> many = scatteredPhotons(3000);
+    const render::PhotonMap big(many);
+    const Vec3 n = normalize(Vec3(0.3, 1, -0.2));
+    for (const Vec3& q : {Vec3(0, 0, 0), Vec3(1, 0.5, -1)}) {
+        big.nearest(q, 1.0, 50, &n, found);
+        std::vector<double> all;
+        for (const render::Photon& p : many) {
+            const Vec3 v = p.at() - q;
+            const double d2 = dot(v, v) * (1 + 16 * std::fabs(dot(n, v)));
+            if (d2 < 1.0) all.push_back(d2);
+        }
+        std::sort(all.begin(), all.end());
+        ASSERT_EQ(found.size(), std::min<size_t>(all.size(), 50));
+        for (size_t i = 0; i < found.size(); ++i) EXPECT_NEAR(found[i].distance2, all[i], 1e-9);
+    }
+}
+
+// povray 3.7 lights a surface with each photon as with a light in the
+// photon's direction, after dividing its light by the cosine of arrival
+// (at least 0.1; facts from its source, render/trace.cpp): head-on and
+// steep photons give their light whatever the angle, a photon grazing at
+// cosine c < 0.1 gives c / 0.1 of it, and brilliance b gives c^b / c.
+// Before, every photon on the lit side gave all of its light.
+TEST(Photons, GrazingPhotonsAndBrilliance) {
+    scene::PhotonSettings settings;
+    settings.radius = 0.3;
+    auto patch = [&](double cosine) {
+        std::vector<render::Photon> photons = gridPhotons(10, 0.1, 0.01f);
+        for (render::Photon& p : photons) {
+            p.direction[0] = static_cast<float>(std::sqrt(1 - cosine * cosine));
+            p.direction[1] = static_cast<float>(-cosine);
+        }
+        return render::Photons(render::PhotonMap(photons), render::PhotonMap(), settings,
+                               render::PhotonStats{});
+    };
+    std::vector<render::PhotonNeighbour> scratch;
+    const Vec3 up(0, 1, 0), at(0.45, 0, 0.45);
+    const double headOn = patch(1.0).irradiance(at, up, scratch).r;
+    ASSERT_GT(headOn, 0.0);
+    EXPECT_NEAR(patch(0.5).irradiance(at, up, scratch).r / headOn, 1.0, 1e-5);
+    EXPECT_NEAR(patch(0.05).irradiance(at, up, scratch).r / headOn, 0.5, 1e-5);
+    EXPECT_EQ(patch(0.0).irradiance(at, up, scratch).r, 0.0);
+    EXPECT_NEAR(patch(0.5).irradiance(at, up, 0.25, false, scratch).r / headOn,
+                std::pow(0.5, 0.25) / 0.5, 1e-5);
+    // From below: nothing, unless the surface is double_illuminate.
+    EXPECT_EQ(patch(-0.5).irradiance(at, up, scratch).r, 0.0);
+    EXPECT_NEAR(patch(-0.5).irradiance(at, up, 1.0, true, scratch).r / headOn, 5.0, 1e-5);
+}
