@@ -23,7 +23,10 @@ Per scene: status (rendered, partial, stopped, timeout, crash, povray fails),
 frames, mean match of frameray's frames against povray's (the conformance
 metric: fraction of pixels within 4/255 on every channel, png_compare.py,
 frameray-compare as the fallback; a frame frameray did not write counts 0),
-wall and CPU time of each run, and frameray's first error. Scenes that stop on
+wall and CPU time of each run, and frameray's first error. povray renders with one thread (+WT1, --povray-threads):
+with more, its radiosity, area-light jitter and crand images change from run to
+run and with the thread count, so only its one-thread image is a fixed
+reference (frameray's images do not depend on its thread count). Scenes that stop on
 radiosity, media or photons are grouped under those names. The report
 (DIR/scoreboard-latest.md and a dated copy) has the totals, a histogram of
 first errors (normalised: numbers and quoted names folded), the scenes povray
@@ -146,6 +149,9 @@ def parse_args(argv):
     parser.add_argument("--jobs", type=int, default=1, help="scenes rendered at once")
     parser.add_argument("--threads", type=int, default=0,
                         help="render threads per program (+WTn for both); 0 = their default")
+    parser.add_argument("--povray-threads", type=int, default=1,
+                        help="povray's render threads (+WTn, in its cache key); 0 = its "
+                        "default. One thread is its only deterministic image")
     parser.add_argument("--nice", type=int, default=10, help="nice(1) level of every render")
     parser.add_argument("--timeout", type=float, default=300.0,
                         help="seconds per frameray run before it is killed (at least 3 "
@@ -264,9 +270,16 @@ def fresh_copy(folder, where):
     return where
 
 
+def povray_switches(entry, args):
+    """povray's switches: the entry's, with its thread count first (the INI stays last)."""
+    if args.povray_threads > 0 and args.threads == 0:
+        return [f"+WT{args.povray_threads}"] + entry.switches
+    return entry.switches
+
+
 def povray_key(entry, args, version):
-    text = json.dumps([CACHE_FORMAT, folder_digest(entry.folder), entry.name, entry.switches,
-                       version])
+    text = json.dumps([CACHE_FORMAT, folder_digest(entry.folder), entry.name,
+                       povray_switches(entry, args), version])
     return hashlib.sha256(text.encode()).hexdigest()[:24]
 
 
@@ -284,14 +297,14 @@ def povray_run(entry, args, version, scratch):
     home = scratch / "home"
     home.mkdir(exist_ok=True)
     env = dict(os.environ, HOME=str(home))
-    command = ["nice", "-n", str(args.nice), args.povray] + entry.switches
+    command = ["nice", "-n", str(args.nice), args.povray] + povray_switches(entry, args)
     run = run_renderer(command, copy, env, args.povray_timeout)
     shutil.rmtree(slot, ignore_errors=True)
     (slot / "frames").mkdir(parents=True)
     for name, path in run.frames.items():
         shutil.copyfile(path, slot / "frames" / name)
     run.frames = {n: slot / "frames" / n for n in run.frames}
-    record = {"scene": entry.name, "switches": entry.switches, "povray": version,
+    record = {"scene": entry.name, "switches": povray_switches(entry, args), "povray": version,
               "wall": run.wall, "cpu": run.cpu, "exit_code": run.exit_code,
               "timed_out": run.timed_out, "timeout": args.povray_timeout,
               "frames": sorted(run.frames), "log": run.log}
