@@ -549,6 +549,18 @@ Tracer::Crossing Tracer::crossingOf(const scene::Object& obj, const State& state
     return c;
 }
 
+// A mirrored ray's colour as an iridescent finish tints it: the film seen
+// along the view ray and along the mirrored one (fact from povray 3.7's
+// backend/render/trace.cpp: the reflected and the totally reflected rays are
+// tinted, the photons' not).
+RGB Tracer::iridReflection(const scene::Finish& fin, const SurfacePoint& at, const Vec3& n,
+                           const Vec3& reflected, const State& state, const RGB& color) const {
+    if (fin.irid.amount == 0 || state.kind == scene::RayKind::Photon) return color;
+    return color * iridTint(fin.irid.amount, iridFilmThickness(fin.irid, at.p),
+                            scene_.globals.iridWavelength, std::fabs(dot(at.viewDir, n)),
+                            std::fabs(dot(reflected, n)));
+}
+
 RGB Tracer::spawnReflection(const SurfacePoint& at, const Vec3& reflected, const RGB& weightColor,
                             const State& state, RayCounts& counts) const {
     State child;
@@ -585,7 +597,10 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
         const scene::SurfaceInfo unperturbed{at.geometric, at.viewDir, at.uv};
         const Vec3 n = tex.perturbNormal(layerP, at.geometric, at.uv, &unperturbed);
         out.n = n;
-        if (i == 0) out.topN = n;
+        if (i == 0) {
+            out.topN = n;
+            out.topFinish = &fin;
+        }
         out.perturbed = out.perturbed || tex.normal;
         // slope and aoi see the perturbed normal facing the viewer and the
         // ray (measured: aoi follows a bumps normal).
@@ -628,11 +643,11 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
             // from povray 3.7's backend/render/trace.cpp).
             if (!out.reflectivity.isBlack()) {
                 const Vec3 reflected = mirrorDirection(at.viewDir, n, at.geometric);
+                const RGB seen =
+                    iridReflection(fin, at, n, reflected, state,
+                                   spawnReflection(at, reflected, out.reflectivity, state, counts));
                 const RGB shown =
-                    out.reflectivity *
-                    reflectionExponent(
-                        spawnReflection(at, reflected, out.reflectivity, state, counts),
-                        fin.reflection.exponent);
+                    out.reflectivity * reflectionExponent(seen, fin.reflection.exponent);
                 out.color += shown;
                 if (sameNormal(n, out.topN)) out.topReflection += shown;
             }
@@ -713,7 +728,9 @@ RGB Tracer::continueThrough(const Layers& layers, double throughWeight, const Su
         // fading glass cone with no reflection at all; a glass block with
         // fade_distance shows its totally reflected edges as dim as its
         // face).
-        color += spawnReflection(at, reflected, RGB(throughWeight), state, counts) * state.fade;
+        color += iridReflection(*layers.topFinish, at, n, reflected, state,
+                                spawnReflection(at, reflected, RGB(throughWeight), state, counts)) *
+                 state.fade;
     }
     return color;
 }

@@ -193,6 +193,7 @@ class Tracer {
         // share it: povray drops those when the ray is totally reflected
         // inside (continueThrough).
         Vec3 topN;
+        const scene::Finish* topFinish = nullptr;
         RGB topReflection{0.0};
         bool perturbed = false;  // some layer has a normal pattern
     };
@@ -206,6 +207,8 @@ class Tracer {
                        RayCounts& counts) const;
     RGB spawnReflection(const SurfacePoint& at, const Vec3& reflected, const RGB& weightColor,
                         const State& state, RayCounts& counts) const;
+    RGB iridReflection(const scene::Finish& fin, const SurfacePoint& at, const Vec3& n,
+                       const Vec3& reflected, const State& state, const RGB& color) const;
     RGB continueThrough(const Layers& layers, double throughWeight, const SurfacePoint& at,
                         const Crossing& c, const State& state, RayCounts& counts) const;
     RGB traceDispersed(const Layers& layers, const SurfacePoint& at, const Crossing& c,
