@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <typeinfo>
 
 #include "scene/blob.h"
 #include "scene/csg.h"
@@ -39,8 +40,8 @@ std::shared_ptr<const Object> transformedCopy(const ObjectRef& obj, const Transf
     return copy;
 }
 
-Bounds intersectAll(Bounds b, const std::vector<ObjectRef>& objects,
-                    Bounds (Object::*bounds)() const) {
+template <typename List>
+Bounds intersectAll(Bounds b, const List& objects, Bounds (Object::*bounds)() const) {
     for (const ObjectRef& o : objects) b = b.intersected(((*o).*bounds)());
     return b;
 }
@@ -53,7 +54,12 @@ void Object::transformBy(const Transform& t) {
         if (auto placed = shape->placedBy(transform)) shape = std::move(placed);
     }
     for (ObjectRef& child : children) child = transformedCopy(child, t);
-    for (ObjectRef& clip : clippedBy) clip = transformedCopy(clip, t);
+    if (!clippedBy.empty()) {
+        std::vector<ObjectRef> moved;
+        moved.reserve(clippedBy.size());
+        for (const ObjectRef& clip : clippedBy) moved.push_back(transformedCopy(clip, t));
+        clippedBy = std::move(moved);
+    }
     for (ObjectRef& bound : boundedBy) bound = transformedCopy(bound, t);
     if (interiorTexture) {
         auto moved = std::make_shared<Texture>(*interiorTexture);
@@ -111,10 +117,9 @@ bool passesBoundedBy(const Object& obj, const Ray& ray, double tMin) {
 // reaches down without end) cuts the object at the box. An inverted
 // clip's inside is outside its box: never a bound here.
 bool meetsClipBoxes(const Object& obj, const Ray& ray, double tMin, double tMax) {
-    Bounds box = Bounds::infinite();
-    for (const ObjectRef& clip : obj.clippedBy)
-        if (!clip->inverse) box = box.intersected(clip->surfaceBounds());
-    if (obj.shape && !obj.inverse && dynamic_cast<const Quadric*>(obj.shape.get()))
+    Bounds box = obj.clippedBy.box();
+    // Quadric is final: its type alone answers what a dynamic_cast would.
+    if (obj.shape && !obj.inverse && typeid(*obj.shape) == typeid(Quadric))
         box = obj.insideBoundsWithin(box);
     double from = tMin, to = tMax;
     return box.padded().clip(ray, from, to);

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "scene/clip_list.h"
 #include "scene/interior.h"
 #include "scene/lights.h"
 #include "scene/photon_settings.h"
@@ -87,7 +88,7 @@ struct Object {
     const void* regionKey = nullptr;
     bool inverse = false;
     // Only the parts of the surface inside every clipping object remain.
-    std::vector<ObjectRef> clippedBy;
+    ClipList clippedBy;
     // A camera ray that neither hits every bounding object nor starts
     // inside it skips this object (povray; shadow rays ignore the bound).
     std::vector<ObjectRef> boundedBy;

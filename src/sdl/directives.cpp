@@ -391,7 +391,7 @@ void Reader::directiveElse(const Token& at) {
     for (Keyword found; (found = skipBranch(true, false)) != Keyword::kw_end;) {
         if (elseSeen) {
             const Cursor& c = cursors_.back();
-            warn(c.file->tokens[c.pos - 1],
+            warn(window_.at(c.file, c.pos - 1),
                  fmt::format("#{} after the #else of the #if at line {} is never used",
                              keywordName(found), blocks_.back().loc.line));
         }
@@ -590,8 +590,8 @@ Value Reader::bareIdentifierArgument() {
     // A lone identifier (followed by ',' or ')') is passed by reference.
     const Cursor& c = cursors_.back();
     const Token& t = rawPeek();
-    if (!t.isIdentifier() || c.pos + 1 >= c.file->tokens.size()) return {};
-    const Token& after = c.file->tokens[c.pos + 1];
+    if (!t.isIdentifier() || c.pos + 1 >= c.file->size()) return {};
+    const Token& after = window_.at(c.file, c.pos + 1);
     if (!after.is(Sym::Comma) && !after.is(Sym::RParen)) return {};
     const std::string name(t.text);
     // Find the scope holding it (following an alias of an outer macro).
@@ -616,13 +616,13 @@ Keyword Reader::skipBranch(bool stopAtElse, bool stopAtCase) {
     Cursor& c = cursors_.back();
     int depth = 0;
     for (;;) {
-        const Token& t = c.file->tokens[c.pos];
+        const Token& t = window_.at(c.file, c.pos);
         if (t.kind == TokenKind::End)
             throw SdlError(start.file ? start : c.file->locOf(t),
                            "missing #end: the file ends inside this directive");
         ++c.pos;
         if (!t.is(Sym::Hash)) continue;
-        const Token& w = c.file->tokens[c.pos];
+        const Token& w = window_.at(c.file, c.pos);
         if (w.kind != TokenKind::Word) continue;
         switch (w.kw) {
             case Keyword::kw_if:

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdlib>
 
@@ -68,47 +70,86 @@ constexpr SymbolSpelling kSymbols[] = {
 
 class Lexer {
   public:
-    explicit Lexer(std::shared_ptr<const SourceFile> source)
-        : out_(std::make_shared<TokenizedFile>()) {
-        out_->source = std::move(source);
-        text_ = out_->source->text();
-    }
+    explicit Lexer(const SourceFile* source) : source_(source), text_(source->text()) {}
 
-    std::shared_ptr<const TokenizedFile> run() {
+    // The whole file.
+    std::shared_ptr<const TokenizedFile> run(std::shared_ptr<const SourceFile> file,
+                                             size_t compactFrom) {
+        auto out = std::make_shared<TokenizedFile>();
+        out->source = std::move(file);
+        strings_ = &out->decodedStrings;
         // A UTF-8 byte order mark at the very start is not part of the scene.
         if (text_.substr(0, 3) == "\xEF\xBB\xBF") advance(3);
-        // Big data files (exported meshes) hold about one token per 3-4
-        // bytes (a minus sign is a token of its own). Reserving for one per 2
-        // avoids re-copying a vector of hundreds of MB while it grows; pages
-        // never written cost nothing.
-        out_->tokens.reserve(text_.size() / 2 + 16);
-        for (;;) {
-            skipSpaceAndComments();
-            Token t;
-            t.line = line_;
-            t.column = column_;
-            if (pos_ >= text_.size()) {
-                t.kind = TokenKind::End;
-                // "found end of file" points just after the last token,
-                // on a line that shows what is unfinished.
-                if (!out_->tokens.empty()) {
-                    t.line = lastEndLine_;
-                    t.column = lastEndColumn_;
-                }
-                out_->tokens.push_back(t);
-                break;
+        if (text_.size() < compactFrom) {
+            // Big data files (exported meshes) hold about one token per 3-4
+            // bytes (a minus sign is a token of its own). Reserving for one per 2
+            // avoids re-copying a vector of hundreds of MB while it grows; pages
+            // never written cost nothing.
+            out->tokens.reserve(text_.size() / 2 + 16);
+            while (lexNext(out->tokens.emplace_back())) {
             }
-            lexOne(t);
-            out_->tokens.push_back(t);
-            lastEndLine_ = line_;
-            lastEndColumn_ = column_;
+            return out;
         }
-        return out_;
+        // Large: lexed a chunk at a time, kept only where it must be.
+        constexpr size_t kChunk = TokenizedFile::kChunkTokens;
+        std::array<Token, kChunk> chunk;
+        for (bool more = true; more;) {
+            TokenizedFile::Chunk where{pos_, line_, column_};
+            size_t n = 0;
+            bool keep = false;
+            while (more && n < kChunk) {
+                more = lexNext(chunk[n]);
+                keep = keep || chunk[n].kind == TokenKind::String || !more;
+                ++n;
+            }
+            if (keep) {
+                where.kept = static_cast<uint32_t>(out->tokens.size());
+                out->tokens.insert(out->tokens.end(), chunk.begin(), chunk.begin() + n);
+            }
+            out->chunks.push_back(where);
+            out->tokenCount += n;
+        }
+        out->tokens.shrink_to_fit();
+        out->chunks.shrink_to_fit();
+        return out;
+    }
+
+    // `count` tokens from `where` (none of them a String or the End: no
+    // decoded text to store).
+    void relex(const TokenizedFile::Chunk& where, Token* out, size_t count) {
+        pos_ = where.offset;
+        line_ = where.line;
+        column_ = where.column;
+        for (size_t i = 0; i < count; ++i) lexNext(out[i]);
+    }
+
+  private:
+    // The next token into `t`; false when it is the End.
+    bool lexNext(Token& t) {
+        skipSpaceAndComments();
+        t = Token{};
+        t.line = line_;
+        t.column = column_;
+        if (pos_ >= text_.size()) {
+            t.kind = TokenKind::End;
+            // "found end of file" points just after the last token,
+            // on a line that shows what is unfinished.
+            if (anyToken_) {
+                t.line = lastEndLine_;
+                t.column = lastEndColumn_;
+            }
+            return false;
+        }
+        lexOne(t);
+        anyToken_ = true;
+        lastEndLine_ = line_;
+        lastEndColumn_ = column_;
+        return true;
     }
 
   private:
     [[noreturn]] void fail(uint32_t line, uint32_t column, const std::string& message) {
-        throw SdlError({out_->source.get(), line, column}, message);
+        throw SdlError({source_, line, column}, message);
     }
 
     void advance(size_t n = 1) {
@@ -305,15 +346,17 @@ class Lexer {
             }
         }
         t.kind = TokenKind::String;
-        out_->decodedStrings.push_back(std::move(value));
-        t.text = std::string_view(out_->decodedStrings.back());
+        strings_->push_back(std::move(value));
+        t.text = std::string_view(strings_->back());
     }
 
-    std::shared_ptr<TokenizedFile> out_;
+    const SourceFile* source_;
+    std::deque<std::string>* strings_ = nullptr;  // where String tokens' text goes
     std::string_view text_;
     size_t pos_ = 0;
     uint32_t line_ = 1, column_ = 1;
     uint32_t lastEndLine_ = 1, lastEndColumn_ = 1;  // just after the last token
+    bool anyToken_ = false;
 };
 
 }  // namespace
@@ -352,8 +395,16 @@ uint32_t TokenizedFile::unknownEscapeColumn(const Token& t) const {
     return t.column;
 }
 
-std::shared_ptr<const TokenizedFile> tokenize(std::shared_ptr<const SourceFile> source) {
-    return Lexer(std::move(source)).run();
+size_t TokenizedFile::relex(size_t chunk, Token* out) const {
+    const size_t count = std::min(kChunkTokens, tokenCount - chunk * kChunkTokens);
+    Lexer(source.get()).relex(chunks[chunk], out, count);
+    return count;
+}
+
+std::shared_ptr<const TokenizedFile> tokenize(std::shared_ptr<const SourceFile> source,
+                                              size_t compactFrom) {
+    const SourceFile* file = source.get();
+    return Lexer(file).run(std::move(source), compactFrom);
 }
 
 }  // namespace frameray::sdl

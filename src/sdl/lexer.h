@@ -9,6 +9,9 @@
 
 namespace frameray::sdl {
 
-std::shared_ptr<const TokenizedFile> tokenize(std::shared_ptr<const SourceFile> source);
+// Files of `compactFrom` bytes or more keep only some of their tokens
+// (TokenizedFile::kCompactFrom; tests pass a smaller size).
+std::shared_ptr<const TokenizedFile> tokenize(std::shared_ptr<const SourceFile> source,
+                                              size_t compactFrom = TokenizedFile::kCompactFrom);
 
 }  // namespace frameray::sdl

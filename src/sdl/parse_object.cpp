@@ -340,7 +340,8 @@ bool parseObjectModifier(BuildContext& c, ObjectValue& draft,
             return true;
         case Keyword::kw_bounded_by:
             r.next();
-            obj.boundedBy = parseObjectList(c, tok, Keyword::kw_clipped_by, obj.clippedBy);
+            obj.boundedBy =
+                parseObjectList(c, tok, Keyword::kw_clipped_by, obj.clippedBy.objects());
             return true;
         case Keyword::kw_double_illuminate:
             r.next();

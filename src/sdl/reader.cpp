@@ -130,7 +130,7 @@ void Reader::checkStringLength(size_t length, const Token& at) {
 const Token& Reader::rawPeekAtEnd() {
     for (;;) {
         Cursor& c = cursors_.back();
-        const Token& t = c.file->tokens[c.pos];
+        const Token& t = window_.at(c.file, c.pos);
         if (t.kind != TokenKind::End) return t;
         if (cursors_.size() == 1) return t;
         if (c.kind == CursorKind::Macro) fail(t, "macro body ends without #end");

@@ -23,6 +23,7 @@
 #include "sdl/frame_context.h"
 #include "sdl/symbol_table.h"
 #include "sdl/token_cache.h"
+#include "sdl/token_window.h"
 #include "sdl/value.h"
 #include "util/matrix.h"
 
@@ -50,14 +51,14 @@ class Reader {
         const Cursor& c = cursors_.back();
         if (peekCache_.file == c.file.get() && peekCache_.pos == c.pos &&
             peekCache_.depth == cursors_.size())
-            return c.file->tokens[c.pos];
+            return window_.at(c.file, c.pos);
         return resolvePeek();
     }
     Token next();  // consumes peek()
     // The current token without running a directive (a #declare's look-ahead).
     const Token& rawPeek() {
         const Cursor& c = cursors_.back();
-        const Token& t = c.file->tokens[c.pos];
+        const Token& t = window_.at(c.file, c.pos);
         if (t.kind != TokenKind::End) [[likely]]
             return t;
         return rawPeekAtEnd();
@@ -268,6 +269,7 @@ class Reader {
     MessageSink& messages_;
     ValueBuilders* builders_ = nullptr;
     std::vector<Cursor> cursors_;
+    TokenWindow window_;  // the tokens of large files that are not kept
     std::vector<Block> blocks_;
     PeekCache peekCache_;
     DeclareValueState declareValue_;

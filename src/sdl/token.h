@@ -108,11 +108,39 @@ struct Token {
 static_assert(sizeof(Token) == 32);
 
 // One lexed file: its source and its tokens, ending with an End token.
-
+//
+// A large file (kCompactFrom bytes or more: exported meshes, tens of
+// millions of tokens) does not keep every token (issue 23): its tokens are
+// counted in chunks of kChunkTokens, and a chunk is kept only when it holds
+// a String (whose decoded text has no other home) or the End token. The
+// other chunks keep where their lexing starts and are lexed again when
+// read (relex; the Reader's TokenWindow holds the last few). Positions are
+// the same either way: token `pos` is in chunk pos / kChunkTokens.
 struct TokenizedFile {
+    static constexpr size_t kChunkTokens = 64;
+    static constexpr size_t kCompactFrom = size_t{4} << 20;
+    static constexpr uint32_t kNotKept = ~uint32_t{0};
+
+    // Where a chunk's lexing starts (before the space ahead of its first
+    // token) and, when kept, the index in `tokens` of its first token.
+    struct Chunk {
+        size_t offset = 0;
+        uint32_t line = 1, column = 1;
+        uint32_t kept = kNotKept;
+    };
+
     std::shared_ptr<const SourceFile> source;
+    // All the tokens; for a large file, those of its kept chunks only.
     std::vector<Token, HugePageAllocator<Token>> tokens;
     std::deque<std::string> decodedStrings;  // storage for String token text
+    std::vector<Chunk> chunks;               // empty: every token is in `tokens`
+    size_t tokenCount = 0;                   // End included
+
+    // How many tokens the file has, End included.
+    size_t size() const { return chunks.empty() ? tokens.size() : tokenCount; }
+    // Lexes chunk `chunk` (one that is not kept) again into `out`, which
+    // has room for kChunkTokens; returns how many it wrote.
+    size_t relex(size_t chunk, Token* out) const;
 
     SourceLoc locOf(const Token& t) const { return {source.get(), t.line, t.column}; }
     // A String token's text as written between its quotes, escapes not

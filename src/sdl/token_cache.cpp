@@ -1,7 +1,6 @@
 #include "sdl/token_cache.h"
 
 #include <fstream>
-#include <sstream>
 
 #include "sdl/lexer.h"
 
@@ -20,9 +19,11 @@ std::shared_ptr<const TokenizedFile> TokenCache::get(const fs::path& path) {
 
     std::ifstream in(path, std::ios::binary);
     if (!in) return nullptr;
-    std::ostringstream text;
-    text << in.rdbuf();
-    std::string content = text.str();
+    // Read straight into its string: a stream buffer and a copy of it
+    // would be three times a large file's size at once (issue 23).
+    std::string content(static_cast<size_t>(size), '\0');
+    in.read(content.data(), static_cast<std::streamsize>(size));
+    content.resize(static_cast<size_t>(in.gcount()));
     // The hash guards against a rewrite within the file system's timestamp
     // granularity that kept the size (a state file rewritten every frame).
     const size_t hash = std::hash<std::string>{}(content);

@@ -168,6 +168,37 @@ TEST(Csg, ClippedByKeepsOnlyCrossingsInsideTheClip) {
     EXPECT_DOUBLE_EQ(b.hi.x, 1e-10);
 }
 
+// The clip list's box, computed once when the list is made (issue 23),
+// is the common part of its non-inverted clips' boxes, and moves with the
+// object: a clipped object translated sees rays only where the moved clip is.
+TEST(Csg, ClipListBoxIsItsClipsCommonBoxAndMovesWithTheObject) {
+    auto s = sphere({0, 0, 0}, 1.2);
+    auto inverted = box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5});
+    inverted->inverse = true;
+    s->clippedBy = {box({-1, -1, -1}, {1, 1, 1}), box({0, -3, -3}, {3, 3, 3}), inverted};
+    const Bounds b = s->clippedBy.box();
+    EXPECT_EQ(b.lo.x, 0);
+    EXPECT_EQ(b.hi.x, 1);
+    EXPECT_EQ(b.lo.y, -1);
+    EXPECT_EQ(b.hi.z, 1);
+    EXPECT_EQ(ClipList{}.box().lo.x, -kInfinity);
+    EXPECT_EQ(ClipList{inverted}.box().hi.x, kInfinity);
+
+    auto moved = std::make_shared<Object>(*s);
+    moved->transformBy(Transform::translate({0, 10, 0}));
+    EXPECT_EQ(moved->clippedBy.size(), 3u);
+    EXPECT_EQ(moved->clippedBy.box().lo.y, 9);
+    EXPECT_EQ(moved->clippedBy.box().hi.y, 11);
+    EXPECT_EQ(s->clippedBy.box().lo.y, -1);  // the original's list untouched
+    // Rays through the moved clip's box see the moved sphere's surface
+    // where it is inside every clip (x in [0, 1]).
+    const Ray down{{0.5, 20, 0.5}, {0, -1, 0}};
+    EXPECT_EQ(allHits(*moved, down).size(), 2u);
+    const Ray across{{-5, 10, 0.8}, {1, 0, 0}};
+    ASSERT_EQ(allHits(*moved, across).size(), 1u);
+    EXPECT_GT(allHits(*moved, across)[0].t, 5);
+}
+
 // An infinite quadric cylinder (x^2 + z^2 = 1, as shapes.inc's
 // Cylinder_Y) or hyperboloid (x^2 - y^2 + z^2 = 1) cut by two planes: the
 // intersection's box is finite (so it joins the BVH), and holds every
