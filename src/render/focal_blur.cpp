@@ -43,11 +43,11 @@ constexpr std::array<GridStep, 19> kHex19 = {{{-2, 2},
                                               {-2, 0},
                                               {2, 0}}};
 constexpr std::array<GridStep, 37> kHex37 = {
-    {{0, 0},   {-3, 3},  {3, -3},  {-3, -3}, {3, 3},  {-6, 0},  {6, 0},  {-2, 2},
-     {2, -2},  {-2, -2}, {2, 2},   {-4, 0},  {4, 0},  {-1, 1},  {1, -1}, {-1, -1},
-     {1, 1},   {-2, 0},  {2, 0},   {-5, 1},  {-5, -1}, {5, 1},  {5, -1}, {-4, 2},
-     {-4, -2}, {4, 2},   {4, -2},  {-1, 3},  {-1, -3}, {1, 3},  {1, -3}, {-3, 1},
-     {-3, -1}, {3, 1},   {3, -1},  {0, 2},   {0, -2}}};
+    {{0, 0},   {-3, 3},  {3, -3}, {-3, -3}, {3, 3},   {-6, 0}, {6, 0},  {-2, 2},
+     {2, -2},  {-2, -2}, {2, 2},  {-4, 0},  {4, 0},   {-1, 1}, {1, -1}, {-1, -1},
+     {1, 1},   {-2, 0},  {2, 0},  {-5, 1},  {-5, -1}, {5, 1},  {5, -1}, {-4, 2},
+     {-4, -2}, {4, 2},   {4, -2}, {-1, 3},  {-1, -3}, {1, 3},  {1, -3}, {-3, 1},
+     {-3, -1}, {3, 1},   {3, -1}, {0, 2},   {0, -2}}};
 
 // Radical inverse of k in `base` (the Halton sequence's k-th value).
 double radicalInverse(unsigned k, unsigned base) {
@@ -79,14 +79,17 @@ void apertureGrid(int count, std::vector<std::pair<double, double>>& grid,
         rings = 1;
     // Below 7 rays: a 2 x 2 square.
     if (rings == 0) {
-        for (const auto& [sx, sy] : std::array<std::pair<int, int>, 4>{{{-1, 1}, {1, 1}, {-1, -1}, {1, -1}}})
+        for (const auto& [sx, sy] :
+             std::array<std::pair<int, int>, 4>{{{-1, 1}, {1, 1}, {-1, -1}, {1, -1}}})
             grid.emplace_back(0.25 * sx, 0.25 * sy);
     } else {
         // Half a lattice step and a row of the triangular lattice whose
         // `rings` rings fill the disc.
         const double halfStep = 1.0 / (2 * (rings + 1) * std::sqrt(3.0));
         const double row = 1.0 / (2 * (rings + 1));
-        const GridStep* steps = rings == 1 ? kHex7.data() : rings == 2 ? kHex19.data() : kHex37.data();
+        const GridStep* steps = rings == 1   ? kHex7.data()
+                                : rings == 2 ? kHex19.data()
+                                             : kHex37.data();
         const int size = rings == 1 ? 7 : rings == 2 ? 19 : 37;
         for (int i = 0; i < size; ++i) grid.emplace_back(steps[i].x * halfStep, steps[i].y * row);
         if (rings == 1) batches = {7};
@@ -140,8 +143,8 @@ FocalBlurSampler::FocalBlurSampler(const CameraRays& camera) : camera_(camera) {
     // along the view: a perspective ray's unnormalised direction scaled by
     // F / |direction| reaches the plane at distance F square to the view
     // (povray keeps off-axis objects on that plane sharp).
-    focalDistance_ = c.blur.focalPointGiven ? length(c.blur.focalPoint - c.location)
-                                             : length(c.direction);
+    focalDistance_ =
+        c.blur.focalPointGiven ? length(c.blur.focalPoint - c.location) : length(c.direction);
     if (focalDistance_ == 0) focalDistance_ = 1;
     focalScale_ = focalDistance_ / length(c.direction);
     planar_ = c.projection == scene::Projection::Perspective ||
