@@ -1128,8 +1128,25 @@ std::optional<Value> Reader::parseQueryBuiltin(const Token& fn) {
             // (an isosurface's accuracy) then works in scene units.
             const double dirLength = length(direction);
             const scene::Ray ray{start, direction * (1.0 / dirLength)};
-            if (dirLength > 0 && (*obj)->object->firstHit(ray, kTraceMinDepth, scene::kInfinity,
-                                                          scene::RayKind::Any, hit)) {
+            // The nearest crossing at least kTraceMinDepth away. Shapes
+            // found by marching (julia_fractal, isosurface) march from the
+            // start as povray's do; nearer crossings are stepped over.
+            bool found = false;
+            if (dirLength > 0) {
+                double from = 0.0;
+                for (int tries = 0; tries < 64; ++tries) {
+                    if (!(*obj)->object->firstHit(ray, from, scene::kInfinity, scene::RayKind::Any,
+                                                  hit) ||
+                        hit.t <= from)
+                        break;
+                    if (hit.t >= kTraceMinDepth) {
+                        found = true;
+                        break;
+                    }
+                    from = hit.t;
+                }
+            }
+            if (found) {
                 point = ray.at(hit.t);
                 normal = hit.primitive->normalAt(point);
                 bool inverted = false;
