@@ -147,6 +147,7 @@ FocalBlurSampler::FocalBlurSampler(const CameraRays& camera) : camera_(camera) {
         c.blur.focalPointGiven ? length(c.blur.focalPoint - c.location) : length(c.direction);
     if (focalDistance_ == 0) focalDistance_ = 1;
     focalScale_ = focalDistance_ / length(c.direction);
+    location_ = c.location;
     planar_ = c.projection == scene::Projection::Perspective ||
               c.projection == scene::Projection::Orthographic;
     // A "+" on the lens: right-ish and up-ish, perpendicular to the view.
@@ -210,10 +211,13 @@ PixelSample FocalBlurSampler::sample(
                 const double ly = radius_ * (gy + shift.y * gridJitter_ * 2.0);
                 const Vec3 offset = xPerp_ * lx - yPerp_ * ly;
                 // Move the eye across the aperture and aim back at the point
-                // the unblurred ray reaches at the focal distance.
+                // the unblurred ray reaches at the focal distance. The eye
+                // is the camera's location for every projection (povray:
+                // an orthographic or cylindrical camera's per-pixel origin
+                // is dropped when it blurs).
                 const Vec3 target = planar_ ? base->direction * focalScale_
                                             : normalize(base->direction) * focalDistance_;
-                colour = trace(scene::Ray{base->origin + offset, normalize(target - offset)});
+                colour = trace(scene::Ray{location_ + offset, normalize(target - offset)});
                 sum.rgb += colour.rgb;
                 sum.transmit += colour.transmit;
             }

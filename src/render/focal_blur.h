@@ -63,7 +63,7 @@ class FocalBlurSampler {
     std::vector<int> batches_;
     double gridJitter_ = 0;
     std::vector<double> thresholds_;
-    Vec3 xPerp_, yPerp_;
+    Vec3 xPerp_, yPerp_, location_;
     double radius_ = 0, focalScale_ = 1, focalDistance_ = 1;
     bool planar_ = true;  // focus on a plane (perspective, orthographic)
     int minSamples_ = 0, maxSamples_ = 0;
