@@ -62,13 +62,13 @@ FrameImage renderFrame(const World& world, const FrameSettings& settings, FrameS
                 // Several rays per sample, each at a random spot of the pixel.
                 if (settings.alpha)
                     return focalBlur->sample(
-                        x + 0.5, y + 0.5,
+                        x, y,
                         std::function<PixelSample(const scene::Ray&)>([&](const scene::Ray& r) {
                             double transmit = 0;
                             const RGB c = tracer.traceCamera(r, rays, &transmit, blockRadiosity);
                             return PixelSample{c, transmit};
                         }));
-                return focalBlur->sample(x + 0.5, y + 0.5, [&](const scene::Ray& r) {
+                return focalBlur->sample(x, y, [&](const scene::Ray& r) {
                     return tracer.traceCamera(r, rays, nullptr, blockRadiosity);
                 });
             }

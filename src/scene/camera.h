@@ -35,8 +35,10 @@ struct FocalBlur {
     int minSamples = 0;   // `blur_samples MIN, MAX`: at least this many
     int blurSamples = 0;  // at most this many rays per sample
     Vec3 focalPoint{0, 0, 0};
+    // Without focal_point povray focuses at the direction vector's length.
+    bool focalPointGiven = false;
     double confidence = 0.9;
-    double variance = 1.0 / 128;
+    double variance = 1.0 / 10000;  // povray 3.7 camera default (its docs say 1/128)
 
     bool enabled() const { return aperture > 0 && blurSamples > 0; }
 };

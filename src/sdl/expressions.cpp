@@ -24,6 +24,30 @@ bool isTrue(double v) {
     return std::fabs(v) > kEpsilon;
 }
 
+// trace() ignores surfaces nearer than this to the start (povray 3.7's
+// minimum intersection depth, backend/configbackend.h).
+constexpr double kTraceMinDepth = 1e-4;
+
+// Whether `primitive` lies inverted inside `node`: an odd number of
+// `inverse` flags and subtracted difference operands on the way down. povray
+// flips trace()'s normal there (its primitives carry that flag; fact from
+// povray's parser/express.cpp).
+bool invertedWithin(const scene::Object& node, const scene::Object* primitive, bool inverted,
+                    bool& result) {
+    inverted = inverted != node.inverse;
+    if (&node == primitive) {
+        result = inverted;
+        return true;
+    }
+    for (size_t i = 0; i < node.children.size(); ++i) {
+        const bool subtracted = node.op == scene::CsgOp::Difference && i > 0;
+        if (node.children[i] &&
+            invertedWithin(*node.children[i], primitive, inverted != subtracted, result))
+            return true;
+    }
+    return false;
+}
+
 // Brings two operands to a common shape: floats promote to every
 // component, shorter vectors to longer ones with zeros (seed 004).
 VectorValue promote(const Value& v, int size) {
@@ -1104,10 +1128,30 @@ std::optional<Value> Reader::parseQueryBuiltin(const Token& fn) {
             // (an isosurface's accuracy) then works in scene units.
             const double dirLength = length(direction);
             const scene::Ray ray{start, direction * (1.0 / dirLength)};
-            if (dirLength > 0 &&
-                (*obj)->object->firstHit(ray, 0.0, scene::kInfinity, scene::RayKind::Any, hit)) {
+            // The nearest crossing at least kTraceMinDepth away. Shapes
+            // found by marching (julia_fractal, isosurface) march from the
+            // start as povray's do; nearer crossings are stepped over.
+            bool found = false;
+            if (dirLength > 0) {
+                double from = 0.0;
+                for (int tries = 0; tries < 64; ++tries) {
+                    if (!(*obj)->object->firstHit(ray, from, scene::kInfinity, scene::RayKind::Any,
+                                                  hit) ||
+                        hit.t <= from)
+                        break;
+                    if (hit.t >= kTraceMinDepth) {
+                        found = true;
+                        break;
+                    }
+                    from = hit.t;
+                }
+            }
+            if (found) {
                 point = ray.at(hit.t);
                 normal = hit.primitive->normalAt(point);
+                bool inverted = false;
+                if (invertedWithin(*(*obj)->object, hit.primitive, false, inverted) && inverted)
+                    normal = -normal;
             }
             if (!normalName.empty())
                 symbols_.declare(normalName, VectorValue::fromVec3(normal), false);

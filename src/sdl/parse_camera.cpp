@@ -171,6 +171,7 @@ scene::Camera parseCamera(BuildContext& c) {
             }
             case Keyword::kw_focal_point:
                 cam.blur.focalPoint = r.parseVec3();
+                cam.blur.focalPointGiven = true;
                 break;
             case Keyword::kw_confidence:
                 cam.blur.confidence = r.parseFloat();

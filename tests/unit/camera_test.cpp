@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "render/camera_rays.h"
 #include "render/focal_blur.h"
@@ -166,10 +167,11 @@ TEST(FocalBlur, GridInsideDiscAndDeterministicSamples) {
     c.blur.aperture = 1;
     c.blur.blurSamples = 19;
     c.blur.focalPoint = {0, 0, 5};
+    c.blur.focalPointGiven = true;
     const CameraRays rays(c, 32, 24);
     const render::FocalBlurSampler sampler(rays);
     ASSERT_EQ(sampler.grid().size(), 19u);
-    for (const auto& [x, y] : sampler.grid()) EXPECT_LE(std::hypot(x, y), 1.0);
+    for (const auto& [x, y] : sampler.grid()) EXPECT_LE(std::hypot(x, y), 0.5);
     // Thresholds grow with the sample count.
     EXPECT_LT(sampler.thresholds()[0], sampler.thresholds()[18]);
     // Every blurred ray passes through the focal plane near the unblurred
@@ -186,6 +188,69 @@ TEST(FocalBlur, GridInsideDiscAndDeterministicSamples) {
     const auto b = sampler.sample(16, 12, trace);
     EXPECT_EQ(a.rgb.r, b.rgb.r);
     EXPECT_GT(traced, 0);
+}
+
+// povray's aperture grids: hexagonal lattices in a fixed order, traced in
+// batches (rings), jittered by half a lattice step when the count is the
+// grid's size and by 0.5 / sqrt(count) otherwise.
+TEST(FocalBlur, PovrayApertureGrids) {
+    Camera c = makeCamera(Projection::Perspective);
+    c.blur.aperture = 1;
+    {
+        c.blur.blurSamples = 7;
+        const CameraRays rays(c, 32, 24);
+        const render::FocalBlurSampler s7(rays);
+        ASSERT_EQ(s7.grid().size(), 7u);
+        EXPECT_NEAR(s7.grid()[0].first, -0.288675, 1e-6);
+        EXPECT_EQ(s7.grid()[1], std::make_pair(0.0, 0.0));
+        EXPECT_NEAR(s7.grid()[3].first, -0.144338, 1e-6);
+        EXPECT_NEAR(s7.grid()[3].second, 0.25, 1e-12);
+        EXPECT_NEAR(s7.gridJitter(), 0.144338, 1e-6);
+        EXPECT_EQ(s7.batches(), std::vector<int>({7}));
+    }
+    {
+        c.blur.blurSamples = 37;
+        const CameraRays rays(c, 32, 24);
+        const render::FocalBlurSampler s(rays);
+        ASSERT_EQ(s.grid().size(), 37u);
+        EXPECT_NEAR(s.grid()[5].first, -0.433013, 1e-6);
+        EXPECT_NEAR(s.grid()[19].first, -0.360844, 1e-6);
+        EXPECT_NEAR(s.grid()[19].second, 0.125, 1e-12);
+        EXPECT_NEAR(s.gridJitter(), 0.0721688, 1e-6);
+        EXPECT_EQ(s.batches(), std::vector<int>({7, 6, 6, 4, 4, 4, 4, 2}));
+    }
+    {
+        // 120: the 37-point grid, then Halton points on the disc, one per
+        // cell of a 15 x 15 coverage grid while cells are free.
+        c.blur.blurSamples = 120;
+        const CameraRays rays(c, 32, 24);
+        const render::FocalBlurSampler s(rays);
+        ASSERT_EQ(s.grid().size(), 120u);
+        EXPECT_NEAR(s.gridJitter(), 0.5 / std::sqrt(120.0), 1e-12);
+        std::set<std::pair<int, int>> cells;
+        for (size_t i = 0; i < 120; ++i) {
+            const auto [x, y] = s.grid()[i];
+            EXPECT_LE(x * x + y * y, 0.25 + 1e-12);
+            if (i >= 37) {
+                EXPECT_TRUE(cells.emplace(int((x + 0.5) * 15), int((y + 0.5) * 15)).second);
+            }
+        }
+        // The first Halton point (index 1 in bases 2 and 3).
+        EXPECT_NEAR(s.grid()[37].first, std::sqrt(0.125) * std::cos(2 * kPi / 3), 1e-12);
+    }
+}
+
+// Each ray of a blurred sample lands in one of 16 x 16 cells of the pixel,
+// shifted by at most one cell: a function of the position and ray number.
+TEST(FocalBlur, RayPositionsStayNearThePixel) {
+    for (int n = 0; n < 40; ++n) {
+        const auto [x, y] = render::FocalBlurSampler::rayPosition(10, 7, n);
+        EXPECT_GE(x, 10 - 0.5 - 1.0 / 16);
+        EXPECT_LT(x, 10 + 0.5);
+        EXPECT_GE(y, 7 - 0.5 - 1.0 / 16);
+        EXPECT_LT(y, 7 + 0.5);
+        EXPECT_EQ(render::FocalBlurSampler::rayPosition(10, 7, n), std::make_pair(x, y));
+    }
 }
 
 TEST(CameraRays, OmnimaxMatchesPovrayProbe) {

@@ -200,3 +200,34 @@ TEST(Expressions, NumericEdgeCasesAsPovray) {
     EXPECT_NE(sink.text.find("t.pov:2:15: warning: divide by zero"), std::string::npos)
         << sink.text;
 }
+
+// trace() as povray 3.7 answers it (values printed by povray with #debug):
+// a surface nearer than 1e-4 to the start is skipped, and the normal of a
+// primitive lying inverted in the traced object (a subtracted operand, an
+// `inverse` object) is flipped.
+TEST(Expressions, TraceSkipsNearHitsAndFlipsInvertedNormals) {
+    ParsedText r(
+        "#declare S = sphere { 0, 1 }"
+        "#declare D = difference { box { -2, 2 } sphere { 0, 1 } }"
+        "#declare I = sphere { 0, 1 inverse }"
+        "#declare D2 = difference { box { -2, 2 } difference { sphere { 0, 1.5 } sphere { 0, 1 } } }"
+        "#declare N1 = <0,0,0>; #declare P1 = trace(S, <0,0,-1.00005>, z, N1);"
+        "#declare N2 = <0,0,0>; #declare P2 = trace(S, <0,0,-1.0002>, z, N2);"
+        "#declare N3 = <0,0,0>; #declare P3 = trace(D, <0,0,0>, z, N3);"
+        "#declare N4 = <0,0,0>; #declare P4 = trace(I, <0,0,-3>, z, N4);"
+        "#declare N5 = <0,0,0>; #declare P5 = trace(D2, <0,0,0>, z, N5);"
+        "#declare N6 = <0,0,0>; #declare P6 = trace(D2, <0,0,-1.7>, z, N6);");
+    EXPECT_DOUBLE_EQ(r.v("P1").xyz().z, 1.0);  // the near front is skipped: the back
+    EXPECT_DOUBLE_EQ(r.v("N1").xyz().z, 1.0);
+    EXPECT_DOUBLE_EQ(r.v("P2").xyz().z, -1.0);
+    EXPECT_DOUBLE_EQ(r.v("N2").xyz().z, -1.0);
+    EXPECT_DOUBLE_EQ(r.v("P3").xyz().z, 1.0);
+    EXPECT_DOUBLE_EQ(r.v("N3").xyz().z, -1.0);  // the subtracted sphere's
+    EXPECT_DOUBLE_EQ(r.v("P4").xyz().z, -1.0);
+    EXPECT_DOUBLE_EQ(r.v("N4").xyz().z, 1.0);
+    // Subtracted twice: the inner sphere's normal is not flipped.
+    EXPECT_DOUBLE_EQ(r.v("P5").xyz().z, 1.0);
+    EXPECT_DOUBLE_EQ(r.v("N5").xyz().z, 1.0);
+    EXPECT_DOUBLE_EQ(r.v("P6").xyz().z, -1.5);  // subtracted once: flipped
+    EXPECT_DOUBLE_EQ(r.v("N6").xyz().z, 1.0);
+}
