@@ -339,8 +339,9 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
     // A subsurface finish takes no diffuse light from the lights (nor
     // photons): the light carried under its surface replaces it
-    // (tracer_subsurface.cpp).
-    const bool underSurface = subsurface_ && fin.subsurface && !radiosityRay;
+    // (tracer_subsurface.cpp). Radiosity rays see neither (povray 3.7
+    // computes no subsurface light for them).
+    const bool underSurface = subsurface_ && fin.subsurface;
     const double lightDiffuse = underSurface ? 0.0 : fin.diffuse;
     if (const Photons* photons = world_.photons(); photons && lightDiffuse > 0) {
         // Caustics: the photons' light, diffused like a light's head-on
