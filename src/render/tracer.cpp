@@ -119,6 +119,7 @@ Tracer::Tracer(const World& world, int quality, const Radiosity* radiosity)
       radiosityLighting_{lighting_.shadows, false},
       secondaryRays_(quality >= 8),
       media_(quality >= 9),
+      subsurface_(quality >= 9 && world.scene().globals.subsurface.has_value()),
       radiosity_(radiosity),
       quickColours_(quality < 2),
       quickColorPigments_(quality < 6),
@@ -353,7 +354,13 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
     size_t lightIndex = 0;
     const bool irid = fin.irid.amount != 0;
     const double filmThickness = irid ? iridFilmThickness(fin.irid, p) : 0.0;
-    if (const Photons* photons = world_.photons(); photons && fin.diffuse > 0) {
+    // A subsurface finish takes no diffuse light from the lights (nor
+    // photons): the light carried under its surface replaces it
+    // (tracer_subsurface.cpp). Radiosity rays see neither (povray 3.7
+    // computes no subsurface light for them).
+    const bool underSurface = subsurface_ && fin.subsurface;
+    const double lightDiffuse = underSurface ? 0.0 : fin.diffuse;
+    if (const Photons* photons = world_.photons(); photons && lightDiffuse > 0) {
         // Caustics: the photons' light, diffused as povray does
         // (render/photons.h).
         thread_local std::vector<PhotonNeighbour> scratch;
@@ -372,14 +379,14 @@ RGB Tracer::localLight(const scene::Texture& tex, const Color& surface, const sc
         // both are given).
         Vec3 ln = n;
         double cosIncidence = dot(n, toLight);
-        double diffuse = fin.diffuse;
+        double diffuse = lightDiffuse;
         bool fromBehind = false;
         if (cosIncidence <= 0 && obj.doubleIlluminate) {
             ln = -n;
             cosIncidence = -cosIncidence;
         } else if (cosIncidence < 0 && fin.diffuseBack > 0) {
             cosIncidence = -cosIncidence;
-            diffuse = fin.diffuseBack;
+            diffuse = underSurface ? 0.0 : fin.diffuseBack;
             fromBehind = true;
         }
         if (cosIncidence <= 0) continue;
@@ -627,8 +634,10 @@ Tracer::Layers Tracer::shadeLayers(const scene::Texture& top, const SurfacePoint
                     state, counts);
             gathered = &*radiosityHere;
         }
-        const RGB local = localLight(tex, surface, at.obj, at.p, n, at.viewDir, at.eps, state.fade,
-                                     counts, gathered, state.radiosity.ray, &grain);
+        RGB local = localLight(tex, surface, at.obj, at.p, n, at.viewDir, at.eps, state.fade,
+                               counts, gathered, state.radiosity.ray, &grain);
+        if (subsurfaceActive(fin, state))
+            local += subsurfaceLight(fin, surface.rgb, at, state, counts);
         out.color += i == 0 ? local : out.through * local;
 
         if (spawns && fin.reflection.any()) {

@@ -133,6 +133,9 @@ class Tracer {
             double* quality = nullptr;
         } radiosity;
         double* hitDistance = nullptr;  // set by trace(): how far the ray went (infinity: missed)
+        // How many subsurface surfaces deep the ray is seen from
+        // (render/subsurface.h: the second takes one sample of each kind).
+        int subsurfaceDepth = 0;
     };
 
     RGB trace(const scene::Ray& ray, double tMin, const State& state, RayCounts& counts) const;
@@ -200,6 +203,12 @@ class Tracer {
     RGB shadeTextureMap(const scene::Texture& top, const SurfacePoint& at, const State& state,
                         RayCounts& counts, Vec3* perturbed) const;
     Crossing crossingOf(const scene::Object& obj, const State& state) const;
+    // Subsurface light transport (render/subsurface.h, tracer_subsurface.cpp):
+    // whether a finish carries light under the surface on this ray, and the
+    // light it brings out at `at` for a layer of pigment `pigment`.
+    bool subsurfaceActive(const scene::Finish& fin, const State& state) const;
+    RGB subsurfaceLight(const scene::Finish& fin, const RGB& pigment, const SurfacePoint& at,
+                        const State& state, RayCounts& counts) const;
     // `crossing` is found when a layer's reflection needs it (kept for
     // continueThrough).
     Layers shadeLayers(const scene::Texture& top, const SurfacePoint& at, bool spawns,
@@ -252,7 +261,8 @@ class Tracer {
     LightingQuality lighting_;
     LightingQuality radiosityLighting_;  // lighting_ without area-light sampling
     bool secondaryRays_;
-    bool media_;                            // +Q9 and up, and the scene has media somewhere
+    bool media_;       // +Q9 and up, and the scene has media somewhere
+    bool subsurface_;  // +Q9 and up, and global_settings has a subsurface block
     const Radiosity* radiosity_ = nullptr;  // set when the frame computes radiosity
     bool quickColours_;                     // +Q0, +Q1
     bool quickColorPigments_;  // up to +Q5: a pigment's quick_color replaces its pattern

@@ -30,6 +30,17 @@ struct GlobalSettings {
     std::optional<RadiositySettings> radiosity;
     // Photon mapping, when the scene turns it on (render/photons.h).
     std::optional<PhotonSettings> photons;
+    // Millimetres per scene unit: the scale subsurface light transport
+    // sees (povray 3.7's default 10).
+    double mmPerUnit = 10.0;
+    // subsurface { samples D, S  radiosity B }: only then do finishes with
+    // subsurface carry light under their surface (render/subsurface.h).
+    struct Subsurface {
+        int samplesDiffuse = 50;  // povray 3.7's defaults
+        int samplesSingle = 50;
+        bool radiosity = false;  // the radiosity light enters under the surface too
+    };
+    std::optional<Subsurface> subsurface;
 };
 
 struct Scene {

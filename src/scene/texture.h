@@ -171,6 +171,12 @@ struct Finish {
     // The 2.0 forms `refraction` and `ior` in a finish: ior moves to the
     // object's interior when it has none of its own.
     double legacyIor = 0.0;  // 0 = not given
+    // subsurface { translucency C }: light carried under the surface
+    // (render/subsurface.h) takes the place of the lights' diffuse term
+    // when global_settings has a subsurface block.
+    bool subsurface = false;
+    RGB translucency{
+        0.0};  // per channel, the reciprocal of the reduced scattering coefficient (1/mm)
 };
 
 // povray's default finish: one immutable instance that every default

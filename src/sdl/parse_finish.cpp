@@ -140,6 +140,19 @@ static void parseFinishItems(BuildContext& c, scene::Finish& f) {
             case Keyword::kw_irid:
                 parseIridescence(c, f);
                 break;
+            case Keyword::kw_subsurface:
+                r.expect(Sym::LBrace, "'{' after 'subsurface'");
+                f.subsurface = true;
+                for (;;) {
+                    if (r.accept(Sym::RBrace)) break;
+                    const Token item = r.next();
+                    if (!item.is(Keyword::kw_translucency))
+                        r.fail(item, fmt::format("expected translucency or '}}' in subsurface, "
+                                                 "found {}",
+                                                 describeToken(item)));
+                    f.translucency = r.parseColor().rgb;
+                }
+                break;
             case Keyword::kw_refraction:
                 // 2.0: refraction 1 turned bending on; 3.x bends whenever
                 // the ior differs from 1, so only the value is read.

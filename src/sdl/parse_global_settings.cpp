@@ -74,6 +74,32 @@ void parseGlobalSettings(BuildContext& c) {
             case Keyword::kw_hf_gray_16:
                 r.parseOptionalBool();
                 break;
+            case Keyword::kw_mm_per_unit:
+                g.mmPerUnit = r.parseFloat();
+                break;
+            case Keyword::kw_subsurface: {
+                // A second block keeps what the first set.
+                if (!g.subsurface) g.subsurface.emplace();
+                r.expect(Sym::LBrace, "'{' after 'subsurface'");
+                for (;;) {
+                    if (r.accept(Sym::RBrace)) break;
+                    const Token item = r.next();
+                    if (item.is(Keyword::kw_samples)) {
+                        g.subsurface->samplesDiffuse = static_cast<int>(r.parseFloat());
+                        r.accept(Sym::Comma);
+                        g.subsurface->samplesSingle = static_cast<int>(r.parseFloat());
+                    } else if (item.is(Keyword::kw_radiosity)) {
+                        g.subsurface->radiosity = r.parseFloat() != 0;
+                        if (g.subsurface->radiosity)
+                            r.unsupported(item, "radiosity light under a subsurface finish");
+                    } else {
+                        r.fail(item, fmt::format("expected samples, radiosity or '}}' in "
+                                                 "subsurface, found {}",
+                                                 describeToken(item)));
+                    }
+                }
+                break;
+            }
             case Keyword::kw_photons:
                 // A second block replaces the first's values item by item.
                 if (!g.photons) g.photons.emplace();
