@@ -47,7 +47,7 @@ fs::path findProgram(const std::string& name) {
     std::stringstream dirs(path ? path : "");
     std::string dir;
     while (std::getline(dirs, dir, ':')) {
-        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
+        fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
         if (access(candidate.c_str(), X_OK) == 0) return candidate;
     }
     return {};
@@ -68,6 +68,7 @@ pid_t spawn(const std::vector<std::string>& argv, int in, int out, int err) {
     route(out, STDOUT_FILENO, O_WRONLY);
     route(err, STDERR_FILENO, O_WRONLY);
     std::vector<char*> args;
+    args.reserve(argv.size() + 1);
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
     pid_t pid = 0;
@@ -100,7 +101,7 @@ std::string drain(int fd) {
 }
 
 fs::path ffmpegProgram() {
-    const fs::path ffmpeg = findProgram("ffmpeg");
+    fs::path ffmpeg = findProgram("ffmpeg");
     if (ffmpeg.empty())
         throw std::runtime_error(
             "Preview_Video needs the ffmpeg program, which is not on PATH (Debian package "

@@ -153,7 +153,7 @@ std::string RunLog::close() {
     // The pool's thread writes every queued line before it ends.
     logger_.reset();
     pool_.reset();
-    const std::string error = file_->error();
+    std::string error = file_->error();
     file_.reset();
     return error;
 }

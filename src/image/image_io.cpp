@@ -120,7 +120,7 @@ fs::path writeTemporary(const fs::path& path, FileType type, const EncodedImage&
     // Unique per process and target, in the same folder so the rename is
     // atomic; on the device before it is renamed and journalled, so a frame
     // the journal calls finished survives a power cut.
-    const fs::path tmp = temporaryPathFor(path);
+    fs::path tmp = temporaryPathFor(path);
     util::writeFileDurably(
         tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
     return tmp;

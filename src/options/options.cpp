@@ -316,7 +316,7 @@ fs::path findSceneFile(const RenderOptions& options) {
     std::error_code ec;
     for (const fs::path& folder : folders)
         for (const fs::path& candidate : {name, fs::path(name.string() + ".pov")}) {
-            const fs::path path = folder.empty() ? candidate : folder / candidate;
+            fs::path path = folder.empty() ? candidate : folder / candidate;
             if (fs::is_regular_file(path, ec)) return path;
         }
     return {};

@@ -10,7 +10,6 @@ namespace frameray::render {
 namespace {
 
 // POV-Ray's loop tolerance when stepping through sub-pixel positions.
-constexpr double kStepTolerance = 1e-10;
 
 // Samples of one block plus a one-pixel margin on every side, indexed by
 // image pixel coordinates. Method 1 keeps the row above and the column
@@ -139,11 +138,14 @@ class NonRecursiveSampler {
         ++counts_.supersampledPixels;
         const double step = 1.0 / s_.depth;
         const double range = 0.5 - step * 0.5;
-        // The positions are accumulated exactly as povray steps them: the
-        // jitter offset hashes the position's bits.
-        for (double dy = -range; dy <= range + kStepTolerance; dy += step)
-            for (double dx = -range; dx <= range + kStepTolerance; dx += step)
+        // depth x depth positions, accumulated exactly as povray steps
+        // them: the jitter offset hashes the position's bits.
+        double dy = -range;
+        for (int row = 0; row < s_.depth; ++row, dy += step) {
+            double dx = -range;
+            for (int column = 0; column < s_.depth; ++column, dx += step)
                 pixel += jitteredSample(x + dx, y + dy, jitterScale_, sample_, counts_);
+        }
         pixel *= 1.0 / (s_.depth * s_.depth + 1);
     }
 

@@ -10,6 +10,23 @@
 
 namespace frameray::render {
 
+namespace {
+
+// The lines start, start + step, ... below `end`, each the one before plus
+// step, as povray steps its pretrace grid (its spots' positions to the
+// last bit).
+std::vector<double> gridLines(double start, double end, double step) {
+    std::vector<double> lines;
+    double line = start;
+    while (line < end) {
+        lines.push_back(line);
+        line += step;
+    }
+    return lines;
+}
+
+}  // namespace
+
 void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity& radiosity,
                        const PixelBlock& window, int width, int height, RayCounts& rays,
                        RadiosityCounts& counts) {
@@ -82,9 +99,10 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
                 task.topQueries = 0;
                 task.topCoverage = 0;
                 int traced = 0;
-                for (double gy = startY; gy < y1; gy += step) {
+                const std::vector<double> columns = gridLines(startX, x1, step);
+                for (const double gy : gridLines(startY, y1, step)) {
                     if (gy < y0) continue;
-                    for (double gx = startX; gx < x1; gx += step) {
+                    for (const double gx : columns) {
                         if (gx < x0) continue;
                         // Each spot takes the walk's next two numbers, the
                         // first for y, the second for x (povray 3.7 at +WT1).
@@ -111,12 +129,13 @@ void pretraceRadiosity(const Tracer& tracer, const CameraRays& camera, Radiosity
                     }
                 }
                 bool again = true;
-                if (traced >= 9) {
-                    if (task.topQueries == 0)
-                        again = false;
-                    else if (coverage && task.topCoverage / task.topQueries >= coverage)
-                        again = false;
-                }
+                // Enough spots, and nothing looked up here or the lookups
+                // covered well enough: this part of the tile is done.
+                if (traced >= 9 &&
+                    (task.topQueries == 0 ||
+                     (coverage &&
+                      task.topCoverage / static_cast<double>(task.topQueries) >= coverage)))
+                    again = false;
                 if (again)
                     for (int dy = 0; dy < divideY; ++dy)
                         for (int dx = 0; dx < divideX; ++dx)

@@ -82,6 +82,17 @@ struct Under {
     void forLights(F&& f) const {
         for (const scene::Light& l : *lights) f(l);
     }
+    // The light of `light` arriving at q on the surface (normal nq), and the
+    // cosine it arrives at; false when none arrives.
+    bool arrivingAt(const scene::Light& light, const Vec3& q, const Vec3& nq, RGB& arriving,
+                    double& cosIn) const {
+        LightPath path;
+        if (!pathToLight(light, q, path)) return false;
+        cosIn = std::fabs(dot(nq, path.toLight));
+        if (cosIn < kTiny) return false;
+        arriving = lightArriving(world, light, q, path, margin(q), lighting, shadowRays);
+        return !arriving.isBlack();
+    }
 };
 
 // The diffuse term: points of the surface found from a base point below
@@ -116,13 +127,9 @@ RGB diffuseTerm(const Under& u, int samples, uint64_t seed) {
         if (!u.sameMaterial(in.object)) continue;
         const double distSqr = dot(pIn - u.p, pIn - u.p) * u.mm * u.mm;
         u.forLights([&](const scene::Light& light) {
-            LightPath path;
-            if (!pathToLight(light, pIn, path)) return;
-            const double cosIn = std::fabs(dot(nIn, path.toLight));
-            if (cosIn < kTiny) return;
-            const RGB arriving =
-                lightArriving(u.world, light, pIn, path, u.margin(pIn), u.lighting, u.shadowRays);
-            if (arriving.isBlack()) return;
+            RGB arriving;
+            double cosIn = 0;
+            if (!u.arrivingAt(light, pIn, nIn, arriving, cosIn)) return;
             const double ft = subsurface::fresnelTransmittance(cosIn, u.eta) * u.ftOut;
             for (int c = 0; c < 3; ++c) {
                 if (!u.usable[c]) continue;
@@ -151,13 +158,9 @@ double singleAt(const Under& u, const Vec3& point, double sOut, double cosOutPri
             return;
         const Vec3 xi = point + toward.toLight * out.t;
         const Vec3 nXi = out.object->normalAt(xi);
-        LightPath path;
-        if (!pathToLight(light, xi, path)) return;
-        const double cosIn = std::fabs(dot(nXi, path.toLight));
-        if (cosIn < kTiny) return;
-        const RGB arriving =
-            lightArriving(u.world, light, xi, path, u.margin(xi), u.lighting, u.shadowRays);
-        if (arriving.isBlack()) return;
+        RGB arriving;
+        double cosIn = 0;
+        if (!u.arrivingAt(light, xi, nXi, arriving, cosIn)) return;
         const double cosInPrimeSqr = 1.0 - (1.0 - cosIn * cosIn) / (u.eta * u.eta);
         if (cosInPrimeSqr < 0.0) return;
         const double cosInPrime = std::sqrt(cosInPrimeSqr);
@@ -204,9 +207,15 @@ RGB Tracer::subsurfaceLight(const scene::Finish& fin, const RGB& pigment, const 
         const double s = 1.0 / channel(fin.translucency, c);
         const double t = s / alpha;
         u.usable[c] = alpha > 0 && std::isfinite(s) && std::isfinite(t);
-        channel(u.sPrime, c) = u.usable[c] ? s : 0.0;
-        channel(u.tPrime, c) = u.usable[c] ? t : scene::kInfinity;  // no light passes
-        channel(u.absorb, c) = u.usable[c] ? t - s : 0.0;
+        if (u.usable[c]) {
+            channel(u.sPrime, c) = s;
+            channel(u.tPrime, c) = t;
+            channel(u.absorb, c) = t - s;
+        } else {
+            channel(u.sPrime, c) = 0.0;
+            channel(u.tPrime, c) = scene::kInfinity;  // no light passes
+            channel(u.absorb, c) = 0.0;
+        }
     }
     u.lights = &lights;
 

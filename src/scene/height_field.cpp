@@ -9,8 +9,17 @@
 namespace frameray::scene {
 
 namespace {
-constexpr double kHeightScale = 1.0 / 65536.0;
+
+// The index of column i, row k of a row-major grid `columns` wide (in
+// size_t before multiplying: a 30000² grid overflows int).
+std::size_t gridIndex(int i, int k, int columns) {
+    return static_cast<std::size_t>(k) * static_cast<std::size_t>(columns) +
+           static_cast<std::size_t>(i);
 }
+
+constexpr double kHeightScale = 1.0 / 65536.0;
+
+}  // namespace
 
 double HeightField::sample(int i, int k) const {
     i = std::clamp(i, 0, width_ - 1);
@@ -68,8 +77,8 @@ HeightField::HeightField(int width, int height, std::vector<uint16_t> heights, b
     for (int k = 0; k < cells.nz; ++k)
         for (int i = 0; i < cells.nx; ++i) {
             const uint16_t h[4] = {raw(i, k), raw(i + 1, k), raw(i, k + 1), raw(i + 1, k + 1)};
-            cells.range[static_cast<size_t>(k * cells.nx + i)] = {
-                std::min({h[0], h[1], h[2], h[3]}), std::max({h[0], h[1], h[2], h[3]})};
+            cells.range[gridIndex(i, k, cells.nx)] = {std::min({h[0], h[1], h[2], h[3]}),
+                                                      std::max({h[0], h[1], h[2], h[3]})};
         }
     levels_.push_back(std::move(cells));
     while (levels_.back().nx > 1 || levels_.back().nz > 1) {
@@ -78,8 +87,8 @@ HeightField::HeightField(int width, int height, std::vector<uint16_t> heights, b
         up.range.assign(static_cast<size_t>(up.nx) * static_cast<size_t>(up.nz), {65535, 0});
         for (int k = 0; k < below.nz; ++k)
             for (int i = 0; i < below.nx; ++i) {
-                const auto& r = below.range[static_cast<size_t>(k * below.nx + i)];
-                auto& u = up.range[static_cast<size_t>((k / 2) * up.nx + i / 2)];
+                const auto& r = below.range[gridIndex(i, k, below.nx)];
+                auto& u = up.range[gridIndex(i / 2, k / 2, up.nx)];
                 u[0] = std::min(u[0], r[0]);
                 u[1] = std::max(u[1], r[1]);
             }
@@ -193,7 +202,7 @@ void HeightField::traverse(const Ray& ray, double tMin, Limit tMax, Visit visit)
         ni = i0 >> level, nk = k0 >> level;
         if (level < root) {
             const Level& start = levels_[static_cast<size_t>(level)];
-            if (!clipHeights(start.range[static_cast<size_t>(nk * start.nx + ni)], a0, a1)) return;
+            if (!clipHeights(start.range[gridIndex(ni, nk, start.nx)], a0, a1)) return;
         }
     }
     Entry stack[3 * 32 + 4];
@@ -236,7 +245,7 @@ void HeightField::traverse(const Ray& ray, double tMin, Limit tMax, Visit visit)
             double t0 = std::max(x0[a], z0[b]), t1 = std::min(x1[a], z1[b]);
             if (t0 > t1) return;
             const int i = ci + (a ^ near[0]), k = ck + (b ^ near[1]);
-            if (!clipHeights(below.range[static_cast<size_t>(k * below.nx + i)], t0, t1)) return;
+            if (!clipHeights(below.range[gridIndex(i, k, below.nx)], t0, t1)) return;
             stack[top++] = {e.level - 1, i, k, t0, t1};
         };
         push(1, 1);
@@ -324,7 +333,7 @@ Vec3 HeightField::worldNormal(const Vec3& p, const Transform& toWorld) const {
     const int k = std::clamp(static_cast<int>(std::floor(fz)), 0, height_ - 2);
     const double u = fx - i, v = fz - k;
     auto at = [&](int a, int b) {
-        return normalize(toWorld.normal(smoothNormals_[static_cast<size_t>(b * width_ + a)]));
+        return normalize(toWorld.normal(smoothNormals_[gridIndex(a, b, width_)]));
     };
     const Vec3 n = at(i, k) * ((1 - u) * (1 - v)) + at(i + 1, k) * (u * (1 - v)) +
                    at(i, k + 1) * ((1 - u) * v) + at(i + 1, k + 1) * (u * v);

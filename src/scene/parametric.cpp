@@ -376,7 +376,8 @@ bool Parametric::parametersOf(const Vec3& p, double& u, double& v) const {
     // point lies on (povray still finds hits there): search again with
     // larger ones.
     double bestResidual = kInfinity;
-    for (double gradient = s_.maxGradient, i = 0; i < 4; gradient *= 8, ++i)
+    double gradient = s_.maxGradient;
+    for (int attempt = 0; attempt < 4; ++attempt, gradient *= 8)
         if (parametersOf(p, gradient, u, v, bestResidual)) return true;
     return bestResidual < kInfinity;
 }

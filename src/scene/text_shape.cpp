@@ -58,7 +58,7 @@ std::vector<PlacedGlyph> layoutText(TtfFont& font, std::u32string_view text, con
     return placed;
 }
 
-TextShape::TextShape(std::vector<PlacedGlyph> glyphs, double thickness)
+TextShape::TextShape(const std::vector<PlacedGlyph>& glyphs, double thickness)
     : thickness_(thickness), zLo_(std::min(0.0, thickness)), zHi_(std::max(0.0, thickness)) {
     for (const PlacedGlyph& p : glyphs) {
         // povray's bounds: each glyph's box, a hair thicker than the text.

@@ -41,7 +41,7 @@ std::vector<PlacedGlyph> layoutText(TtfFont& font, std::u32string_view text, con
 
 class TextShape final : public Shape {
   public:
-    TextShape(std::vector<PlacedGlyph> glyphs, double thickness);
+    TextShape(const std::vector<PlacedGlyph>& glyphs, double thickness);
 
     void allHits(const Ray& ray, double tMin, double tMax, std::vector<double>& ts) const override;
     bool firstHit(const Ray& ray, double tMin, double tMax, double& t) const override;

@@ -282,7 +282,7 @@ fs::path Reader::findIncludeFile(const std::string& name) const {
     for (const auto& lib : frame_.libraryPaths) dirs.push_back(lib);
     dirs.push_back(fs::path(cursors_.back().file->source->path()).parent_path());
     for (const auto& dir : dirs) {
-        const fs::path candidate = dir / p;
+        fs::path candidate = dir / p;
         if (fs::is_regular_file(candidate, ec)) return candidate;
     }
     return {};

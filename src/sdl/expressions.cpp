@@ -529,7 +529,7 @@ Value Reader::parseUnary() {
     const NestingGuard nesting(*this, op);
     if (op.is(Sym::Minus) || op.is(Sym::Plus) || op.is(Sym::Bang)) {
         next();
-        const Value v = parseUnary();
+        Value v = parseUnary();
         if (!isNumeric(v))
             fail(op, fmt::format("cannot apply '{}' to a {}", op.text, valueKindName(v)));
         if (op.is(Sym::Plus)) return v;
@@ -981,7 +981,11 @@ std::optional<Value> Reader::parseStringBuiltin(const Token& fn) {
         case Keyword::kw_strupr:
         case Keyword::kw_strlwr: {
             std::string s = str(parseArguments(1, 1, fn)[0]);
-            for (char& c : s) c = fn.kw == Keyword::kw_strupr ? std::toupper(c) : std::tolower(c);
+            for (char& c : s) {
+                const auto byte = static_cast<unsigned char>(c);
+                c = static_cast<char>(fn.kw == Keyword::kw_strupr ? std::toupper(byte)
+                                                                  : std::tolower(byte));
+            }
             return s;
         }
         case Keyword::kw_concat: {

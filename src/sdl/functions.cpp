@@ -488,6 +488,7 @@ Value Reader::callVectorFunction(const VectorFunction& function, const Token& at
         fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, function.paramCount,
                              function.paramCount == 1 ? "" : "s", args.size()));
     std::vector<double> values;
+    values.reserve(args.size());
     for (const Value& v : args) values.push_back(toFloat(v, at));
     VectorValue out;
     out.v = function.eval(values.data());
@@ -612,6 +613,7 @@ Value Reader::callFunction(const FunctionValue& function, const Token& at) {
         fail(at, fmt::format("'{}' takes {} argument{}, {} given", at.text, expected,
                              expected == 1 ? "" : "s", args.size()));
     std::vector<double> values;
+    values.reserve(std::max(args.size(), static_cast<size_t>(expected)));
     for (const Value& v : args) values.push_back(toFloat(v, at));
     values.resize(std::max<size_t>(values.size(), static_cast<size_t>(expected)), 0.0);
     checkFunctionCost(*function.compiled, at);

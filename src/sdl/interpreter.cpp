@@ -26,7 +26,7 @@ scene::Scene Interpreter::parseFile(const fs::path& sceneFile) {
     if (!file) throw SdlError({}, fmt::format("cannot open scene file '{}'", sceneFile.string()));
     reader_->noteFileRead(sceneFile);
     // povray gives the bare name as input_file_name.
-    return run(std::move(file), sceneFile.filename().string());
+    return run(file, sceneFile.filename().string());
 }
 
 scene::Scene Interpreter::parseText(const std::string& name, const std::string& text) {
@@ -45,7 +45,7 @@ const Value* Interpreter::lookup(std::string_view name) const {
     return reader_->lookup(name);
 }
 
-scene::Scene Interpreter::run(std::shared_ptr<const TokenizedFile> file,
+scene::Scene Interpreter::run(const std::shared_ptr<const TokenizedFile>& file,
                               std::string inputFileName) {
     Reader& r = *reader_;
     r.begin(file, std::move(inputFileName));

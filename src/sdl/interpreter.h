@@ -48,7 +48,7 @@ class Interpreter {
     const Value* lookup(std::string_view name) const;
 
   private:
-    scene::Scene run(std::shared_ptr<const TokenizedFile> file, std::string inputFileName);
+    scene::Scene run(const std::shared_ptr<const TokenizedFile>& file, std::string inputFileName);
 
     TokenCache& cache_;
     MessageSink& messages_;

@@ -291,6 +291,19 @@ TEST(Radiosity, ImageDoesNotDependOnTheThreadCount) {
     EXPECT_EQ(one.radiosity.samples, two.radiosity.samples);
 }
 
+// The samples the pretrace passes of a one-thread render of `scene` left.
+std::vector<render::RadiositySample> pretraceSamples(const std::string& scene, int width,
+                                                     int height) {
+    render::FrameSettings keep;
+    keep.keepRadiosity = true;
+    render::FrameStats stats;
+    const render::FrameImage image = renderText(scene, 1, stats, keep, width, height);
+    std::vector<render::RadiositySample> pretrace;
+    for (const render::RadiositySample& s : image.radiosityCache)
+        if (s.pass != 0) pretrace.push_back(s);
+    return pretrace;
+}
+
 // povray 3.7's pretrace spots lie at their cells' centres (moved by up to a
 // pixel) even where the cell reaches past the image's edge (measured from
 // the positions in its cache file: rad_def_test at 160x120, spots near
@@ -305,18 +318,10 @@ camera { orthographic location <0, 0, -10> direction z right x * 4.8 up y * 3.6 
 sky_sphere { pigment { rgb 1 } }
 plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
 )";
-    render::FrameSettings keep;
-    keep.keepRadiosity = true;
-    render::FrameStats stats;
-    const render::FrameImage image = renderText(scene, 1, stats, keep);
     double lowest = 0;
-    int pretrace = 0;
-    for (const render::RadiositySample& s : image.radiosityCache) {
-        if (s.pass == 0) continue;
-        ++pretrace;
-        lowest = std::min(lowest, s.point.y);
-    }
-    EXPECT_EQ(pretrace, 9);  // 3 x 3 spots
+    const auto pretrace = pretraceSamples(scene, 48, 36);
+    for (const render::RadiositySample& s : pretrace) lowest = std::min(lowest, s.point.y);
+    EXPECT_EQ(pretrace.size(), 9u);  // 3 x 3 spots
     EXPECT_LT(lowest, -2.05);
     EXPECT_GT(lowest, -2.35);
 }
@@ -332,14 +337,7 @@ camera { orthographic location <0, 0, -10> direction z right x * 3.6 up y * 4.8 
 sky_sphere { pigment { rgb 1 } }
 plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
 )";
-    render::FrameSettings keep;
-    keep.keepRadiosity = true;
-    render::FrameStats stats;
-    const render::FrameImage image = renderText(scene, 1, stats, keep, 36, 48);
-    int pretrace = 0;
-    for (const render::RadiositySample& s : image.radiosityCache)
-        if (s.pass != 0) ++pretrace;
-    EXPECT_EQ(pretrace, 9);
+    EXPECT_EQ(pretraceSamples(scene, 36, 48).size(), 9u);
 }
 
 TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
