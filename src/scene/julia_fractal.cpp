@@ -4,6 +4,8 @@
 #include <cmath>
 #include <complex>
 
+#include "scene/hit_tolerance.h"
+
 namespace frameray::scene {
 
 namespace {
@@ -14,7 +16,10 @@ using Complex = std::complex<double>;
 // the set first moves twice it.
 constexpr double kTolerance = 1e-7;
 // povray drops intersections nearer than this to a ray's start.
-constexpr double kMinDepth = 1e-4;
+constexpr double kMinDepth = kMinHitDepth;
+// A tMin up to this is a ray's tolerance (povray's shadow tolerance is the
+// largest), not the start of a ray continued past a hit.
+constexpr double kShadowToleranceAtMost = 1.5 * kShadowTolerance;
 
 double norm2(const std::array<double, 4>& q) {
     return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
@@ -214,15 +219,19 @@ void JuliaFractal::allHits(const Ray& ray, double tMin, double tMax,
 
 bool JuliaFractal::firstHit(const Ray& ray, double tMin, double tMax, double& t) const {
     // povray stops at the first crossing for a fractal outside CSG, and its
-    // caller drops a crossing nearer than 1e-4 to the ray's start: a ray
-    // leaving the surface from just inside meets the surface it leaves
-    // first, and so nothing. A ray continued past an earlier hit (tMin
-    // above 0) starts there, as povray's continued rays do.
-    const double start = std::max(tMin, 0.0);
+    // caller drops a crossing nearer than its tolerance to the ray's start
+    // (1e-4, shadow rays 1e-3): a ray leaving the surface from just inside
+    // meets the surface it leaves first, and so nothing. A tMin of that
+    // size is such a tolerance, and the march starts at the ray's own
+    // start; a ray continued past an earlier hit (a larger tMin) starts
+    // there, as povray's continued rays do.
+    const bool tolerance = tMin <= kShadowToleranceAtMost;
+    const double start = tolerance ? 0.0 : std::max(tMin, 0.0);
+    const double nearest = tolerance ? std::max(tMin, kMinDepth) : kMinDepth;
     const Ray from{ray.at(start), ray.direction};
     bool found = false;
     march(from, -kInfinity, tMax - start, [&](double hit) {
-        if (hit > kMinDepth && start + hit < tMax) {
+        if (hit > nearest && start + hit < tMax) {
             t = start + hit;
             found = true;
         }
