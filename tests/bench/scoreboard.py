@@ -488,14 +488,17 @@ def markdown(rows, args, started, load_at_start, version):
         f"- date: {started.isoformat(timespec='seconds')}",
         f"- machine: {machine_description()}; load average at start: {load_at_start}; "
         f"{args.jobs} scene(s) at once, niced",
-        f"- frameray: `{args.frameray}` (POVINI=/dev/null); povray: {version} (cached runs)",
+        f"- frameray: `{args.frameray}` (POVINI=/dev/null, its default threads); povray: "
+        f"{version} (cached runs, "
+        + (f"+WT{args.povray_threads}: its deterministic image)" if args.povray_threads > 0
+           else "its default threads)"),
         f"- stills: `-D -A +W{args.width} +H{args.height} scene.pov`; animations, portfolio "
         f"and advanced/desk: `-D +W{args.width} +H{args.height} their.ini` (the INI's own "
         "settings win: portfolio pages are 200x200 or 100x100 with anti-aliasing)",
         f"- match: mean over povray's frames of the fraction of pixels within 4/255 on every "
         "channel (frameray-compare's metric); a frame frameray did not write counts 0",
-        "- times: CPU (user + sys) and wall seconds of each whole run (both programs use "
-        "every core; the machine is shared, so wall times are rough)",
+        "- times: CPU (user + sys) and wall seconds of each whole run (the machine is "
+        "shared, so wall times are rough)",
         "",
         "## Totals",
         "",
