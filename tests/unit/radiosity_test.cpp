@@ -291,6 +291,20 @@ TEST(Radiosity, ImageDoesNotDependOnTheThreadCount) {
     EXPECT_EQ(one.radiosity.samples, two.radiosity.samples);
 }
 
+// A white plane under a white sky with one pretrace pass of cells a third
+// of the image's longer side, seen by an orthographic camera whose right
+// and up vectors are `rightUp` ("x * W up y * H").
+std::string pretracePlane(const std::string& rightUp) {
+    return R"(#version 3.7;
+global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
+  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
+camera { orthographic location <0, 0, -10> direction z right )" +
+           rightUp + R"( }
+sky_sphere { pigment { rgb 1 } }
+plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+)";
+}
+
 // The samples the pretrace passes of a one-thread render of `scene` left.
 std::vector<render::RadiositySample> pretraceSamples(const std::string& scene, int width,
                                                      int height) {
@@ -311,15 +325,8 @@ std::vector<render::RadiositySample> pretraceSamples(const std::string& scene, i
 // is near y = 40, world y = 1.8 - 40/10 = -2.2; kept within the image
 // they stopped at -1.8.
 TEST(Radiosity, PretraceSpotsMayLieBeyondTheImage) {
-    const std::string scene = R"(#version 3.7;
-global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
-  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
-camera { orthographic location <0, 0, -10> direction z right x * 4.8 up y * 3.6 }
-sky_sphere { pigment { rgb 1 } }
-plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
-)";
     double lowest = 0;
-    const auto pretrace = pretraceSamples(scene, 48, 36);
+    const auto pretrace = pretraceSamples(pretracePlane("x * 4.8 up y * 3.6"), 48, 36);
     for (const render::RadiositySample& s : pretrace) lowest = std::min(lowest, s.point.y);
     EXPECT_EQ(pretrace.size(), 9u);  // 3 x 3 spots
     EXPECT_LT(lowest, -2.05);
@@ -330,14 +337,7 @@ plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
 // portrait image 36 x 48 with pretrace 0.3334 has cells of 16 pixels, 3 x 3
 // spots (from the width, 12 pixels: 3 x 4).
 TEST(Radiosity, PretraceCellsFollowTheLongerSide) {
-    const std::string scene = R"(#version 3.7;
-global_settings { radiosity { count 5 nearest_count 1 error_bound 0.0001 recursion_limit 1
-  pretrace_start 0.3334 pretrace_end 0.3334 minimum_reuse 0.00001 maximum_reuse 0.00002 } }
-camera { orthographic location <0, 0, -10> direction z right x * 3.6 up y * 4.8 }
-sky_sphere { pigment { rgb 1 } }
-plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
-)";
-    EXPECT_EQ(pretraceSamples(scene, 36, 48).size(), 9u);
+    EXPECT_EQ(pretraceSamples(pretracePlane("x * 3.6 up y * 4.8"), 36, 48).size(), 9u);
 }
 
 TEST(Radiosity, NoRadiosityRayWithoutARadiosityBlock) {
